@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Sets up (scripts/setup.sh) and runs every test: GoogleTest through ctest, then pytest
+# (unit tests of the Python tools, model checks, proofs and conformance as tests).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+echo "== C++ unit tests (ctest)"
+ctest --test-dir build/cpp --output-on-failure -j"$(nproc)"
+echo "== Python tests (pytest)"
+.venv/bin/python -m pytest -q -p no:cacheprovider "$@"
