@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: Apache-2.0
+// safestate._core: the Python face of the C++ SystemStateManager. Every name that crosses
+// the boundary is the upper-case string of the design page, exactly what the TLA+ model
+// and the conformance suite use.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "safestate/command.hpp"
+#include "safestate/config.hpp"
+#include "safestate/enum_strings.hpp"
+#include "safestate/speed_monitor.hpp"
+#include "safestate/system_state_manager.hpp"
+#include "safestate/transition_table.hpp"
+#include "safestate/transition_table_export.hpp"
+
+namespace py = pybind11;
+using namespace safestate;  // NOLINT
+
+namespace {
+
+py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
+
+template <typename E, std::size_t N>
+E parse(const py::handle& value, const std::array<E, N>& all, const char* what) {
+  if (!py::isinstance<py::str>(value)) {
+    throw py::type_error(std::string(what) + " must be a str, got " + std::string(py::str(py::type::of(value))));
+  }
+  const auto text = value.cast<std::string>();
+  if (const auto e = enum_from_string(text, all)) return *e;
+  std::string allowed;
+  for (const E e : all) allowed += (allowed.empty() ? "" : ", ") + std::string(to_string(e));
+  throw py::value_error(std::string(what) + ": unknown name '" + text + "' (one of " + allowed + ")");
+}
+
+JointVector joint_vector(const py::handle& value, const char* what) {
+  const auto seq = py::reinterpret_borrow<py::sequence>(value);
+  if (!py::isinstance<py::sequence>(value) || py::len(seq) != kAxisCount) {
+    throw py::value_error(std::string(what) + " must be a sequence of 6 floats");
+  }
+  JointVector v{};
+  for (std::size_t i = 0; i < kAxisCount; ++i) v[i] = seq[i].cast<double>();
+  return v;
+}
+
+/// A dict of inputs -> ScanInputs. Missing keys keep the zero (safe, tripped) value;
+/// unknown keys are an error, so that a misspelt key cannot silently read as "tripped".
+ScanInputs scan_inputs(const py::dict& d) {
+  ScanInputs in;
+  for (const auto& item : d) {
+    const auto key = item.first.cast<std::string>();
+    const py::handle v = item.second;
+    if (key == "estop_closed_a") in.estop_closed.a = v.cast<bool>();
+    else if (key == "estop_closed_b") in.estop_closed.b = v.cast<bool>();
+    else if (key == "safeguard_closed_a") in.safeguard_closed.a = v.cast<bool>();
+    else if (key == "safeguard_closed_b") in.safeguard_closed.b = v.cast<bool>();
+    else if (key == "enabling_a") in.enabling.a = parse(v, kAllEnablePositions, "enabling_a");
+    else if (key == "enabling_b") in.enabling.b = parse(v, kAllEnablePositions, "enabling_b");
+    else if (key == "selector_auto") in.selector.auto_ = v.cast<bool>();
+    else if (key == "selector_t1") in.selector.t1 = v.cast<bool>();
+    else if (key == "selector_t2") in.selector.t2 = v.cast<bool>();
+    else if (key == "self_test_ok") in.self_test_ok = v.cast<bool>();
+    else if (key == "servo_ready") in.servo_ready = v.cast<bool>();
+    else if (key == "drive_fault") in.drive_fault = v.cast<bool>();
+    else if (key == "q") in.q = joint_vector(v, "q");
+    else if (key == "qd") in.qd = joint_vector(v, "qd");
+    else throw py::key_error("unknown input '" + key + "'");
+  }
+  return in;
+}
+
+py::list axes_list(const ScanOutputs& out) {
+  py::list axes;
+  for (const AxisState a : out.axes) axes.append(str(to_string(a)));
+  return axes;
+}
+
+void put_outputs(py::dict& d, const ScanOutputs& out) {
+  d["contactor_closed"] = out.contactor_closed;
+  d["drive_enable"] = out.drive_enable;
+  d["brake_release"] = out.brake_release;
+  d["ramp_down_request"] = out.ramp_down_request;
+  d["reset_lamp"] = out.reset_lamp;
+  d["commanded_speed_mm_s"] = out.commanded_speed_mm_s;
+  d["axes"] = axes_list(out);
+}
+
+py::dict outputs_dict(const ScanOutputs& out) {
+  py::dict d;
+  put_outputs(d, out);
+  return d;
+}
+
+py::dict observe(const SystemStateManager& m) {
+  const StatusRecord s = m.status();
+  py::dict d;
+  d["state"] = str(to_string(s.state));
+  d["selector"] = str(to_string(s.selector));
+  d["session_mode"] = str(to_string(s.session_mode));
+  d["stop_category"] = str(to_string(s.stop_category));
+  d["fault_code"] = str(to_string(s.fault_code));
+  d["last_reject_reason"] = str(to_string(s.last_reject_reason));
+  d["command_result"] = str(to_string(s.command_result));
+  d["estop_mismatch"] = s.estop_mismatch;
+  d["safeguard_mismatch"] = s.safeguard_mismatch;
+  d["enabling_mismatch"] = s.enabling_mismatch;
+  d["selector_invalid"] = s.selector_invalid;
+  d["state_cycles"] = s.state_cycles;
+  d["t2_confirmed"] = s.t2_confirmed;
+  d["resume_to"] = str(to_string(s.resume_to));
+  d["jog_axis"] = s.jog_axis;
+  d["jog_direction"] = s.jog_direction;
+  d["jog_speed_mm_s"] = s.jog_speed_mm_s;
+  d["queue_length"] = s.queue_length;
+  put_outputs(d, m.outputs());
+  return d;
+}
+
+py::list state_list(StateSet set) {
+  py::list l;
+  for (const StateId s : kAllStates) {
+    if (set.contains(s)) l.append(str(to_string(s)));
+  }
+  return l;
+}
+
+py::list requirement_list(std::string_view reqs) {
+  py::list l;
+  while (!reqs.empty()) {
+    const std::size_t comma = reqs.find(',');
+    std::string_view item = reqs.substr(0, comma);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+    if (!item.empty() && item != "-") l.append(str(item));
+    if (comma == std::string_view::npos) break;
+    reqs.remove_prefix(comma + 1);
+  }
+  return l;
+}
+
+py::list transition_table_list() {
+  py::list rows;
+  for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
+    const TransitionRow& r = kTransitionTable[i];
+    py::dict d;
+    d["id"] = str(r.id);
+    d["section"] = i < kCycleRowCount ? "cycle" : "command";
+    d["event"] = str(to_string(r.event));
+    d["source"] = state_list(r.source);
+    d["effective_source"] = state_list(effective_source(i));
+    d["guard"] = str(r.guard_name);
+    d["kind"] = str(to_string(r.kind));
+    d["targets"] = state_list(r.targets);
+    d["reason"] = str(to_string(r.reason));
+    d["stop_category"] = str(to_string(r.stop));
+    d["action"] = str(r.action_name);
+    d["requirements"] = requirement_list(r.requirements);
+    rows.append(d);
+  }
+  return rows;
+}
+
+py::object row_id(const TransitionRow* r) {
+  if (r == nullptr) return py::none();
+  return str(r->id);
+}
+
+py::dict derived_dict(const DerivedInputs& d) {
+  py::dict out;
+  out["estop_tripped"] = d.estop_tripped;
+  out["gate_open"] = d.gate_open;
+  out["enable_middle"] = d.enable_middle;
+  out["enable_panic"] = d.enable_panic;
+  out["selector"] = str(to_string(d.selector));
+  out["speed"] = str(to_string(d.speed));
+  out["self_test_ok"] = d.self_test_ok;
+  out["servo_ready"] = d.servo_ready;
+  out["drive_fault"] = d.drive_fault;
+  out["discrepancy"] = str(to_string(d.discrepancy));
+  return out;
+}
+
+template <typename E, std::size_t N>
+py::list name_list(const std::array<E, N>& all) {
+  py::list l;
+  for (const E e : all) l.append(str(to_string(e)));
+  return l;
+}
+
+py::list dh_to_list(const DhTable& dh) {
+  py::list l;
+  for (const DhRow& r : dh) l.append(py::make_tuple(r.a_m, r.alpha_rad, r.d_m, r.theta_offset_rad));
+  return l;
+}
+
+DhTable dh_from(const py::sequence& rows) {
+  if (py::len(rows) != kAxisCount) throw py::value_error("dh must have 6 rows (a_m, alpha_rad, d_m, theta_offset_rad)");
+  DhTable dh{};
+  for (std::size_t i = 0; i < kAxisCount; ++i) {
+    const auto row = rows[i].cast<py::sequence>();
+    if (py::len(row) != 4) throw py::value_error("each dh row is (a_m, alpha_rad, d_m, theta_offset_rad)");
+    dh[i] = DhRow{row[0].cast<double>(), row[1].cast<double>(), row[2].cast<double>(), row[3].cast<double>()};
+  }
+  return dh;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() =
+      "The C++ SystemStateManager of safestate (docs/design/system-state-manager.md), for the\n"
+      "conformance harness and for scripting. Every state, mode, reason and row is named by the\n"
+      "upper-case string of the design page.";
+
+  py::class_<Config>(m, "Config", "Parameters of the manager (design §9). Every field is read/write.")
+      .def(py::init<>(), "The defaults of design §9.")
+      .def(py::init([](const py::kwargs& kw) {
+             Config c;
+             py::object self = py::cast(c);
+             for (const auto& item : kw) py::setattr(self, item.first, item.second);
+             return self.cast<Config>();
+           }),
+           "Defaults overridden by keyword arguments, e.g. Config(discrepancy_cycles=3).")
+      .def_readwrite("cycle_time_us", &Config::cycle_time_us, "Scan cycle period in microseconds (default 1000).")
+      .def_readwrite("discrepancy_cycles", &Config::discrepancy_cycles,
+                     "D: tolerated cycles of channel disagreement; the D+1-th latches (default 50).")
+      .def_readwrite("arming_timeout_cycles", &Config::arming_timeout_cycles,
+                     "Cycles ARMING waits for servo_ready after the Servo-on cycle (default 500).")
+      .def_readwrite("max_stop_cycles", &Config::max_stop_cycles,
+                     "Cycles STOPPING waits for zero speed (default 1000).")
+      .def_readwrite("t1_speed_limit_mm_s", &Config::t1_speed_limit_mm_s, "T1 TCP speed limit, mm/s (default 250).")
+      .def_readwrite("zero_velocity_rad_s", &Config::zero_velocity_rad_s,
+                     "Joint speed at or below which the axis is at rest (default 0.001 rad/s).")
+      .def_readwrite("command_queue_limit", &Config::command_queue_limit,
+                     "Commands the queue holds, 1..16 (default 8).")
+      .def_property(
+          "dh", [](const Config& c) { return dh_to_list(c.dh); },
+          [](Config& c, const py::sequence& rows) { c.dh = dh_from(rows); },
+          "DH table: 6 tuples (a_m, alpha_rad, d_m, theta_offset_rad); default UR5.")
+      .def(
+          "validate", [](const Config& c) { return str(to_string(validate(c))); },
+          "'NONE' when usable, else the first problem (an invalid Config fails the BOOT self-test).")
+      .def("__repr__", [](const Config& c) {
+        return "Config(cycle_time_us=" + std::to_string(c.cycle_time_us) +
+               ", discrepancy_cycles=" + std::to_string(c.discrepancy_cycles) +
+               ", arming_timeout_cycles=" + std::to_string(c.arming_timeout_cycles) +
+               ", max_stop_cycles=" + std::to_string(c.max_stop_cycles) +
+               ", t1_speed_limit_mm_s=" + std::to_string(c.t1_speed_limit_mm_s) +
+               ", zero_velocity_rad_s=" + std::to_string(c.zero_velocity_rad_s) +
+               ", command_queue_limit=" + std::to_string(c.command_queue_limit) + ")";
+      });
+
+  py::class_<SystemStateManager>(m, "Manager",
+                                 "One SystemStateManager. A new Manager is a power cycle: it starts in BOOT.")
+      .def(py::init<const Config&>(), py::arg("config") = Config{})
+      .def(
+          "cycle", [](SystemStateManager& self, const py::dict& inputs) { return outputs_dict(self.cycle(scan_inputs(inputs))); },
+          py::arg("inputs"),
+          "Run one scan cycle. `inputs` keys: estop_closed_a/_b, safeguard_closed_a/_b (bool),\n"
+          "enabling_a/_b ('RELEASED'|'MIDDLE'|'PANIC'), selector_auto/_t1/_t2, self_test_ok,\n"
+          "servo_ready, drive_fault (bool), q, qd (6 floats). A missing key takes its zero, safe\n"
+          "value (contacts open, RELEASED, False, 0.0); an unknown key raises KeyError.\n"
+          "Returns the outputs: contactor_closed, drive_enable, brake_release, ramp_down_request,\n"
+          "reset_lamp, commanded_speed_mm_s, axes (6 PLCopen state names).")
+      .def(
+          "submit",
+          [](SystemStateManager& self, const py::str& kind, std::int32_t axis, std::int32_t direction,
+             std::int32_t speed_mm_s) {
+            const CommandKind k = parse(kind, kAllCommandKinds, "kind");
+            return str(to_string(self.submit(Command{k, axis, direction, speed_mm_s})));
+          },
+          py::arg("kind"), py::arg("axis") = 0, py::arg("direction") = 0, py::arg("speed_mm_s") = 0,
+          "Queue a command (RESET, SERVO_ON, SERVO_OFF, START, PAUSE, RESUME, JOG_START, JOG_STOP,\n"
+          "T2_CONFIRM). Returns 'QUEUED' or 'QUEUE_FULL' (then last_reject_reason is QUEUE_FULL).")
+      .def("observe", &observe,
+           "The status record and outputs (design §7) as a dict of exactly: state, selector,\n"
+           "session_mode, stop_category, fault_code, last_reject_reason, command_result,\n"
+           "estop_mismatch, safeguard_mismatch, enabling_mismatch, selector_invalid, state_cycles,\n"
+           "t2_confirmed, resume_to, jog_axis, jog_direction, jog_speed_mm_s, queue_length,\n"
+           "contactor_closed, drive_enable, brake_release, ramp_down_request, reset_lamp,\n"
+           "commanded_speed_mm_s, axes.")
+      .def(
+          "last_rows",
+          [](const SystemStateManager& self) {
+            py::dict d;
+            d["cycle"] = row_id(self.last_rows().cycle);
+            d["command"] = row_id(self.last_rows().command);
+            return d;
+          },
+          "Rows fired by the last cycle: {'cycle': 'C17', 'command': 'K12' or None}\n"
+          "(cycle is None before the first cycle).")
+      .def(
+          "derived_inputs", [](const SystemStateManager& self) { return derived_dict(self.derived_inputs()); },
+          "The abstract inputs the last cycle derived (design §2): estop_tripped, gate_open,\n"
+          "enable_middle, enable_panic, selector, speed, self_test_ok, servo_ready, drive_fault,\n"
+          "discrepancy (first discrepancy fault code or 'NONE').")
+      .def_property_readonly(
+          "config", [](const SystemStateManager& self) { return self.config(); }, "A copy of the Config.")
+      .def_property_readonly(
+          "config_error", [](const SystemStateManager& self) { return str(to_string(self.config_error())); },
+          "validate() of the Config given at construction.");
+
+  m.def("transition_table", &transition_table_list,
+        "The transition table, rows C01..C23 then K01..K35, as dicts: id, section, event, source,\n"
+        "effective_source, guard, kind (ENTER|STAY|REJECT), targets, reason, stop_category,\n"
+        "action, requirements.");
+  m.def("transition_table_json", &to_json, "The transition table as JSON text.");
+  m.def("transition_table_dot", &to_dot, "The transition table as a Graphviz digraph.");
+  m.def(
+      "tcp_speed_mm_s",
+      [](const py::sequence& q, const py::sequence& qd, const Config& config) {
+        return SpeedMonitor(config).tcp_speed_mm_s(joint_vector(q, "q"), joint_vector(qd, "qd"));
+      },
+      py::arg("q"), py::arg("qd"), py::arg("config") = Config{},
+      "Linear TCP speed |J_v(q)·qd| in mm/s (q in rad, qd in rad/s) with the Config's DH table.");
+  m.def(
+      "speed_level",
+      [](const py::sequence& q, const py::sequence& qd, const Config& config) {
+        return str(to_string(SpeedMonitor(config).classify(joint_vector(q, "q"), joint_vector(qd, "qd"))));
+      },
+      py::arg("q"), py::arg("qd"), py::arg("config") = Config{},
+      "The design §2 speed level of (q, qd): 'ZERO', 'MOVING' or 'OVER_T1'.");
+  m.def(
+      "names",
+      [] {
+        py::dict d;
+        d["state"] = name_list(kAllStates);
+        d["selector"] = name_list(kAllSelectorReadings);
+        d["session_mode"] = name_list(kAllOperatingModes);
+        d["stop_category"] = name_list(kAllStopCategories);
+        d["fault_code"] = name_list(kAllFaultCodes);
+        d["reject_reason"] = name_list(kAllRejectReasons);
+        d["command"] = name_list(kAllCommandKinds);
+        d["enabling"] = name_list(kAllEnablePositions);
+        d["speed_level"] = name_list(kAllSpeedLevels);
+        d["resume_to"] = name_list(kAllResumeTargets);
+        d["axis_state"] = name_list(kAllAxisStates);
+        return d;
+      },
+      "Every enum's names, by field.");
+  m.attr("AXIS_COUNT") = kAxisCount;
+  m.attr("MAX_QUEUE_CAPACITY") = kMaxQueueCapacity;
+}

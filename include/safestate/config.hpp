@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+// Parameters of the SystemStateManager (design §9): one struct, the model's constants.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "safestate/config_error.hpp"
+#include "safestate/dh_table.hpp"
+
+namespace safestate {
+
+/// Compile-time capacity of the command queue; `command_queue_limit` may lower it (§9).
+inline constexpr std::size_t kMaxQueueCapacity = 16;
+
+/// Upper bound of the cycle-count parameters, so that every counter (which saturates at the
+/// parameter + 1) stays far from overflow. 2^31 - 1 cycles = 24 days at 1 ms.
+inline constexpr std::uint32_t kMaxTimerCycles = 0x7FFF'FFFFU;
+
+struct Config {
+  std::uint32_t cycle_time_us{1000};          ///< scan cycle period (informative; timers count cycles)
+  std::uint32_t discrepancy_cycles{50};       ///< D: tolerated cycles of channel disagreement (§3)
+  std::uint32_t arming_timeout_cycles{500};   ///< cycles ARMING waits for servo_ready (C16)
+  std::uint32_t max_stop_cycles{1000};        ///< cycles STOPPING waits for zero speed (C20)
+  std::int32_t t1_speed_limit_mm_s{250};      ///< T1 TCP speed limit, integer mm/s (C10, K29)
+  double zero_velocity_rad_s{0.001};          ///< |qd[i]| at or below this is standstill (§2)
+  std::uint32_t command_queue_limit{8};       ///< commands the queue holds, 1..kMaxQueueCapacity
+  DhTable dh{kUr5DhTable};                    ///< arm kinematics (UR5 standard DH)
+};
+
+/// First problem found, in field order; ConfigError::None for a usable Config.
+[[nodiscard]] inline ConfigError validate(const Config& c) noexcept {
+  if (c.cycle_time_us == 0U) {
+    return ConfigError::CycleTimeZero;
+  }
+  if (c.discrepancy_cycles > kMaxTimerCycles) {
+    return ConfigError::DiscrepancyTooLarge;
+  }
+  if (c.arming_timeout_cycles > kMaxTimerCycles) {
+    return ConfigError::ArmingTimeoutTooLarge;
+  }
+  if (c.max_stop_cycles > kMaxTimerCycles) {
+    return ConfigError::MaxStopTooLarge;
+  }
+  if (c.t1_speed_limit_mm_s <= 0) {
+    return ConfigError::T1LimitNotPositive;
+  }
+  if (!std::isfinite(c.zero_velocity_rad_s) || c.zero_velocity_rad_s < 0.0) {
+    return ConfigError::ZeroVelocityInvalid;
+  }
+  if (c.command_queue_limit == 0U || c.command_queue_limit > kMaxQueueCapacity) {
+    return ConfigError::QueueLimitOutOfRange;
+  }
+  for (const DhRow& row : c.dh) {
+    if (!std::isfinite(row.a_m) || !std::isfinite(row.alpha_rad) || !std::isfinite(row.d_m) ||
+        !std::isfinite(row.theta_offset_rad)) {
+      return ConfigError::DhTableNotFinite;
+    }
+  }
+  return ConfigError::None;
+}
+
+}  // namespace safestate

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: Apache-2.0
+// The abstract inputs of one cycle (design §2 "Derived each cycle", §3): what the guards
+// read, and what the model uses as its inputs.
+#pragma once
+
+#include "safestate/fault_code.hpp"
+#include "safestate/selector_reading.hpp"
+#include "safestate/speed_level.hpp"
+
+namespace safestate {
+
+struct DerivedInputs {
+  bool estop_tripped{true};    ///< either E-stop channel open (1oo2)
+  bool gate_open{true};        ///< either safeguard channel open
+  bool enable_middle{false};   ///< both enabling channels MIDDLE
+  bool enable_panic{false};    ///< either enabling channel PANIC
+  SelectorReading selector{SelectorReading::Invalid};
+  SpeedLevel speed{SpeedLevel::Zero};
+  bool self_test_ok{false};
+  bool servo_ready{false};
+  bool drive_fault{false};
+  /// First discrepancy fault in §3 order (E-stop, safeguard, enabling, selector), else None.
+  FaultCode discrepancy{FaultCode::None};
+};
+
+}  // namespace safestate

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: Apache-2.0
+// Lockout fault codes (design §3, §5).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace safestate {
+
+/// Why the manager is in ERROR_LOCKOUT (None in every other state). The four discrepancy
+/// codes are listed in the order §3 checks them.
+enum class FaultCode : std::uint8_t {
+  None,
+  SelfTestFailed,
+  DiscrepancyEstop,
+  DiscrepancySafeguard,
+  DiscrepancyEnabling,
+  SelectorInvalid,
+  DriveFault,
+  T1Overspeed,
+  ArmingTimeout,
+  StopTimeout,
+};
+
+inline constexpr std::size_t kFaultCodeCount = 10;
+
+inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
+    FaultCode::None,
+    FaultCode::SelfTestFailed,
+    FaultCode::DiscrepancyEstop,
+    FaultCode::DiscrepancySafeguard,
+    FaultCode::DiscrepancyEnabling,
+    FaultCode::SelectorInvalid,
+    FaultCode::DriveFault,
+    FaultCode::T1Overspeed,
+    FaultCode::ArmingTimeout,
+    FaultCode::StopTimeout,
+};
+
+/// The upper-case name used by the design page, the model and the conformance suite.
+[[nodiscard]] constexpr std::string_view to_string(FaultCode v) noexcept {
+  switch (v) {
+    case FaultCode::None: return "NONE";
+    case FaultCode::SelfTestFailed: return "SELF_TEST_FAILED";
+    case FaultCode::DiscrepancyEstop: return "DISCREPANCY_ESTOP";
+    case FaultCode::DiscrepancySafeguard: return "DISCREPANCY_SAFEGUARD";
+    case FaultCode::DiscrepancyEnabling: return "DISCREPANCY_ENABLING";
+    case FaultCode::SelectorInvalid: return "SELECTOR_INVALID";
+    case FaultCode::DriveFault: return "DRIVE_FAULT";
+    case FaultCode::T1Overspeed: return "T1_OVERSPEED";
+    case FaultCode::ArmingTimeout: return "ARMING_TIMEOUT";
+    case FaultCode::StopTimeout: return "STOP_TIMEOUT";
+  }
+  return "?";
+}
+
+}  // namespace safestate

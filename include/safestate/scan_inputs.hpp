@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: Apache-2.0
+// Inputs of one scan cycle (design §2).
+#pragma once
+
+#include "safestate/channel_pair.hpp"
+#include "safestate/enable_position.hpp"
+#include "safestate/joint_vector.hpp"
+#include "safestate/selector_contacts.hpp"
+
+namespace safestate {
+
+/// Raw electrical levels of one cycle. A value-initialised record (`ScanInputs{}`) is the
+/// safe, tripped reading: E-stop pressed, gate open, enabling released, selector invalid,
+/// self-test failed, drives not ready, robot at rest. A broken wire reads as a demand.
+struct ScanInputs {
+  ChannelPair<bool> estop_closed;             ///< NC contact closed = released, healthy
+  ChannelPair<bool> safeguard_closed;         ///< gate locked / light curtain clear
+  ChannelPair<EnablePosition> enabling;       ///< three-position enabling device
+  SelectorContacts selector;                  ///< AUTO / T1 / T2 contacts
+  bool self_test_ok{false};                   ///< platform self-test passed (read in BOOT)
+  bool servo_ready{false};                    ///< every drive reports ready
+  bool drive_fault{false};                    ///< any drive reports a fault
+  JointVector q{};                            ///< joint positions, rad
+  JointVector qd{};                           ///< joint velocities, rad/s
+};
+
+}  // namespace safestate

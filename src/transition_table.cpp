@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: Apache-2.0
+// Guards and actions named by the transition table (include/safestate/transition_table.hpp).
+// Each is a one-liner so that it can be checked against the design page's wording.
+#include "safestate/transition_table.hpp"
+
+#include <algorithm>
+
+#include "safestate/step_context.hpp"
+
+namespace safestate {
+
+namespace {
+
+bool stopping_cat1(const MachineState& s) noexcept {
+  return stopping_category(s) == StopCategory::Cat1;
+}
+
+}  // namespace
+
+namespace guards {
+
+bool always(const StepContext&) noexcept { return true; }
+
+// C02: a failed platform self-test, or a Config that validate() refuses.
+bool self_test_failed_or_config_invalid(const StepContext& c) noexcept {
+  return !c.in.self_test_ok || !c.config_valid;
+}
+
+// C03: a counter of §3 above D.
+bool discrepancy_fault(const StepContext& c) noexcept { return c.in.discrepancy != FaultCode::None; }
+
+bool estop_tripped(const StepContext& c) noexcept { return c.in.estop_tripped; }
+bool estop_released(const StepContext& c) noexcept { return !c.in.estop_tripped; }
+bool drive_fault(const StepContext& c) noexcept { return c.in.drive_fault; }
+
+// C10: session_mode = T1 ∧ speed = OVER_T1.
+bool t1_session_overspeed(const StepContext& c) noexcept {
+  return session_mode(c.state) == OperatingMode::T1 && c.in.speed == SpeedLevel::OverT1;
+}
+
+// C11: manual ∧ enable_panic.
+bool manual_session_panic(const StepContext& c) noexcept {
+  return is_manual(session_mode(c.state)) && c.in.enable_panic;
+}
+
+// C12: not (STOPPING with CAT1) ∧ selector ≠ session_mode (a change, or INVALID).
+bool selector_differs_from_session_unless_cat1_stopping(const StepContext& c) noexcept {
+  return !stopping_cat1(c.state) && !selector_matches(c.in.selector, session_mode(c.state));
+}
+
+// C13: not (STOPPING with CAT1) ∧ session_mode = AUTO ∧ gate_open.
+bool auto_session_gate_open_unless_cat1_stopping(const StepContext& c) noexcept {
+  return !stopping_cat1(c.state) && session_mode(c.state) == OperatingMode::Auto && c.in.gate_open;
+}
+
+// C14: not (STOPPING with CAT1) ∧ manual ∧ ¬enable_middle.
+bool manual_session_enable_not_middle_unless_cat1_stopping(const StepContext& c) noexcept {
+  return !stopping_cat1(c.state) && is_manual(session_mode(c.state)) && !c.in.enable_middle;
+}
+
+bool servo_ready(const StepContext& c) noexcept { return c.in.servo_ready; }
+
+// C16: the drives had arming_timeout_cycles full cycles after the Servo-on cycle.
+bool arming_timer_expired(const StepContext& c) noexcept {
+  return state_cycles(c.state) == c.config.arming_timeout_cycles;
+}
+
+// C18 / C19: measured standstill ends the stop of that category.
+bool stopped_cat1(const StepContext& c) noexcept {
+  return c.in.speed == SpeedLevel::Zero && stopping_category(c.state) == StopCategory::Cat1;
+}
+bool stopped_cat2(const StepContext& c) noexcept {
+  return c.in.speed == SpeedLevel::Zero && stopping_category(c.state) == StopCategory::Cat2;
+}
+
+// C20: the robot had max_stop_cycles full cycles to stop.
+bool stop_timer_expired(const StepContext& c) noexcept {
+  return state_cycles(c.state) == c.config.max_stop_cycles;
+}
+
+bool selector_not_t2(const StepContext& c) noexcept { return c.in.selector != SelectorReading::T2; }
+bool selector_invalid(const StepContext& c) noexcept { return c.in.selector == SelectorReading::Invalid; }
+
+bool selector_auto_and_gate_open(const StepContext& c) noexcept {
+  return c.in.selector == SelectorReading::Auto && c.in.gate_open;
+}
+
+bool selector_manual_and_enable_not_middle(const StepContext& c) noexcept {
+  return (c.in.selector == SelectorReading::T1 || c.in.selector == SelectorReading::T2) &&
+         !c.in.enable_middle;
+}
+
+bool selector_t2_and_not_confirmed(const StepContext& c) noexcept {
+  return c.in.selector == SelectorReading::T2 && !t2_confirmed(c.state);
+}
+
+bool gate_open(const StepContext& c) noexcept { return c.in.gate_open; }
+
+bool resume_to_auto_and_gate_open(const StepContext& c) noexcept {
+  return resume_to(c.state) == ResumeTarget::AutoRunning && c.in.gate_open;
+}
+
+bool resume_to_jog_and_enable_not_middle(const StepContext& c) noexcept {
+  return resume_to(c.state) == ResumeTarget::ManualJogging && !c.in.enable_middle;
+}
+
+// §6: "in AUTO" means selector = AUTO ∨ session_mode = AUTO.
+bool in_auto(const StepContext& c) noexcept {
+  return c.in.selector == SelectorReading::Auto || session_mode(c.state) == OperatingMode::Auto;
+}
+
+// K26: axis ∉ 1..6 ∨ dir ∉ {-1, 1} ∨ speed ≤ 0.
+bool jog_arguments_invalid(const StepContext& c) noexcept {
+  const Command& k = c.command;
+  return k.axis < 1 || k.axis > 6 || (k.direction != -1 && k.direction != 1) || k.speed_mm_s <= 0;
+}
+
+bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }
+
+}  // namespace guards
+
+namespace actions {
+
+void none(StepContext&) noexcept {}
+
+void lockout_self_test_failed(StepContext& c) noexcept {
+  c.state = states::ErrorLockout{FaultCode::SelfTestFailed};
+}
+void lockout_discrepancy(StepContext& c) noexcept { c.state = states::ErrorLockout{c.in.discrepancy}; }
+void lockout_drive_fault(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::DriveFault}; }
+void lockout_t1_overspeed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::T1Overspeed}; }
+void lockout_arming_timeout(StepContext& c) noexcept {
+  c.state = states::ErrorLockout{FaultCode::ArmingTimeout};
+}
+void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
+
+void enter_estop_active(StepContext& c) noexcept { c.state = states::EstopActive{}; }
+void enter_estop_reset_needed(StepContext& c) noexcept { c.state = states::EstopResetNeeded{}; }
+
+// Entering IDLE sets t2_confirmed FALSE (§4).
+void enter_idle(StepContext& c) noexcept { c.state = states::Idle{false}; }
+
+// Cat 1: ramp down with power kept; no resume target, no jog (§4).
+void enter_stopping_cat1(StepContext& c) noexcept {
+  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, 0, ResumeTarget::None, JogSetpoint{}};
+}
+
+// K20 Pause: Cat 2, remembers the motion state; a paused jog keeps its setpoint.
+void enter_stopping_cat2_pause(StepContext& c) noexcept {
+  const bool jogging = state_id(c.state) == StateId::ManualJogging;
+  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat2, 0,
+                             jogging ? ResumeTarget::ManualJogging : ResumeTarget::AutoRunning,
+                             jogging ? jog(c.state) : JogSetpoint{}};
+}
+
+// C15: the OPERATIONAL sub-state of the session's mode.
+void enter_operational_idle(StepContext& c) noexcept {
+  const OperatingMode mode = session_mode(c.state);
+  if (mode == OperatingMode::Auto) {
+    c.state = states::AutoIdle{};
+  } else {
+    c.state = states::ManualIdle{mode};
+  }
+}
+
+// C19: HOLD keeps resume_to and jog.
+void enter_hold(StepContext& c) noexcept {
+  c.state = states::Hold{session_mode(c.state), resume_to(c.state), jog(c.state)};
+}
+
+// C17 / C21: one more cycle in ARMING / STOPPING.
+void count_state_cycle(StepContext& c) noexcept {
+  if (auto* a = std::get_if<states::Arming>(&c.state)) {
+    ++a->state_cycles;
+  } else if (auto* s = std::get_if<states::Stopping>(&c.state)) {
+    ++s->state_cycles;
+  }
+}
+
+void clear_t2_confirmation(StepContext& c) noexcept {
+  if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = false;
+}
+
+// K12: session_mode := selector (stop_category := NONE is the row's StopUpdate::Clear).
+void enter_arming(StepContext& c) noexcept { c.state = states::Arming{mode_of(c.in.selector), 0}; }
+
+void enter_auto_running(StepContext& c) noexcept { c.state = states::AutoRunning{}; }
+
+// K24: back to resume_to, with its jog.
+void resume_motion(StepContext& c) noexcept {
+  if (resume_to(c.state) == ResumeTarget::ManualJogging) {
+    c.state = states::ManualJogging{session_mode(c.state), jog(c.state)};
+  } else {
+    c.state = states::AutoRunning{};
+  }
+}
+
+// K29: the commanded speed is clamped to the T1 limit in T1 (RSM-10, INV-T1SPEED).
+void start_jog(StepContext& c) noexcept {
+  const OperatingMode mode = session_mode(c.state);
+  const std::int32_t speed = mode == OperatingMode::T1
+                                 ? std::min(c.command.speed_mm_s, c.config.t1_speed_limit_mm_s)
+                                 : c.command.speed_mm_s;
+  c.state = states::ManualJogging{mode, JogSetpoint{c.command.axis, c.command.direction, speed}};
+}
+
+void stop_jog(StepContext& c) noexcept { c.state = states::ManualIdle{session_mode(c.state)}; }
+
+void confirm_t2(StepContext& c) noexcept {
+  if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = true;
+}
+
+}  // namespace actions
+
+}  // namespace safestate

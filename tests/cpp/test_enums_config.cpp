@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: Apache-2.0
+// The names the conformance suite compares (design §4–§7) and the parameters of §9.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "safestate/command_kind.hpp"
+#include "safestate/command_result.hpp"
+#include "safestate/config.hpp"
+#include "safestate/enable_position.hpp"
+#include "safestate/enum_strings.hpp"
+#include "safestate/fault_code.hpp"
+#include "safestate/operating_mode.hpp"
+#include "safestate/reject_reason.hpp"
+#include "safestate/resume_target.hpp"
+#include "safestate/selector_reading.hpp"
+#include "safestate/speed_level.hpp"
+#include "safestate/state_id.hpp"
+#include "safestate/stop_category.hpp"
+#include "safestate/submit_result.hpp"
+
+namespace {
+
+using namespace safestate;  // NOLINT
+
+template <typename E, std::size_t N>
+std::vector<std::string> names(const std::array<E, N>& all) {
+  std::vector<std::string> out;
+  for (const E e : all) {
+    out.emplace_back(to_string(e));
+    EXPECT_EQ(enum_from_string(to_string(e), all), e);  // round trip
+  }
+  return out;
+}
+
+using V = std::vector<std::string>;
+
+TEST(RSM16_StatusNames, EnumNamesAreTheUpperCaseNamesOfTheDesignPage) {
+  EXPECT_EQ(names(kAllStates), (V{"BOOT", "ERROR_LOCKOUT", "ESTOP_ACTIVE", "ESTOP_RESET_NEEDED", "IDLE", "ARMING",
+                                  "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE", "MANUAL_JOGGING", "STOPPING", "HOLD"}));
+  EXPECT_EQ(names(kAllEnablePositions), (V{"RELEASED", "MIDDLE", "PANIC"}));
+  EXPECT_EQ(names(kAllOperatingModes), (V{"NONE", "AUTO", "T1", "T2"}));
+  EXPECT_EQ(names(kAllSelectorReadings), (V{"INVALID", "AUTO", "T1", "T2"}));
+  EXPECT_EQ(names(kAllStopCategories), (V{"NONE", "CAT0", "CAT1", "CAT2"}));
+  EXPECT_EQ(names(kAllFaultCodes),
+            (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING",
+               "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT"}));
+  EXPECT_EQ(names(kAllRejectReasons),
+            (V{"NONE", "LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT", "SELECTOR_INVALID",
+               "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE", "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO",
+               "INVALID_ARGUMENT", "QUEUE_FULL"}));
+  EXPECT_EQ(names(kAllCommandKinds), (V{"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME", "JOG_START",
+                                        "JOG_STOP", "T2_CONFIRM"}));
+  EXPECT_EQ(names(kAllSpeedLevels), (V{"ZERO", "MOVING", "OVER_T1"}));
+  EXPECT_EQ(names(kAllResumeTargets), (V{"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}));
+  EXPECT_EQ(names(kAllSubmitResults), (V{"QUEUED", "QUEUE_FULL"}));
+  EXPECT_EQ(enum_from_string("no such name", kAllStates), std::nullopt);
+}
+
+TEST(RSM16_StatusNames, CommandResultIsNoneAcceptedOrTheReason) {
+  EXPECT_EQ(to_string(CommandResult::none()), "NONE");
+  EXPECT_EQ(to_string(CommandResult::accepted()), "ACCEPTED");
+  EXPECT_EQ(to_string(CommandResult::rejected(RejectReason::QueueFull)), "QUEUE_FULL");
+}
+
+TEST(RSM02_OperatingModes, SelectorMatchesSessionOnlyForTheSameValidMode) {
+  EXPECT_TRUE(selector_matches(SelectorReading::T1, OperatingMode::T1));
+  EXPECT_FALSE(selector_matches(SelectorReading::T2, OperatingMode::T1));
+  EXPECT_FALSE(selector_matches(SelectorReading::Invalid, OperatingMode::None));
+  EXPECT_TRUE(is_manual(OperatingMode::T2));
+  EXPECT_FALSE(is_manual(OperatingMode::Auto));
+}
+
+TEST(RSM15_Config, DefaultsAreThoseOfTheDesignPage) {
+  const Config c;
+  EXPECT_EQ(c.cycle_time_us, 1000U);
+  EXPECT_EQ(c.discrepancy_cycles, 50U);
+  EXPECT_EQ(c.arming_timeout_cycles, 500U);
+  EXPECT_EQ(c.max_stop_cycles, 1000U);
+  EXPECT_EQ(c.t1_speed_limit_mm_s, 250);
+  EXPECT_DOUBLE_EQ(c.zero_velocity_rad_s, 0.001);
+  EXPECT_EQ(c.command_queue_limit, 8U);
+  EXPECT_EQ(kMaxQueueCapacity, 16U);
+  EXPECT_DOUBLE_EQ(c.dh[1].a_m, kUr5DhTable[1].a_m);
+  EXPECT_EQ(validate(c), ConfigError::None);
+}
+
+TEST(RSM15_Config, ValidateRejectsEachUnusableParameter) {
+  const auto with = [](auto edit) {
+    Config c;
+    edit(c);
+    return validate(c);
+  };
+  EXPECT_EQ(with([](Config& c) { c.cycle_time_us = 0; }), ConfigError::CycleTimeZero);
+  EXPECT_EQ(with([](Config& c) { c.discrepancy_cycles = kMaxTimerCycles + 1U; }), ConfigError::DiscrepancyTooLarge);
+  EXPECT_EQ(with([](Config& c) { c.arming_timeout_cycles = 0xFFFF'FFFFU; }), ConfigError::ArmingTimeoutTooLarge);
+  EXPECT_EQ(with([](Config& c) { c.max_stop_cycles = 0xFFFF'FFFFU; }), ConfigError::MaxStopTooLarge);
+  EXPECT_EQ(with([](Config& c) { c.t1_speed_limit_mm_s = 0; }), ConfigError::T1LimitNotPositive);
+  EXPECT_EQ(with([](Config& c) { c.zero_velocity_rad_s = -1e-3; }), ConfigError::ZeroVelocityInvalid);
+  EXPECT_EQ(with([](Config& c) { c.zero_velocity_rad_s = std::nan(""); }), ConfigError::ZeroVelocityInvalid);
+  EXPECT_EQ(with([](Config& c) { c.command_queue_limit = 0; }), ConfigError::QueueLimitOutOfRange);
+  EXPECT_EQ(with([](Config& c) { c.command_queue_limit = 17; }), ConfigError::QueueLimitOutOfRange);
+  EXPECT_EQ(with([](Config& c) { c.dh[3].d_m = std::numeric_limits<double>::infinity(); }),
+            ConfigError::DhTableNotFinite);
+  // Zero-length timers and zero tolerance are meaningful (no tolerance at all), so valid.
+  EXPECT_EQ(with([](Config& c) {
+              c.discrepancy_cycles = 0;
+              c.arming_timeout_cycles = 0;
+              c.max_stop_cycles = 0;
+              c.zero_velocity_rad_s = 0.0;
+            }),
+            ConfigError::None);
+}
+
+}  // namespace
