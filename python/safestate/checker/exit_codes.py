@@ -1,0 +1,32 @@
+"""TLC's process exit codes (tlc2.output.EC.ExitStatus), which we reuse."""
+
+SUCCESS = 0
+VIOLATION_ASSUMPTION = 10
+VIOLATION_DEADLOCK = 11
+VIOLATION_SAFETY = 12
+VIOLATION_LIVENESS = 13
+VIOLATION_ASSERT = 14        # TLC!Assert failed
+FAILURE_SPEC_EVAL = 75       # evaluation error while computing states
+FAILURE_SAFETY_EVAL = 76     # evaluation error in an invariant
+ERROR_SPEC_PARSE = 150       # syntax or semantic error in a module
+ERROR_CONFIG_PARSE = 151     # bad .cfg, unknown names, unsupported constructs (as TLC's "can't handle")
+ERROR_SYSTEM = 153           # memory limit reached
+ERROR = 255                  # internal error
+SECOND_OPINION_DISAGREES = 1  # `--tlc`: TLC's verdict or counts differ from ours
+
+BY_KIND = {
+    "syntax": ERROR_SPEC_PARSE,
+    "semantic": ERROR_SPEC_PARSE,
+    "config": ERROR_CONFIG_PARSE,
+    "unsupported": ERROR_CONFIG_PARSE,
+    "eval": FAILURE_SPEC_EVAL,
+    "assert": VIOLATION_ASSERT,
+    "assumption": VIOLATION_ASSUMPTION,
+    "memory": ERROR_SYSTEM,
+}
+
+BY_RESULT = {
+    "success": SUCCESS,
+    "safety failure": VIOLATION_SAFETY,
+    "deadlock failure": VIOLATION_DEADLOCK,
+}

@@ -1,0 +1,312 @@
+"""Breadth-first exploration of a model's state space with TLC's counting rules.
+
+`explore_states(model, workers=1, ...) -> CheckResult` reproduces TLC's
+single-worker breadth-first search exactly:
+
+* "states generated" counts every initial state and every successor produced by
+  the next-state relation, duplicates and constraint-violating states included;
+* a state is "distinct" when its fingerprint (the state, or its VIEW, reduced by
+  SYMMETRY) is new and it satisfies the state and action constraints;
+* invariants are checked on every new state and on every constraint-violating
+  successor (as TLC does), in generation order; the search stops at the first
+  violation, so the reported counts are those at that moment;
+* a state without any successor (constraint-violating ones count) is a deadlock;
+* depth is the number of BFS levels reached (initial states are level 1).
+
+Deduplication uses the exact states (a Python dict), not 64-bit fingerprints, so
+no state can be lost to a fingerprint collision (probability 0).
+
+With ``workers > 1`` large BFS levels are expanded by forked worker processes
+(`parallel.py`); their results are merged in the sequential order, so every count,
+verdict and trace is identical for any number of workers.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from array import array
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from ..tla.errors import EvalError, TlaError
+from .model import Model
+
+PROGRESS_SECONDS = 5.0
+
+
+@dataclass
+class Step:
+    state: tuple
+    action: str
+    params: dict
+
+
+@dataclass
+class Edge:
+    src: int
+    dst: int
+    action: str
+    params: dict
+
+
+@dataclass
+class CheckResult:
+    result: str  # "success" | "safety failure" | "deadlock failure" | "error"
+    distinct_states: int
+    states_generated: int
+    depth: int
+    left_on_queue: int
+    violated: str | None = None
+    trace: list[Step] | None = None
+    error: TlaError | None = None
+    seconds: float = 0.0
+    # True when the violation is in an initial state (TLC prints no statistics then).
+    initial_violation: bool = False
+    # Filled when explore_states(..., graph=True).
+    states: list[tuple] | None = None
+    initial: list[int] | None = None
+    edges: list[Edge] | None = None
+    warnings: list[str] = field(default_factory=list)
+
+
+class _Stop(Exception):
+    """Ends the search: a violation, a deadlock or an error was recorded."""
+
+
+class MemoryLimitExceeded(Exception):
+    pass
+
+
+def default_memory_limit_mb() -> int:
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemTotal:"):
+                    return int(int(line.split()[1]) / 1024 * 0.7)
+    except OSError:
+        pass
+    return 8192
+
+
+def _rss_mb() -> float:
+    try:
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2 ** 20
+    except OSError:
+        return 0.0
+
+
+class Explorer:
+    def __init__(self, model: Model, graph: bool, max_memory_mb: int | None,
+                 progress: Callable[[str], None] | None) -> None:
+        self.m = model
+        self.graph = graph
+        self.max_memory_mb = max_memory_mb or default_memory_limit_mb()
+        self.progress = progress
+        self.states: list[tuple] = []
+        self.parent = array("q")
+        self.leaf = array("i")
+        self.level = array("i")
+        self.seen: dict[Any, int] = {}
+        self.generated = 0
+        self.max_level = 0
+        self.edges: list[Edge] = []
+        self.initial: list[int] = []
+        self.outcome: CheckResult | None = None
+        self.next_check = 0
+        self.last_progress = time.monotonic()
+        self.head = 0
+
+    # ---------------------------------------------------------------- bookkeeping
+    def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
+        idx = len(self.states)
+        self.seen[key] = idx
+        self.states.append(st)
+        self.parent.append(parent)
+        self.leaf.append(leaf)
+        self.level.append(level)
+        if level > self.max_level:
+            self.max_level = level
+        if idx >= self.next_check:
+            self.next_check = idx + 20000
+            self._periodic()
+        return idx
+
+    def _periodic(self) -> None:
+        if _rss_mb() > self.max_memory_mb:
+            raise MemoryLimitExceeded()
+        now = time.monotonic()
+        if self.progress is not None and now - self.last_progress >= PROGRESS_SECONDS:
+            self.last_progress = now
+            self.progress(f"Progress({self.max_level}): {self.generated} states generated, "
+                          f"{len(self.states)} distinct states found, "
+                          f"{len(self.states) - self.head} states left on queue.")
+
+    def _finish(self, result: str, violated: str | None = None, trace_to: int | None = None,
+                extra: Step | None = None, error: TlaError | None = None, initial: bool = False) -> None:
+        trace = None
+        if trace_to is not None:
+            trace = self.trace(trace_to)
+            if extra is not None:
+                trace.append(extra)
+        self.outcome = CheckResult(result, len(self.states), self.generated,
+                                   self.max_level if self.generated else 0,
+                                   len(self.states) - self.head, violated, trace, error,
+                                   initial_violation=initial)
+        raise _Stop()
+
+    def trace(self, idx: int) -> list[Step]:
+        """The path from an initial state to state `idx`, with the actions taken."""
+        path = []
+        while idx >= 0:
+            path.append(idx)
+            idx = self.parent[idx]
+        path.reverse()
+        steps = [Step(self.states[path[0]], "Init", {})]
+        for a, b in zip(path, path[1:]):
+            want, leaf = self.states[b], self.leaf[b]
+            action, params = self.m.leaves[leaf].name, {}
+            for tr_leaf, tr_params, st in self._successors_with_leaf(self.states[a]):
+                if tr_leaf == leaf and st == want:
+                    params = tr_params
+                    break
+            steps.append(Step(want, action, params))
+        return steps
+
+    def _successors_with_leaf(self, state: tuple) -> list[tuple[int, dict, tuple]]:
+        out = []
+        m = self.m
+        m.run_next(state, lambda st, leaf, L: out.append((leaf, m.leaf_params(leaf, L), st)))
+        return out
+
+    # ---------------------------------------------------------------- search
+    def run(self) -> CheckResult:
+        m = self.m
+        try:
+            try:
+                m.run_init(self._on_init)
+                self._expand_all()
+            except _Stop:
+                pass
+            except MemoryLimitExceeded:
+                err = TlaError("memory", f"memory limit of {self.max_memory_mb} MB exceeded after "
+                               f"{len(self.states)} distinct states; raise it with --max-memory or "
+                               f"add a state constraint")
+                self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
+                                           len(self.states) - self.head, error=err)
+        except TlaError as e:
+            # An evaluation error while computing Init or successors.
+            self.outcome = CheckResult("error", len(self.states), self.generated,
+                                       self.max_level if self.generated else 0,
+                                       len(self.states) - self.head, error=e)
+        if self.outcome is None:
+            self.outcome = CheckResult("success", len(self.states), self.generated,
+                                       self.max_level if self.generated else 0, 0)
+        if self.graph:
+            self.outcome.states = self.states
+            self.outcome.initial = self.initial
+            self.outcome.edges = self.edges
+        return self.outcome
+
+    def _on_init(self, st: tuple, leaf: int, L: list) -> None:
+        m = self.m
+        self.generated += 1
+        m.check_complete(st, None)
+        new = True
+        idx = -1
+        if m.in_model(st):
+            key = m.key(st)
+            found = self.seen.get(key)
+            if found is None:
+                idx = self._add(st, key, -1, -1, 1)
+                self.initial.append(idx)
+            else:
+                new = False
+        if new:
+            for inv in m.invariants:
+                if not m.holds(inv, st):
+                    if idx >= 0:
+                        self._finish("safety failure", inv.name, idx, initial=True)
+                    self.outcome = CheckResult("safety failure", len(self.states), self.generated, 1,
+                                               len(self.states), inv.name, [Step(st, "Init", {})],
+                                               initial_violation=True)
+                    raise _Stop()
+
+    def _expand_all(self) -> None:
+        m = self.m
+        while self.head < len(self.states):
+            self.expand(self.head)
+            self.head += 1
+
+    def expand(self, i: int) -> None:
+        """Generate the successors of state `i` in TLC order, counting as TLC does."""
+        m = self.m
+        cur = self.states[i]
+        next_level = self.level[i] + 1
+        before = self.generated
+        seen_get = self.seen.get
+        invariants = m.invariants
+        holds = m.holds
+        constrained = bool(m.constraints or m.action_constraints)
+        keyed = m.view is not None or m.symmetry is not None
+        graph = self.graph
+        UNSET_ = _UNSET
+
+        def on_succ(st: tuple, leaf: int, L: list) -> None:
+            self.generated += 1
+            if UNSET_ in st:
+                m.check_complete(st, leaf)
+            in_model = True
+            if constrained:
+                in_model = m.in_model(st) and m.action_ok(cur, st)
+            new = True
+            idx = -1
+            if in_model:
+                key = m.key(st) if keyed else st
+                idx = seen_get(key, -1)
+                if idx < 0:
+                    idx = self._add(st, key, i, leaf, next_level)
+                else:
+                    new = False
+            if graph and in_model:
+                self.edges.append(Edge(i, idx, m.leaves[leaf].name, m.leaf_params(leaf, L)))
+            if new:
+                for inv in invariants:
+                    if not holds(inv, st):
+                        if idx >= 0:
+                            self._finish("safety failure", inv.name, idx)
+                        lf = m.leaves[leaf]
+                        self._finish("safety failure", inv.name, i, Step(st, lf.name, m.leaf_params(leaf, L)))
+        try:
+            m.run_next(cur, on_succ)
+        except TlaError as e:
+            if isinstance(e, EvalError) or e.kind == "eval":
+                self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
+                                           len(self.states) - self.head, error=e, trace=self.trace(i))
+                raise _Stop() from None
+            raise
+        if self.generated == before and m.check_deadlock:
+            self._finish("deadlock failure", None, i)
+
+
+from ..tla.env import UNSET as _UNSET  # noqa: E402
+
+
+def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memory_mb: int | None = None,
+                   progress: Callable[[str], None] | None = None) -> CheckResult:
+    """Explore every reachable state; see the module docstring for the semantics."""
+    start = time.monotonic()
+    if workers > 1 and not graph:
+        from .parallel import ParallelExplorer
+        explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
+    else:
+        explorer = Explorer(model, graph, max_memory_mb, progress)
+    result = explorer.run()
+    result.seconds = time.monotonic() - start
+    return result
+
+
+def print_progress(msg: str) -> None:
+    print(msg, file=sys.stderr, flush=True)

@@ -1,0 +1,432 @@
+"""A checkable model: a TLA+ module, its .cfg, and everything compiled from them.
+
+Public API (stable; used by the conformance and proof tools)::
+
+    model = load_model("Spec.tla")            # Spec.cfg beside it by default
+    model.variables                           # ["x", "y"], the state layout
+    for s in model.initial_states(): ...      # states are tuples in variable order
+    for tr in model.successors(s):            # Transition(action, params, state)
+        ...
+    model.invariant_violations(s)             # names of the invariants s violates
+    model.eval_in_state("x + 1", s)           # an expression or a definition name
+    model.state_to_itf(s) / model.state_from_itf(obj)
+
+Initial states and successors come in TLC's order, duplicates included (TLC
+counts them as "states generated").
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from ..tla import ast as A
+from ..tla.actions import ActionCompiler, Leaf
+from ..tla.compiler import Compiler, check_bool
+from ..tla.env import UNSET, Env, Frame
+from ..tla.errors import EvalError, Loc, TlaError, UnsupportedError
+from ..tla.modules import (BuiltinSym, ConstSym, DefSym, ModuleLoader, Scope, VarSym, build_root_scope,
+                           load_module)
+from ..tla.parser import parse_text
+from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order
+from .cfg import Config, ConfigEntry, parse_config
+from .itf import state_from_itf, state_to_itf
+
+
+@dataclass
+class Transition:
+    action: str
+    params: dict[str, Value]
+    state: tuple
+
+
+@dataclass
+class Named:
+    name: str
+    loc: Loc
+    fn: Callable[..., Value]
+
+
+@dataclass
+class Model:
+    module: A.Module
+    config: Config
+    scope: Scope
+    variables: list[str]
+    compiler: Compiler
+    check_deadlock: bool
+    invariants: list[Named] = field(default_factory=list)
+    constraints: list[Named] = field(default_factory=list)
+    action_constraints: list[Named] = field(default_factory=list)
+    properties: list[str] = field(default_factory=list)
+    view: Named | None = None
+    symmetry: list[dict] | None = None
+    leaves: list[Leaf] = field(default_factory=list)
+    _init: Any = None
+    _init_size: int = 0
+    _next: Any = None
+    _next_size: int = 0
+    # The continuation at the end of Init/Next calls sink[0](state, leaf_index, frame).
+    sink: list = field(default_factory=lambda: [None])
+    next_name: str = "Next"
+
+    # ---------------------------------------------------------------- generation
+    def run_init(self, callback: Callable[[tuple, int, list], None]) -> None:
+        """Call `callback(state, -1, frame)` for each initial state, in TLC order."""
+        self.sink[0] = callback
+        self._init(None, [UNSET] * len(self.variables), [None] * self._init_size)
+
+    def run_next(self, state: tuple, callback: Callable[[tuple, int, list], None]) -> None:
+        """Call `callback(successor, leaf_index, frame)` for each successor, in TLC order."""
+        self.sink[0] = callback
+        self._next(state, [UNSET] * len(self.variables), [None] * self._next_size)
+
+    def initial_states(self) -> list[tuple]:
+        out: list[tuple] = []
+
+        def add(st: tuple, leaf: int, L: list) -> None:
+            self.check_complete(st, None)
+            out.append(st)
+        self.run_init(add)
+        return out
+
+    def successors(self, state: tuple) -> list[Transition]:
+        out: list[Transition] = []
+
+        def add(st: tuple, leaf: int, L: list) -> None:
+            self.check_complete(st, leaf)
+            lf = self.leaves[leaf]
+            out.append(Transition(lf.name, {n: L[sl] for n, sl in lf.params}, st))
+        self.run_next(state, add)
+        return out
+
+    def leaf_params(self, leaf: int, L: list) -> dict[str, Value]:
+        return {n: L[sl] for n, sl in self.leaves[leaf].params}
+
+    def check_complete(self, st: tuple, leaf: int | None) -> None:
+        if UNSET not in st:
+            return
+        missing = [v for v, x in zip(self.variables, st) if x is UNSET]
+        plural = " is" if len(missing) == 1 else "s are"
+        if leaf is None:
+            raise TlaError("eval", f"State is not completely specified by the initial predicate: the "
+                           f"following variable{plural} not defined: {', '.join(missing)}.",
+                           self.module_loc())
+        lf = self.leaves[leaf]
+        raise TlaError("eval", f"Successor state is not completely specified by action {lf.name} of the "
+                       f"next-state relation. The following variable{plural} not defined: "
+                       f"{', '.join(missing)}.", lf.loc)
+
+    def module_loc(self) -> Loc:
+        return Loc(self.module.file, 1, 1)
+
+    # ---------------------------------------------------------------- checks
+    def invariant_violations(self, state: tuple) -> list[str]:
+        return [inv.name for inv in self.invariants if not self.holds(inv, state)]
+
+    def holds(self, named: Named, state: tuple, nxt: tuple | None = None) -> bool:
+        v = named.fn(state, nxt)
+        if v is True or v is False:
+            return v
+        raise EvalError(f"The value of {named.name} is not a boolean: {fmt(v)}", named.loc)
+
+    def in_model(self, state: tuple) -> bool:
+        for c in self.constraints:
+            if not self.holds(c, state):
+                return False
+        return True
+
+    def action_ok(self, state: tuple, nxt: tuple) -> bool:
+        for c in self.action_constraints:
+            if not self.holds(c, state, nxt):
+                return False
+        return True
+
+    def key(self, state: tuple) -> Any:
+        """The value TLC fingerprints: the VIEW (if any), reduced by SYMMETRY."""
+        k: Any = state if self.view is None else self.view.fn(state, None)
+        if self.symmetry:
+            k = min((fmt(_permute(k, p)) for p in self.symmetry))
+        return k
+
+    # ---------------------------------------------------------------- evaluation API
+    def eval_in_state(self, expr: str, state: tuple | None) -> Value:
+        """Evaluate an expression text, or the name of a definition, in `state`."""
+        text = f"---- MODULE __Eval ----\n__E == {expr}\n===="
+        mod = parse_text(text, "<expression>")[0]
+        body = mod.units[0].body  # type: ignore[union-attr]
+        fn = self.compiler.evaluator(body, self.scope)
+        return fn(state, None)
+
+    def state_to_itf(self, state: tuple, meta: dict | None = None) -> dict:
+        return state_to_itf(self.variables, state, meta)
+
+    def state_from_itf(self, obj: dict) -> tuple:
+        return state_from_itf(self.variables, obj)
+
+    def format_state(self, state: tuple) -> str:
+        """TLC's rendering of a state: one ``/\\ x = v`` line per variable."""
+        if len(self.variables) == 1:
+            return f"{self.variables[0]} = {fmt(state[0])}"
+        return "\n".join(f"/\\ {n} = {fmt(v)}" for n, v in zip(self.variables, state))
+
+
+def _permute(v: Value, p: dict) -> Value:
+    t = type(v)
+    if t is ModelValue:
+        return p.get(v, v)
+    if t is tuple:
+        return tuple(_permute(x, p) for x in v)
+    if t is FnValue:
+        return FnValue({_permute(k, p): _permute(x, p) for k, x in v.d.items()})
+    if t is frozenset:
+        return frozenset(_permute(x, p) for x in v)
+    return v
+
+
+# ====================================================================== loading
+
+
+def default_config_path(tla_path: str) -> str:
+    return os.path.splitext(tla_path)[0] + ".cfg"
+
+
+def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
+    """Parse, resolve and compile a model.  Raises `TlaError` on any problem."""
+    module = load_module(tla_path)
+    cfg_path = cfg_path or default_config_path(tla_path)
+    if not os.path.exists(cfg_path):
+        raise TlaError("config", f"configuration file {os.path.basename(cfg_path)} not found (give one with "
+                       f"--config)", Loc(cfg_path, 0, 0))
+    config = parse_config(cfg_path)
+    register_token_order(config.tokens)
+    loader = ModuleLoader(module)
+    scope, var_syms = build_root_scope(module, loader)
+    for m in loader.cache.values():
+        register_token_order(m.token_order)
+    constants, overrides = _constants(config, scope, module)
+    compiler = Compiler(constants, overrides)
+    compiler.sym_overrides = {id(scope.lookup(n)): target for n, target in overrides.items()}
+    compiler.var_names = [v.name for v in var_syms]
+    model = Model(module, config, scope, [v.name for v in var_syms], compiler, config.check_deadlock)
+    _check_assumptions(model, loader)
+    _compile_behaviour(model)
+    model.invariants = [_predicate(model, e, "invariant") for e in config.invariants]
+    model.constraints = [_predicate(model, e, "constraint") for e in config.constraints]
+    model.action_constraints = [_predicate(model, e, "action constraint", action=True)
+                                for e in config.action_constraints]
+    model.properties = [p.name for p in config.properties]
+    for p in config.properties:
+        _lookup_def(model, p, "property")
+    if config.view is not None:
+        model.view = _predicate(model, config.view, "view", boolean=False)
+    if config.symmetry is not None:
+        model.symmetry = _symmetry(model, config.symmetry)
+    return model
+
+
+def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str, Value], dict[str, Any]]:
+    values: dict[str, Value] = {}
+    overrides: dict[str, Any] = {}
+    declared = {n: s for n, s in scope.names.items() if isinstance(s, ConstSym)}
+    for name, (value, loc) in config.constants.items():
+        sym = scope.lookup(name)
+        if sym is None:
+            raise TlaError("config", f"In the configuration file, the identifier {name} does not appear in the "
+                           f"specification.", loc)
+        if isinstance(sym, ConstSym):
+            values[name] = value
+        else:
+            # TLC lets the .cfg override a definition with a value too.
+            overrides[name] = _ValueSym(value)
+    for name, (target, loc) in config.substitutions.items():
+        sym = scope.lookup(name)
+        tsym = scope.lookup(target)
+        if sym is None:
+            raise TlaError("config", f"In the configuration file, the identifier {name} does not appear in the "
+                           f"specification.", loc)
+        if tsym is None:
+            raise TlaError("config", f"The configuration file substitutes {name} with {target}, which is not "
+                           f"defined in the specification.", loc)
+        overrides[name] = tsym
+    for name, sym in declared.items():
+        if name not in values and name not in overrides:
+            raise TlaError("config", f"The constant parameter {name} is not assigned a value by the "
+                           f"configuration file.", sym.loc)
+    return values, overrides
+
+
+class _ValueSym(ConstSym):
+    """A definition overridden by a value in the .cfg."""
+
+    def __init__(self, value: Value) -> None:
+        super().__init__("<cfg value>", 0, Loc("<cfg>", 0, 0))
+        self.value = value
+
+
+def _check_assumptions(model: Model, loader: ModuleLoader) -> None:
+    for mod in _modules_in_order(model.module, loader):
+        for a in mod.assumes:
+            fn = model.compiler.evaluator(a.expr, model.scope)
+            try:
+                v = fn(None, None)
+            except EvalError as e:
+                raise TlaError("assumption", f"Evaluating assumption line {a.expr.loc.line}, col {a.expr.loc.column} of "
+                               f"module {mod.name} failed.\n{e.message}", e.loc or a.expr.loc) from None
+            if v is not True:
+                raise TlaError("assumption", f"Assumption line {a.expr.loc.line}, col {a.expr.loc.column} of "
+                               f"module {mod.name} is false.", a.expr.loc)
+
+
+def _modules_in_order(root: A.Module, loader: ModuleLoader) -> list[A.Module]:
+    out: list[A.Module] = []
+
+    def visit(m: A.Module) -> None:
+        if m in out:
+            return
+        for name, loc in m.extends:
+            ext = loader.find(name, loc)
+            if isinstance(ext, A.Module):
+                visit(ext)
+        out.append(m)
+    visit(root)
+    return out
+
+
+def _lookup_def(model: Model, entry: ConfigEntry, what: str) -> DefSym:
+    sym = model.scope.lookup(entry.name)
+    if not isinstance(sym, DefSym):
+        raise TlaError("config", f"The {what} {entry.name} specified in the configuration file is not defined "
+                       f"in the specification.", entry.loc)
+    return sym
+
+
+def _predicate(model: Model, entry: ConfigEntry, what: str, action: bool = False, boolean: bool = True) -> Named:
+    sym = _lookup_def(model, entry, what)
+    if sym.defn.params:
+        raise TlaError("config", f"The {what} {entry.name} must be an operator without arguments.", entry.loc)
+    info = model.compiler.def_info(sym)
+    if info.action and not action:
+        raise TlaError("config", f"The {what} {entry.name} is an action; only state predicates are allowed here.",
+                       sym.defn.loc)
+    code, size = model.compiler.compile_unit(A.Name(sym.defn.loc, entry.name), model.scope)
+    loc = sym.defn.loc
+    if action:
+        return Named(entry.name, loc, lambda s, t: code(s, t, [None] * size))
+    return Named(entry.name, loc, lambda s, t: code(s, None, [None] * size))
+
+
+# ---------------------------------------------------------------------- Init / Next
+
+
+def _compile_behaviour(model: Model) -> None:
+    cfg = model.config
+    if cfg.specification is not None:
+        if cfg.init is not None or cfg.next is not None:
+            raise TlaError("config", "The configuration file specifies both SPECIFICATION and INIT/NEXT.",
+                           cfg.specification.loc)
+        init, nxt = _split_spec(model, cfg.specification)
+    else:
+        if cfg.init is None:
+            raise TlaError("config", "The configuration file did not specify the initial state predicate.",
+                           Loc(cfg.file, 1, 1))
+        if cfg.next is None:
+            raise TlaError("config", "The configuration file did not specify the next state predicate.",
+                           Loc(cfg.file, 1, 1))
+        _lookup_def(model, cfg.init, "initial predicate")
+        _lookup_def(model, cfg.next, "next-state relation")
+        init = A.Name(cfg.init.loc, cfg.init.name)
+        nxt = A.Name(cfg.next.loc, cfg.next.name)
+    model.next_name = nxt.name if isinstance(nxt, A.Name) else "Next"
+    ac = ActionCompiler(model.compiler)
+    sink = model.sink
+
+    init_frame = Frame()
+
+    def emit_init(s: Any, t: list, L: list) -> None:
+        sink[0](tuple(t), -1, L)
+    model._init = ac.action(init, Env(model.scope, init_frame, init_mode=True), emit_init)
+    model._init_size = init_frame.size
+
+    next_frame = Frame()
+
+    def make_k(leaf: Leaf) -> Callable:
+        index = len(model.leaves)
+        model.leaves.append(leaf)
+
+        def emit(s: Any, t: list, L: list) -> None:
+            sink[0](tuple(t), index, L)
+        return emit
+    model._next = ac.split(nxt, Env(model.scope, next_frame), model.next_name, nxt.loc, [], make_k)
+    model._next_size = next_frame.size
+
+
+def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
+    """SPECIFICATION Spec with Spec == Init /\\ [][Next]_vars /\\ fairness."""
+    sym = _lookup_def(model, entry, "specification")
+    inits: list[A.Expr] = []
+    nexts: list[A.Expr] = []
+
+    def visit(e: A.Expr, depth: int) -> None:
+        if isinstance(e, A.And):
+            for i in e.items:
+                visit(i, depth)
+            return
+        if isinstance(e, A.Name) and depth < 20:
+            s = model.scope.lookup(e.name)
+            if isinstance(s, DefSym) and not s.defn.params and _is_temporal(s.defn.body, model, 0):
+                visit(s.defn.body, depth + 1)
+                return
+        if isinstance(e, A.Unary) and e.op == "[]":
+            if isinstance(e.arg, A.StepAction) and e.arg.stutter:
+                nexts.append(e.arg.action)
+                return
+            raise UnsupportedError("only [][Next]_vars is supported as the box formula of a specification", e.loc)
+        if isinstance(e, A.Fairness):
+            return  # fairness does not affect safety checking
+        if _is_temporal(e, model, 0):
+            raise UnsupportedError("unsupported temporal formula in the specification", e.loc)
+        inits.append(e)
+
+    visit(sym.defn.body, 0)
+    if not nexts:
+        raise TlaError("config", f"The specification {entry.name} has no [][Next]_vars conjunct.", sym.defn.loc)
+    if len(nexts) > 1:
+        raise UnsupportedError("a specification with several [][Next]_v conjuncts", sym.defn.loc)
+    if not inits:
+        raise TlaError("config", f"The specification {entry.name} has no initial predicate.", sym.defn.loc)
+    init = inits[0] if len(inits) == 1 else A.And(inits[0].loc, inits)
+    return init, nexts[0]
+
+
+def _is_temporal(e: Any, model: Model, depth: int) -> bool:
+    if isinstance(e, A.Unary) and e.op in ("[]", "<>"):
+        return True
+    if isinstance(e, (A.Fairness, A.UnboundedQuant)) or (isinstance(e, A.Binary) and e.op == "~>"):
+        return True
+    if isinstance(e, A.And):
+        return any(_is_temporal(i, model, depth) for i in e.items)
+    if isinstance(e, A.Name) and depth < 20:
+        s = model.scope.lookup(e.name)
+        if isinstance(s, DefSym) and not s.defn.params:
+            return _is_temporal(s.defn.body, model, depth + 1)
+    return False
+
+
+def _symmetry(model: Model, entry: ConfigEntry) -> list[dict]:
+    sym = _lookup_def(model, entry, "symmetry")
+    fn = model.compiler.evaluator(A.Name(sym.defn.loc, entry.name), model.scope)
+    perms = []
+    for p in as_set(fn(None, None)):
+        if type(p) is FnValue:
+            perms.append(dict(p.d))
+        elif type(p) is tuple and not p:
+            perms.append({})
+        else:
+            raise TlaError("config", f"The symmetry set {entry.name} must contain permutations (functions "
+                           f"between model values); found {fmt(p)}", entry.loc)
+    return perms
+
+
+__all__ = ["Model", "Transition", "load_model", "BuiltinSym", "VarSym"]

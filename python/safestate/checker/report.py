@@ -1,0 +1,67 @@
+"""TLC-style text output of a check."""
+
+from __future__ import annotations
+
+from typing import TextIO
+
+from ..tla.errors import TlaError
+from .explore import CheckResult, Step
+from .model import Model
+
+
+def format_error(e: TlaError) -> str:
+    where = f"{e.loc}: " if e.loc else ""
+    return f"Error: {where}{e.message}"
+
+
+def write_trace(out: TextIO, model: Model, trace: list[Step]) -> None:
+    print("Error: The behavior up to this point is:", file=out)
+    for i, step in enumerate(trace, 1):
+        if i == 1:
+            label = "<Initial predicate>"
+        else:
+            leaf = next((lf for lf in model.leaves if lf.name == step.action), None)
+            where = f" line {leaf.loc.line}, col {leaf.loc.column} of module {model.module.name}" if leaf else ""
+            params = ", ".join(f"{k} = {_fmt(v)}" for k, v in step.params.items())
+            label = f"<{step.action}{'(' + params + ')' if params else ''}{where}>"
+        print(f"State {i}: {label}", file=out)
+        print(model.format_state(step.state), file=out)
+        print(file=out)
+
+
+def _fmt(v: object) -> str:
+    from ..tla.values import fmt
+    return fmt(v)
+
+
+def write_result(out: TextIO, model: Model, r: CheckResult) -> None:
+    if model.properties:
+        print(f"Warning: liveness properties are not supported yet; PROPERTY {', '.join(model.properties)} "
+              f"not checked (safety only).", file=out)
+    if r.result == "success":
+        print("Model checking completed. No error has been found.", file=out)
+        print("  States are compared exactly (no fingerprints): the probability that a distinct state\n"
+              "  was missed because of a fingerprint collision is 0.", file=out)
+    elif r.result == "safety failure":
+        if r.initial_violation:
+            print(f"Error: Invariant {r.violated} is violated by the initial state:", file=out)
+            assert r.trace
+            print(model.format_state(r.trace[-1].state), file=out)
+            print(file=out)
+            return  # TLC prints no statistics after an initial-state violation
+        print(f"Error: Invariant {r.violated} is violated.", file=out)
+        if r.trace:
+            write_trace(out, model, r.trace)
+    elif r.result == "deadlock failure":
+        print("Error: Deadlock reached.", file=out)
+        if r.trace:
+            write_trace(out, model, r.trace)
+    else:
+        assert r.error is not None
+        print(format_error(r.error), file=out)
+        if r.trace:
+            write_trace(out, model, r.trace)
+    print(f"{r.states_generated} states generated, {r.distinct_states} distinct states found, "
+          f"{r.left_on_queue} states left on queue.", file=out)
+    print(f"The depth of the complete state graph search is {r.depth}.", file=out)
+    print(f"Finished in {r.seconds:.2f}s.", file=out)

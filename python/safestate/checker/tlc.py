@@ -1,0 +1,69 @@
+"""Second opinion: run the real TLC (``TLA2TOOLS_JAR``) on the same model and
+compare its verdict and counts with ours."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+from dataclasses import dataclass
+
+
+@dataclass
+class TlcSummary:
+    result: str
+    distinct_states: int | None
+    states_generated: int | None
+    depth: int | None
+    violated: str | None
+    exit_code: int
+
+
+def tlc_jar() -> str | None:
+    jar = os.environ.get("TLA2TOOLS_JAR")
+    return jar if jar and os.path.isfile(jar) else None
+
+
+def run_tlc(jar: str, tla_path: str, cfg_path: str, timeout: float = 3600) -> TlcSummary:
+    if shutil.which("java") is None:
+        raise RuntimeError("java is not on PATH")
+    meta = tempfile.mkdtemp(prefix="tlc-meta-")
+    folder = os.path.dirname(os.path.abspath(tla_path))
+    cmd = ["java", "-XX:+UseParallelGC", "-cp", jar, "tlc2.TLC", "-workers", "1", "-metadir", meta,
+           "-noGenerateSpecTE", "-config", os.path.abspath(cfg_path), os.path.basename(tla_path)]
+    try:
+        p = subprocess.run(cmd, cwd=folder, capture_output=True, text=True, timeout=timeout)
+    finally:
+        shutil.rmtree(meta, ignore_errors=True)
+    return parse_tlc_output(p.stdout + p.stderr, p.returncode)
+
+
+def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
+    stats = re.findall(r"^(\d+) states generated, (\d+) distinct states found", out, re.M)
+    depth = re.findall(r"^The depth of the complete state graph search is (\d+)", out, re.M)
+    viol = re.search(r"^Error: Invariant (\S+) is violated", out, re.M)
+    if "Model checking completed. No error has been found." in out:
+        result = "success"
+    elif viol:
+        result = "safety failure"
+    elif "Error: Deadlock reached." in out:
+        result = "deadlock failure"
+    else:
+        result = "error"
+    return TlcSummary(result,
+                      int(stats[-1][1]) if stats else None, int(stats[-1][0]) if stats else None,
+                      int(depth[-1]) if depth else None, viol.group(1) if viol else None, exit_code)
+
+
+def compare(ours: dict, tlc: TlcSummary) -> list[str]:
+    """Differences between our JSON summary and TLC's (fields TLC did not print are skipped)."""
+    diffs = []
+    for name in ("result", "distinct_states", "states_generated", "depth", "violated"):
+        theirs = getattr(tlc, name)
+        if theirs is None and name != "violated" and name != "result":
+            continue
+        if ours.get(name) != theirs:
+            diffs.append(f"{name}: ours {ours.get(name)!r}, TLC {theirs!r}")
+    return diffs

@@ -1,0 +1,42 @@
+"""The ``safestate`` console script.
+
+Each subcommand lives in its own module exposing ``add_arguments(parser)`` and
+``run(args) -> int``; register it in `SUBCOMMANDS`.  Subcommands whose module is
+not installed yet are simply not offered.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+# name -> (module, one-line help).  `prove`, `conform` and `report` are added by
+# their owners the same way.
+SUBCOMMANDS: dict[str, tuple[str, str]] = {
+    "check": ("safestate.checker.cli", "model-check a TLA+ specification (TLC-equivalent)"),
+    "prove": ("safestate.prover.cli", "prove invariants with z3"),
+    "conform": ("safestate.conformance.cli", "check the C++ implementation against the model"),
+    "report": ("safestate.report.cli", "build the evidence report"),
+}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="safestate", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    for name, (module_name, help_text) in SUBCOMMANDS.items():
+        try:
+            module = importlib.import_module(module_name)
+        except ModuleNotFoundError as e:
+            if e.name and module_name.startswith(e.name):
+                continue  # subcommand not available in this installation
+            raise
+        p = sub.add_parser(name, help=help_text)
+        module.add_arguments(p)
+        p.set_defaults(run=module.run)
+    args = parser.parse_args(argv)
+    return int(args.run(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

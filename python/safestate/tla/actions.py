@@ -1,0 +1,413 @@
+"""Compiles actions (and the initial predicate) in continuation-passing style.
+
+An action compiles to ``act(s, t, L)`` that calls its continuation ``k(s, t, L)``
+once for every way it can be satisfied, with the next state `t` (a list) filled in.
+This reproduces TLC's evaluation of the next-state relation:
+
+* a conjunct ``x' = e`` assigns ``x'`` if it is still unassigned, else tests it;
+* ``x' \\in S`` enumerates S (TLC's order) when ``x'`` is unassigned, else tests;
+* conjunctions are evaluated left to right, disjunctions and ``\\E`` branch;
+* ``UNCHANGED <<x, y>>`` is ``x' = x /\\ y' = y``;
+* any other conjunct is a guard evaluated as a boolean.
+
+In the initial predicate the same rules apply to unprimed variables.
+Continuations are fixed at compile time, so no closures are built while exploring.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from . import ast as A
+from .compiler import Compiler, _enum_checked, _prefix, check_bool
+from .env import UNSET, Code, Env, SlotLocal
+from .errors import EvalError, Loc, TlaError, UnsupportedError
+from .modules import DefSym, SubstSym, VarSym
+from .values import member, values_equal
+
+Cont = Callable[[Any, Any, list], None]
+
+
+@dataclass
+class Leaf:
+    """One action of the next-state relation as TLC splits it: the operator name,
+    the bound variables (\\E variables and operator arguments) with their frame slots."""
+
+    name: str
+    loc: Loc
+    params: list[tuple[str, int]] = field(default_factory=list)
+
+
+class ActionCompiler:
+    def __init__(self, compiler: Compiler) -> None:
+        self.c = compiler
+
+    # ---------------------------------------------------------------- splitting Next
+    def split(self, e: A.Expr, env: Env, label: str, label_loc: Loc, params: list[tuple[str, int]],
+              make_k: Callable[[Leaf], Cont]) -> Code:
+        """Compile the next-state relation, giving each of TLC's actions its own
+        continuation (made by `make_k`), so each successor knows its action."""
+        if isinstance(e, A.Or):
+            branches = [self.split(i, env, label, label_loc, params, make_k) for i in e.items]
+            return _branches(branches)
+        if isinstance(e, A.Quant) and e.kind == "\\E":
+            inner, binds = self.c.bind_bounds(e.bounds, env)
+            names = [(n, sl) for b, bind in zip(_flat_bounds(e.bounds), binds) for n, sl in zip(b, bind[1])]
+            body = self.split(e.body, inner, label, label_loc, params + names, make_k)
+            return _exists(binds, body)
+        if isinstance(e, A.Let):
+            env2, resets = self.c.bind_let(e.defs, env)
+            return _let(resets, self.split(e.body, env2, label, label_loc, params, make_k))
+        if isinstance(e, (A.Name, A.Apply)) and e.name not in env.locals:
+            sym = env.scope.lookup(e.name)
+            if isinstance(sym, DefSym) and not sym.recursive and sym.defn.fn_bounds is None:
+                args = e.args if isinstance(e, A.Apply) else []
+                new_params: list[tuple[str, int]] = []
+
+                def body(b: A.Expr, benv: Env) -> Code:
+                    for p in sym.defn.params:
+                        loc_ = benv.locals.get(p.name)
+                        if isinstance(loc_, SlotLocal):
+                            new_params.append((p.name, loc_.slot))
+                    return self.split(b, benv, sym.defn.name, sym.defn.loc, params + new_params, make_k)
+                pre, code = self.c.inline_def(sym, args, env, e.loc, body)
+                return _prefix_act(pre, code)
+        return self.action(e, env, make_k(Leaf(label, label_loc, list(params))))
+
+    # ---------------------------------------------------------------- actions
+    def action(self, e: A.Expr, env: Env, k: Cont) -> Code:
+        method = getattr(self, "a_" + type(e).__name__, None)
+        if method is not None:
+            r = method(e, env, k)
+            if r is not None:
+                return r
+        return self.guard(e, env, k)
+
+    def guard(self, e: A.Expr, env: Env, k: Cont) -> Code:
+        g = self.c.expr(e, env)
+        loc = e.loc
+
+        def guard(s: Any, t: Any, L: list) -> None:
+            v = g(s, t, L)
+            if v is True:
+                k(s, t, L)
+            elif v is not False:
+                check_bool(v, loc, "action conjunct")
+        return guard
+
+    def a_Bool(self, e: A.Bool, env: Env, k: Cont) -> Code:
+        if e.value:
+            return k
+        return lambda s, t, L: None
+
+    def a_And(self, e: A.And, env: Env, k: Cont) -> Code:
+        for item in reversed(e.items):
+            k = self.action(item, env, k)
+        return k
+
+    def a_Or(self, e: A.Or, env: Env, k: Cont) -> Code:
+        return _branches([self.action(i, env, k) for i in e.items])
+
+    def a_Quant(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
+        if e.kind != "\\E":
+            if self.c.info(e.body, env).action:
+                raise UnsupportedError("\\A over an action (a conjunction of actions) is not supported", e.loc)
+            return None
+        inner, binds = self.c.bind_bounds(e.bounds, env)
+        return _exists(binds, self.action(e.body, inner, k))
+
+    def a_If(self, e: A.If, env: Env, k: Cont) -> Code | None:
+        c = self.c.expr(e.cond, env)
+        a, b = self.action(e.then, env, k), self.action(e.other, env, k)
+        loc = e.cond.loc
+
+        def ite(s: Any, t: Any, L: list) -> None:
+            v = c(s, t, L)
+            if v is True:
+                a(s, t, L)
+            elif v is False:
+                b(s, t, L)
+            else:
+                check_bool(v, loc, "IF condition")
+        return ite
+
+    def a_Case(self, e: A.Case, env: Env, k: Cont) -> Code | None:
+        arms = [(self.c.expr(g, env), self.action(v, env, k), g.loc) for g, v in e.arms]
+        other = self.action(e.other, env, k) if e.other is not None else None
+        loc = e.loc
+
+        def case(s: Any, t: Any, L: list) -> None:
+            for g, act, gl in arms:
+                r = g(s, t, L)
+                if r is True:
+                    act(s, t, L)
+                    return
+                if r is not False:
+                    check_bool(r, gl, "CASE guard")
+            if other is None:
+                raise EvalError("Attempted to evaluate a CASE with no arm whose guard is true", loc)
+            other(s, t, L)
+        return case
+
+    def a_Let(self, e: A.Let, env: Env, k: Cont) -> Code:
+        env2, resets = self.c.bind_let(e.defs, env)
+        return _let(resets, self.action(e.body, env2, k))
+
+    def a_Name(self, e: A.Name, env: Env, k: Cont) -> Code | None:
+        return self._call(e, [], env, k)
+
+    def a_Apply(self, e: A.Apply, env: Env, k: Cont) -> Code | None:
+        return self._call(e, e.args, env, k)
+
+    def _call(self, e: A.Name | A.Apply, args: list[A.Expr], env: Env, k: Cont) -> Code | None:
+        local = env.locals.get(e.name)
+        if local is not None:
+            from .env import ByNameLocal
+            if isinstance(local, ByNameLocal) and not args:
+                return self.action(local.expr, local.env, k)
+            return None
+        sym = env.scope.lookup(e.name)
+        if isinstance(sym, SubstSym) and not args:
+            inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
+            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode), k)
+        # TLC evaluates every user-defined operator in action position by descending
+        # into its body (so a disjunction inside it branches), except recursive ones.
+        if not isinstance(sym, DefSym) or sym.defn.fn_bounds is not None or sym.recursive:
+            return None
+        if self.c._inline_depth > 40:
+            return None
+        pre, code = self.c.inline_def(sym, args, env, e.loc, lambda b, benv: self.action(b, benv, k))
+        return _prefix_act(pre, code)
+
+    def a_Prefixed(self, e: A.Prefixed, env: Env, k: Cont) -> Code | None:
+        pre, code = self.c.prefixed(e, env, lambda b, benv: self.action(b, benv, k))
+        return _prefix_act(pre, code)
+
+    def a_StepAction(self, e: A.StepAction, env: Env, k: Cont) -> Code:
+        if e.stutter:
+            return _branches([self.action(e.action, env, k), self.unchanged(e.sub, env, k)])
+        same = self.c._unchanged_expr(e.sub, env)
+
+        def changed(s: Any, t: Any, L: list) -> None:
+            if not same(s, t, L):
+                k(s, t, L)
+        return self.action(e.action, env, changed)
+
+    def a_Unary(self, e: A.Unary, env: Env, k: Cont) -> Code | None:
+        if e.op == "UNCHANGED":
+            return self.unchanged(e.arg, env, k)
+        return None
+
+    def a_Binary(self, e: A.Binary, env: Env, k: Cont) -> Code | None:
+        if e.op == "=>":
+            lhs, rhs = self.c.expr(e.lhs, env), self.action(e.rhs, env, k)
+            lloc = e.lhs.loc
+
+            def implies(s: Any, t: Any, L: list) -> None:
+                v = lhs(s, t, L)
+                if v is True:
+                    rhs(s, t, L)
+                elif v is False:
+                    k(s, t, L)
+                else:
+                    check_bool(v, lloc, "antecedent of =>")
+            return implies
+        if e.op not in ("=", "\\in"):
+            return None
+        target = self._target_var(e.lhs, env)
+        if target is None:
+            return None
+        i, name = target
+        if e.op == "=":
+            return self._assign(i, self.c.expr(e.rhs, env), k, e.loc)
+        return self._assign_in(i, self.c.expr(e.rhs, env), k, e.rhs.loc)
+
+    # ---------------------------------------------------------------- assignments
+    def _target_var(self, lhs: A.Expr, env: Env) -> tuple[int, str] | None:
+        """The variable assigned by ``lhs = ...``: ``x'`` in actions, ``x`` in Init."""
+        if env.init_mode:
+            return self._var_of(lhs, env)
+        if isinstance(lhs, A.Prime):
+            return self._var_of(lhs.arg, env)
+        return None
+
+    def _var_of(self, e: A.Expr, env: Env) -> tuple[int, str] | None:
+        if not isinstance(e, A.Name) or e.name in env.locals:
+            return None
+        sym = env.scope.lookup(e.name)
+        while isinstance(sym, SubstSym) and isinstance(sym.expr, A.Name):
+            sym = sym.scope.lookup(sym.expr.name)
+        if isinstance(sym, VarSym):
+            return sym.index, sym.name
+        return None
+
+    def _assign(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
+        def assign(s: Any, t: Any, L: list) -> None:
+            v = rhs(s, t, L)
+            cur = t[i]
+            if cur is UNSET:
+                t[i] = v
+                k(s, t, L)
+                t[i] = UNSET
+            elif cur == v if type(cur) is type(v) else _eq(cur, v, loc):
+                k(s, t, L)
+        return assign
+
+    def _assign_in(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
+        def assign_in(s: Any, t: Any, L: list) -> None:
+            S = rhs(s, t, L)
+            cur = t[i]
+            if cur is UNSET:
+                for v in _enum_checked(S, loc):
+                    t[i] = v
+                    k(s, t, L)
+                t[i] = UNSET
+            else:
+                try:
+                    ok = member(cur, S)
+                except EvalError as err:
+                    raise err.with_loc(loc)
+                if ok:
+                    k(s, t, L)
+        return assign_in
+
+    def unchanged(self, e: A.Expr, env: Env, k: Cont) -> Code:
+        idx = self._unchanged_vars(e, env, 0)
+        if idx is None:
+            same = self.c._unchanged_expr(e, env)
+            return lambda s, t, L: k(s, t, L) if same(s, t, L) else None
+        for i in reversed(idx):
+            k = self._assign(i, (lambda i: lambda s, t, L: s[i])(i), k, e.loc)
+        return k
+
+    def _unchanged_vars(self, e: A.Expr, env: Env, depth: int) -> list[int] | None:
+        if depth > 20:
+            return None
+        if isinstance(e, A.TupleLit):
+            out: list[int] = []
+            for x in e.elems:
+                sub = self._unchanged_vars(x, env, depth + 1)
+                if sub is None:
+                    return None
+                out.extend(sub)
+            return out
+        if isinstance(e, A.Name) and e.name not in env.locals:
+            sym = env.scope.lookup(e.name)
+            while isinstance(sym, SubstSym) and isinstance(sym.expr, A.Name):
+                env = Env(sym.scope, env.frame)
+                e = sym.expr
+                sym = sym.scope.lookup(sym.expr.name)
+            if isinstance(sym, VarSym):
+                return [sym.index]
+            if isinstance(sym, DefSym) and not sym.defn.params and sym.defn.fn_bounds is None:
+                return self._unchanged_vars(sym.defn.body, Env(sym.scope, env.frame), depth + 1)
+            if isinstance(sym, SubstSym):
+                return self._unchanged_vars(sym.expr, Env(sym.scope, env.frame), depth + 1)
+        return None
+
+
+def _eq(a: Any, b: Any, loc: Loc) -> bool:
+    try:
+        return values_equal(a, b)
+    except EvalError as err:
+        raise err.with_loc(loc)
+
+
+def _flat_bounds(bounds: list[A.Bound]) -> list[list[str]]:
+    """Names per compiled binder, matching `Compiler.bind_bounds` (one binder per
+    name, or one per tuple pattern)."""
+    out: list[list[str]] = []
+    for b in bounds:
+        if b.tuple:
+            out.append(list(b.names))
+        else:
+            out.extend([n] for n in b.names)
+    return out
+
+
+def _branches(branches: list[Code]) -> Code:
+    if len(branches) == 1:
+        return branches[0]
+    if len(branches) == 2:
+        b0, b1 = branches
+
+        def or2(s: Any, t: Any, L: list) -> None:
+            b0(s, t, L)
+            b1(s, t, L)
+        return or2
+
+    def orn(s: Any, t: Any, L: list) -> None:
+        for b in branches:
+            b(s, t, L)
+    return orn
+
+
+def _exists(binds: list, body: Code) -> Code:
+    from .compiler import _assign as assign_binder
+    if len(binds) == 1 and not binds[0][2]:
+        set_code, (slot,), _, sloc = binds[0]
+
+        def exists1(s: Any, t: Any, L: list) -> None:
+            for v in _enum_checked(set_code(s, t, L), sloc):
+                L[slot] = v
+                body(s, t, L)
+        return exists1
+    n = len(binds)
+
+    def rec(s: Any, t: Any, L: list, i: int) -> None:
+        if i == n:
+            body(s, t, L)
+            return
+        set_code, slots, is_tuple, sloc = binds[i]
+        for v in _enum_checked(set_code(s, t, L), sloc):
+            assign_binder(L, slots, is_tuple, v, sloc)
+            rec(s, t, L, i + 1)
+    return lambda s, t, L: rec(s, t, L, 0)
+
+
+def _let(resets: list[int], body: Code) -> Code:
+    if not resets:
+        return body
+    from .env import NOTSET
+
+    def let(s: Any, t: Any, L: list) -> None:
+        for sl in resets:
+            L[sl] = NOTSET
+        body(s, t, L)
+    return let
+
+
+def _prefix_act(pre: list, code: Code) -> Code:
+    return _prefix(pre, code)
+
+
+class _Found(Exception):
+    pass
+
+
+_FOUND = _Found()
+
+
+def _found(s: Any, t: Any, L: list) -> None:
+    raise _FOUND
+
+
+def compile_enabled(compiler: Compiler, arg: A.Expr, env: Env) -> Code:
+    """``ENABLED A``: does A have a successor from the current state?"""
+    if env.init_mode:
+        raise UnsupportedError("ENABLED in the initial predicate", arg.loc)
+    act = ActionCompiler(compiler).action(arg, env, _found)
+    n = len(compiler.var_names)
+
+    def enabled(s: Any, t: Any, L: list) -> bool:
+        t2 = [UNSET] * n
+        try:
+            act(s, t2, L)
+        except _Found:
+            return True
+        return False
+    return enabled
+
+
+__all__ = ["ActionCompiler", "Leaf", "compile_enabled", "TlaError"]

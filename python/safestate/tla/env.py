@@ -1,0 +1,102 @@
+"""Compile-time environments: frames of run-time slots and local bindings.
+
+Compiled code has the signature ``f(s, t, L)``: `s` the current state (a tuple,
+indexed by variable number), `t` the next state under construction (a list, or
+None outside actions), `L` the frame (a list) holding bound variables.  A `Frame`
+hands out slot numbers at compile time; each compiled unit (an operator body, an
+invariant, Next) allocates ``[None] * frame.size`` per evaluation.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable
+
+from . import ast as A
+from .modules import Scope
+
+Code = Callable[[Any, Any, list], Any]
+
+
+class _Sentinel:
+    __slots__ = ("name",)
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+UNSET = _Sentinel("UNSET")      # a next-state variable not yet assigned
+NOTSET = _Sentinel("NOTSET")    # a LET definition not yet evaluated
+
+
+class Frame:
+    __slots__ = ("size",)
+
+    def __init__(self) -> None:
+        self.size = 0
+
+    def alloc(self) -> int:
+        self.size += 1
+        return self.size - 1
+
+
+@dataclass(eq=False)
+class SlotLocal:
+    """A bound variable or by-value operator argument stored in ``L[slot]``."""
+
+    slot: int
+
+
+@dataclass(eq=False)
+class LazyLocal:
+    """A zero-argument LET definition, evaluated on first use into ``L[slot]``."""
+
+    slot: int
+    code: Code
+
+
+@dataclass(eq=False)
+class ByNameLocal:
+    """An argument substituted by name (action-level arguments, instance parameters)."""
+
+    expr: A.Expr
+    env: "Env"
+
+
+@dataclass(eq=False)
+class OpLocal:
+    """A higher-order operator parameter; ``L[slot]`` holds a Python callable."""
+
+    slot: int
+    arity: int
+
+
+@dataclass(eq=False)
+class LetOpLocal:
+    """A LET operator with parameters, sharing the enclosing frame."""
+
+    defn: A.OpDef
+    env: "Env"
+    param_slots: list[int]
+    holder: list  # [compiled body] once compiled
+
+
+Local = SlotLocal | LazyLocal | ByNameLocal | OpLocal | LetOpLocal
+
+
+@dataclass(eq=False)
+class Env:
+    scope: Scope
+    frame: Frame
+    locals: dict[str, Local] = field(default_factory=dict)
+    # Compiling the initial predicate: unprimed variables are the state being built.
+    init_mode: bool = False
+
+    def bind(self, **bindings: Local) -> "Env":
+        return replace(self, locals={**self.locals, **bindings})
+
+    def bind_all(self, bindings: dict[str, Local]) -> "Env":
+        return replace(self, locals={**self.locals, **bindings})

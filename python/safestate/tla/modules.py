@@ -1,0 +1,223 @@
+"""Module loading and name resolution scopes.
+
+`load_module(path)` parses a ``.tla`` file into a `Module`.  `ModuleLoader` finds
+modules named in EXTENDS / INSTANCE: nested modules of the same file first, then
+``NAME.tla`` in the same folder, then the native standard modules.
+
+A `Scope` maps the names visible in one module instance to symbols: state
+variables (`VarSym`), CONSTANTs (`ConstSym`, valued by the .cfg), definitions
+(`DefSym`), standard-library operators (`BuiltinSym`), INSTANCE substitutions
+(`SubstSym`) and named instances (`InstanceSym`).  EXTENDS merges the extended
+module's names into the same scope; INSTANCE builds a new scope whose constants
+and variables are replaced by expressions of the instantiating scope.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Union
+
+from . import ast as A
+from .errors import Loc, TlaError, UnsupportedError
+from .parser import parse_text
+from .stdlib import STANDARD_MODULES, UNSUPPORTED_MODULES, Builtin
+
+
+def load_module(path: str) -> A.Module:
+    """Parse the .tla file at `path`; returns its (first) module."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+    except OSError as e:
+        raise TlaError("semantic", f"cannot read module file: {e.strerror}", Loc(path, 0, 0)) from None
+    modules = parse_text(text, path)
+    root = modules[0]
+    for extra in modules[1:]:
+        root.submodules.setdefault(extra.name, extra)
+    return root
+
+
+class ModuleLoader:
+    """Finds modules by name relative to the root module's folder."""
+
+    def __init__(self, root: A.Module) -> None:
+        self.root = root
+        self.folder = os.path.dirname(os.path.abspath(root.file))
+        self.cache: dict[str, A.Module] = {root.name: root}
+        self._register_submodules(root)
+
+    def _register_submodules(self, m: A.Module) -> None:
+        for name, sub in m.submodules.items():
+            self.cache.setdefault(name, sub)
+            self._register_submodules(sub)
+
+    def find(self, name: str, loc: Loc) -> A.Module | dict[str, Builtin]:
+        if name in self.cache:
+            return self.cache[name]
+        path = os.path.join(self.folder, name + ".tla")
+        if os.path.exists(path):
+            mod = load_module(path)
+            if mod.name != name:
+                raise TlaError("semantic", f"file {name}.tla contains module {mod.name}, not {name}", loc)
+            self.cache[name] = mod
+            self._register_submodules(mod)
+            return mod
+        if name in STANDARD_MODULES:
+            return STANDARD_MODULES[name]
+        if name in UNSUPPORTED_MODULES:
+            raise UnsupportedError(f"the standard module {name} is not supported", loc)
+        raise TlaError("semantic", f"Cannot find source file for module {name}", loc)
+
+
+# ----------------------------------------------------------------- symbols
+
+
+@dataclass(eq=False)
+class VarSym:
+    index: int
+    name: str
+    loc: Loc
+
+
+@dataclass(eq=False)
+class ConstSym:
+    name: str
+    arity: int
+    loc: Loc
+
+
+@dataclass(eq=False)
+class DefSym:
+    defn: A.OpDef
+    scope: "Scope"
+    recursive: bool
+    # Filled in by the compiler (cache of the compiled form and of its level).
+    compiled: object = None
+    info: object = None
+
+
+@dataclass(eq=False)
+class BuiltinSym:
+    builtin: Builtin
+
+
+@dataclass(eq=False)
+class SubstSym:
+    """A constant or variable of an instantiated module, replaced by `expr` in `scope`."""
+
+    name: str
+    expr: A.Expr
+    scope: "Scope"
+    instance_params: tuple[str, ...] = ()
+
+
+@dataclass(eq=False)
+class InstanceSym:
+    inst: A.InstanceDef
+    scope: "Scope"  # the instantiated module's scope
+    module: A.Module
+
+
+Symbol = Union[VarSym, ConstSym, DefSym, BuiltinSym, SubstSym, InstanceSym]
+
+
+@dataclass(eq=False)
+class Scope:
+    module: A.Module
+    loader: ModuleLoader
+    names: dict[str, Symbol] = field(default_factory=dict)
+    # True for `M(p) == INSTANCE ...` scopes: definitions are expanded at each use.
+    parameterised: bool = False
+    instance_params: tuple[str, ...] = ()
+
+    def lookup(self, name: str) -> Symbol | None:
+        return self.names.get(name)
+
+
+def build_root_scope(root: A.Module, loader: ModuleLoader) -> tuple[Scope, list[VarSym]]:
+    """The scope of the module being checked; returns it and its variables in order."""
+    scope = Scope(root, loader)
+    variables: list[VarSym] = []
+    _fill(scope, root, None, variables, set())
+    return scope, variables
+
+
+def _fill(scope: Scope, mod: A.Module, substs: dict[str, SubstSym] | None,
+          variables: list[VarSym], visiting: set[str]) -> None:
+    if mod.name in visiting:
+        raise TlaError("semantic", f"circular EXTENDS/INSTANCE of module {mod.name}", A.Loc(mod.file, 1, 1))
+    visiting = visiting | {mod.name}
+    for name, loc in mod.extends:
+        ext = scope.loader.find(name, loc)
+        if isinstance(ext, dict):
+            _add_builtins(scope, ext)
+        else:
+            _fill(scope, ext, substs, variables, visiting)
+    for c in mod.constants:
+        if substs is not None:
+            scope.names[c.name] = substs[c.name]
+        else:
+            scope.names[c.name] = ConstSym(c.name, c.arity, c.loc)
+    for v in mod.variables:
+        if substs is not None:
+            scope.names[v.name] = substs[v.name]
+        else:
+            sym = VarSym(len(variables), v.name, v.loc)
+            variables.append(sym)
+            scope.names[v.name] = sym
+    for unit in mod.units:
+        if isinstance(unit, A.OpDef):
+            scope.names[unit.name] = DefSym(unit, scope, unit.name in mod.recursive or unit.fn_bounds is not None)
+        else:
+            _instance(scope, unit, visiting)
+
+
+def _add_builtins(scope: Scope, module: dict[str, Builtin]) -> None:
+    for name, b in module.items():
+        scope.names.setdefault(name, BuiltinSym(b))
+
+
+def instance_parameters(mod: A.Module, loader: ModuleLoader) -> list[A.Param]:
+    """CONSTANTs and VARIABLEs of `mod`, including those of modules it EXTENDS."""
+    out: list[A.Param] = []
+    for name, loc in mod.extends:
+        ext = loader.find(name, loc)
+        if not isinstance(ext, dict):
+            out.extend(instance_parameters(ext, loader))
+    return out + mod.constants + mod.variables
+
+
+def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str]) -> None:
+    target = scope.loader.find(inst.module, inst.loc)
+    if isinstance(target, dict):
+        if inst.name is None:
+            _add_builtins(scope, target)
+        else:
+            raise UnsupportedError(f"named INSTANCE of the standard module {inst.module}", inst.loc)
+        return
+    params = tuple(p.name for p in inst.params)
+    explicit = dict(inst.substs)
+    substs: dict[str, SubstSym] = {}
+    for p in instance_parameters(target, scope.loader):
+        if p.name in explicit:
+            substs[p.name] = SubstSym(p.name, explicit[p.name], scope, params)
+        elif p.name in params or scope.lookup(p.name) is not None:
+            substs[p.name] = SubstSym(p.name, A.Name(inst.loc, p.name), scope, params)
+        else:
+            raise TlaError("semantic", f"INSTANCE of {inst.module} has no substitution for {p.name} and "
+                           f"the instantiating module declares no {p.name}", inst.loc)
+    unknown = set(explicit) - set(substs)
+    if unknown:
+        raise TlaError("semantic", f"INSTANCE substitutes {', '.join(sorted(unknown))}, which "
+                       f"{inst.module} does not declare", inst.loc)
+    inner = Scope(target, scope.loader, parameterised=bool(params) or scope.parameterised,
+                  instance_params=params + scope.instance_params)
+    _fill(inner, target, substs, [], visiting)
+    if inst.name is None:
+        for name, sym in inner.names.items():
+            if isinstance(sym, (DefSym, BuiltinSym, InstanceSym)) and not (
+                    isinstance(sym, DefSym) and sym.defn.local):
+                scope.names[name] = sym
+    else:
+        scope.names[inst.name] = InstanceSym(inst, inner, target)

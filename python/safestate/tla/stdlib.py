@@ -1,0 +1,450 @@
+"""Native implementations of the TLA+ standard modules.
+
+Naturals, Integers, Sequences, FiniteSets, TLC and Bags are built in (we never
+parse their TLA+ text).  Each module maps operator names to `Builtin`s taking
+already-evaluated argument values.  Operators that need their arguments
+unevaluated (``/\\``, ``\\/``, ``=>``...) are AST nodes, handled by the compiler.
+``Reals`` is not supported.  Operators marked ``higher_order`` receive Python
+callables for their operator arguments.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from typing import Callable
+
+from .errors import AssertFailure, EvalError
+from .values import (
+    BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
+    iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Builtin:
+    name: str
+    arity: int
+    fn: Callable[..., Value]
+    module: str
+    higher_order: bool = False
+
+
+def _int(v: Value, op: str) -> int:
+    if type(v) is not int:
+        raise EvalError(f"Attempted to apply the operator {op} to the non-integer {fmt(v)}")
+    return v
+
+
+def _seq(v: Value, op: str) -> tuple:
+    if type(v) is tuple:
+        return v
+    raise EvalError(f"Attempted to apply {op} to the non-sequence {fmt(v)}")
+
+
+# ----------------------------------------------------------------- Naturals / Integers
+
+
+def plus(a: Value, b: Value) -> int:
+    return _int(a, "+") + _int(b, "+")
+
+
+def minus(a: Value, b: Value) -> int:
+    return _int(a, "-") - _int(b, "-")
+
+
+def times(a: Value, b: Value) -> int:
+    return _int(a, "*") * _int(b, "*")
+
+
+def power(a: Value, b: Value) -> int:
+    a, b = _int(a, "^"), _int(b, "^")
+    if b < 0:
+        raise EvalError(f"Attempted to compute {a}^{b}: the exponent must be a natural number")
+    if a == 0 and b == 0:
+        raise EvalError("0^0 is undefined")
+    return a ** b
+
+
+def div(a: Value, b: Value) -> int:
+    a, b = _int(a, "\\div"), _int(b, "\\div")
+    if b == 0:
+        raise EvalError(f"The second argument of \\div is 0 in {a} \\div 0")
+    return a // b
+
+
+def mod(a: Value, b: Value) -> int:
+    a, b = _int(a, "%"), _int(b, "%")
+    if b <= 0:
+        raise EvalError(f"The second argument of % should be a positive number, but instead it is:\n{b}")
+    return a % b
+
+
+def _cmp(op: str, f: Callable[[int, int], bool]) -> Callable[[Value, Value], bool]:
+    def compare(a: Value, b: Value) -> bool:
+        return f(_int(a, op), _int(b, op))
+    return compare
+
+
+def interval(a: Value, b: Value) -> IntervalSet:
+    return IntervalSet(_int(a, ".."), _int(b, ".."))
+
+
+def negate(a: Value) -> int:
+    return -_int(a, "-")
+
+
+NATURALS = {
+    "+": Builtin("+", 2, plus, "Naturals"), "-": Builtin("-", 2, minus, "Naturals"),
+    "*": Builtin("*", 2, times, "Naturals"), "^": Builtin("^", 2, power, "Naturals"),
+    "\\div": Builtin("\\div", 2, div, "Naturals"), "%": Builtin("%", 2, mod, "Naturals"),
+    "<": Builtin("<", 2, _cmp("<", lambda a, b: a < b), "Naturals"),
+    ">": Builtin(">", 2, _cmp(">", lambda a, b: a > b), "Naturals"),
+    "<=": Builtin("<=", 2, _cmp("<=", lambda a, b: a <= b), "Naturals"),
+    ">=": Builtin(">=", 2, _cmp(">=", lambda a, b: a >= b), "Naturals"),
+    "..": Builtin("..", 2, interval, "Naturals"),
+    "Nat": Builtin("Nat", 0, lambda: NAT, "Naturals"),
+}
+INTEGERS = dict(NATURALS)
+INTEGERS.update({
+    "Int": Builtin("Int", 0, lambda: INT, "Integers"),
+    "-.": Builtin("-.", 1, negate, "Integers"),
+})
+
+
+# ----------------------------------------------------------------- Sequences
+
+
+def seq_set(s: Value) -> SeqSet:
+    if not is_set(s):
+        raise EvalError(f"Attempted to apply Seq to the non-set {fmt(s)}")
+    return SeqSet(s)
+
+
+def seq_len(s: Value) -> int:
+    if type(s) is str:
+        return len(s)
+    return len(_seq(s, "Len"))
+
+
+def head(s: Value) -> Value:
+    s = _seq(s, "Head")
+    if not s:
+        raise EvalError("Attempted to apply Head to the empty sequence.")
+    return s[0]
+
+
+def tail(s: Value) -> tuple:
+    s = _seq(s, "Tail")
+    if not s:
+        raise EvalError("Attempted to apply Tail to the empty sequence.")
+    return s[1:]
+
+
+def append(s: Value, e: Value) -> tuple:
+    return _seq(s, "Append") + (e,)
+
+
+def concat(a: Value, b: Value) -> Value:
+    if type(a) is str and type(b) is str:
+        return a + b
+    return _seq(a, "\\o") + _seq(b, "\\o")
+
+
+def subseq(s: Value, m: Value, n: Value) -> Value:
+    m, n = _int(m, "SubSeq"), _int(n, "SubSeq")
+    if type(s) is str:
+        return s[m - 1:n]
+    s = _seq(s, "SubSeq")
+    if m > n:
+        return ()
+    if m < 1 or n > len(s):
+        raise EvalError(f"The second and third arguments of SubSeq must be in the domain of its first argument:\n"
+                        f"{fmt(s)}, but instead they are: {m} and {n}")
+    return s[m - 1:n]
+
+
+def select_seq(s: Value, test: Callable[[Value], Value]) -> tuple:
+    out = []
+    for x in _seq(s, "SelectSeq"):
+        r = test(x)
+        if type(r) is not bool:
+            raise EvalError(f"The test of SelectSeq returned the non-boolean {fmt(r)}")
+        if r:
+            out.append(x)
+    return tuple(out)
+
+
+SEQUENCES = {
+    "Seq": Builtin("Seq", 1, seq_set, "Sequences"), "Len": Builtin("Len", 1, seq_len, "Sequences"),
+    "Head": Builtin("Head", 1, head, "Sequences"), "Tail": Builtin("Tail", 1, tail, "Sequences"),
+    "Append": Builtin("Append", 2, append, "Sequences"), "\\o": Builtin("\\o", 2, concat, "Sequences"),
+    "SubSeq": Builtin("SubSeq", 3, subseq, "Sequences"),
+    "SelectSeq": Builtin("SelectSeq", 2, select_seq, "Sequences", higher_order=True),
+}
+
+
+# ----------------------------------------------------------------- FiniteSets
+
+
+def is_finite_set(s: Value) -> bool:
+    if type(s) is frozenset:
+        return True
+    if isinstance(s, LazySet):
+        return s.finite
+    raise EvalError(f"Attempted to apply IsFiniteSet to the non-set {fmt(s)}")
+
+
+def cardinality(s: Value) -> int:
+    if not is_set(s):
+        raise EvalError(f"Attempted to compute the cardinality of the non-set {fmt(s)}")
+    return set_size(s)
+
+
+FINITE_SETS = {
+    "IsFiniteSet": Builtin("IsFiniteSet", 1, is_finite_set, "FiniteSets"),
+    "Cardinality": Builtin("Cardinality", 1, cardinality, "FiniteSets"),
+}
+
+
+# ----------------------------------------------------------------- TLC
+
+
+def print_op(out: Value, val: Value) -> Value:
+    print(fmt(out), file=sys.stderr)
+    return val
+
+
+def print_t(out: Value) -> bool:
+    print(fmt(out), file=sys.stderr)
+    return True
+
+
+def assert_op(cond: Value, msg: Value) -> bool:
+    if cond is not True:
+        if cond is False:
+            raise AssertFailure(f"The first argument of Assert evaluated to FALSE; the second argument was:\n"
+                                f"{fmt(msg)}")
+        raise EvalError(f"The first argument of Assert is not a boolean: {fmt(cond)}")
+    return True
+
+
+def single_fn(k: Value, v: Value) -> Value:
+    return make_fn({k: v})
+
+
+def fn_items(f: Value) -> dict:
+    if type(f) is tuple:
+        return {i + 1: x for i, x in enumerate(f)}
+    if type(f) is FnValue:
+        return f.d
+    raise EvalError(f"Attempted to apply @@ to the non-function {fmt(f)}")
+
+
+def merge_fn(f: Value, g: Value) -> Value:
+    d = dict(fn_items(g))
+    d.update(fn_items(f))
+    return make_fn(d)
+
+
+def permutations(s: Value) -> frozenset:
+    import itertools
+    elems = sorted_elems(as_set(s))
+    return frozenset(make_fn(dict(zip(elems, p))) for p in itertools.permutations(elems))
+
+
+def sort_seq(s: Value, less: Callable[[Value, Value], Value]) -> tuple:
+    import functools
+    seq = list(_seq(s, "SortSeq"))
+
+    def cmp(a: Value, b: Value) -> int:
+        if less(a, b) is True:
+            return -1
+        if less(b, a) is True:
+            return 1
+        return 0
+    return tuple(sorted(seq, key=functools.cmp_to_key(cmp)))
+
+
+def to_string(v: Value) -> str:
+    return fmt(v)
+
+
+def tlc_eval(v: Value) -> Value:
+    return v
+
+
+def any_set() -> Value:
+    raise EvalError("The TLC operator Any is not supported")
+
+
+TLC = {
+    "Print": Builtin("Print", 2, print_op, "TLC"), "PrintT": Builtin("PrintT", 1, print_t, "TLC"),
+    "Assert": Builtin("Assert", 2, assert_op, "TLC"), ":>": Builtin(":>", 2, single_fn, "TLC"),
+    "@@": Builtin("@@", 2, merge_fn, "TLC"), "Permutations": Builtin("Permutations", 1, permutations, "TLC"),
+    "SortSeq": Builtin("SortSeq", 2, sort_seq, "TLC", higher_order=True),
+    "ToString": Builtin("ToString", 1, to_string, "TLC"), "TLCEval": Builtin("TLCEval", 1, tlc_eval, "TLC"),
+}
+
+
+# ----------------------------------------------------------------- Bags
+
+
+def _bag(b: Value) -> dict:
+    if type(b) is FnValue:
+        return b.d
+    if type(b) is tuple:
+        return {i + 1: x for i, x in enumerate(b)}
+    raise EvalError(f"Attempted to use the non-bag {fmt(b)} as a bag")
+
+
+def set_to_bag(s: Value) -> Value:
+    return make_fn({x: 1 for x in iter_set(s)})
+
+
+def bag_to_set(b: Value) -> frozenset:
+    return frozenset(k for k, c in _bag(b).items() if c > 0)
+
+
+def bag_in(e: Value, b: Value) -> bool:
+    return _bag(b).get(e, 0) > 0
+
+
+def copies_in(e: Value, b: Value) -> int:
+    return _bag(b).get(e, 0)
+
+
+def bag_cup(a: Value, b: Value) -> Value:
+    d = dict(_bag(a))
+    for k, c in _bag(b).items():
+        d[k] = d.get(k, 0) + c
+    return make_fn(d)
+
+
+def bag_minus(a: Value, b: Value) -> Value:
+    d = dict(_bag(a))
+    for k, c in _bag(b).items():
+        if k in d:
+            d[k] -= c
+    return make_fn({k: c for k, c in d.items() if c > 0})
+
+
+def is_a_bag(b: Value) -> bool:
+    try:
+        return all(type(c) is int and c > 0 for c in _bag(b).values())
+    except EvalError:
+        return False
+
+
+def bag_cardinality(b: Value) -> int:
+    return sum(_bag(b).values())
+
+
+def sub_bag(a: Value, b: Value) -> bool:
+    db = _bag(b)
+    return all(db.get(k, 0) >= c for k, c in _bag(a).items())
+
+
+def empty_bag() -> Value:
+    return ()
+
+
+BAGS = {
+    "SetToBag": Builtin("SetToBag", 1, set_to_bag, "Bags"), "BagToSet": Builtin("BagToSet", 1, bag_to_set, "Bags"),
+    "BagIn": Builtin("BagIn", 2, bag_in, "Bags"), "CopiesIn": Builtin("CopiesIn", 2, copies_in, "Bags"),
+    "(+)": Builtin("(+)", 2, bag_cup, "Bags"), "(-)": Builtin("(-)", 2, bag_minus, "Bags"),
+    "IsABag": Builtin("IsABag", 1, is_a_bag, "Bags"), "BagCardinality": Builtin("BagCardinality", 1, bag_cardinality, "Bags"),
+    "\\sqsubseteq": Builtin("\\sqsubseteq", 2, sub_bag, "Bags"), "EmptyBag": Builtin("EmptyBag", 0, empty_bag, "Bags"),
+}
+
+STANDARD_MODULES: dict[str, dict[str, Builtin]] = {
+    "Naturals": NATURALS, "Integers": INTEGERS, "Sequences": SEQUENCES, "FiniteSets": FINITE_SETS,
+    "TLC": TLC, "Bags": BAGS,
+}
+# Modules TLC ships that we do not implement: naming them is an "unsupported" error.
+UNSUPPORTED_MODULES = {"Reals", "RealTime", "TLCExt", "Json", "Randomization", "IOUtils", "CSV"}
+
+
+# ----------------------------------------------------------------- core set operators
+
+
+def _sets(a: Value, b: Value, op: str) -> tuple[frozenset, frozenset]:
+    if not is_set(a):
+        raise EvalError(f"Attempted to apply {op} to the non-set {fmt(a)}")
+    if not is_set(b):
+        raise EvalError(f"Attempted to apply {op} to the non-set {fmt(b)}")
+    return as_set(a), as_set(b)
+
+
+def _infinite(v: Value) -> bool:
+    return isinstance(v, LazySet) and not v.finite
+
+
+def cup(a: Value, b: Value) -> Value:
+    if _infinite(a) or _infinite(b):
+        _need_sets(a, b, "\\cup")
+        return FilteredSet(lambda v: member(v, a) or member(v, b), f"{fmt(a)} \\cup {fmt(b)}")
+    x, y = _sets(a, b, "\\cup")
+    return x | y
+
+
+def _need_sets(a: Value, b: Value, op: str) -> None:
+    for v in (a, b):
+        if not is_set(v):
+            raise EvalError(f"Attempted to apply {op} to the non-set {fmt(v)}")
+
+
+def cap(a: Value, b: Value) -> Value:
+    if _infinite(a) and _infinite(b):
+        return FilteredSet(lambda v: member(v, a) and member(v, b), f"{fmt(a)} \\cap {fmt(b)}")
+    if _infinite(a):
+        a, b = b, a
+    if type(a) is frozenset and isinstance(b, LazySet):
+        return frozenset(x for x in a if b.contains(x))
+    x, y = _sets(a, b, "\\cap")
+    return x & y
+
+
+def setminus(a: Value, b: Value) -> Value:
+    if _infinite(a):
+        _need_sets(a, b, "\\")
+        return FilteredSet(lambda v: member(v, a) and not member(v, b), f"{fmt(a)} \\ {fmt(b)}")
+    if type(a) is frozenset and isinstance(b, LazySet):
+        return frozenset(x for x in a if not b.contains(x))
+    x, y = _sets(a, b, "\\")
+    return x - y
+
+
+def subseteq(a: Value, b: Value) -> bool:
+    if not is_set(a) or not is_set(b):
+        raise EvalError(f"Attempted to apply \\subseteq to a non-set: {fmt(a)}, {fmt(b)}")
+    if type(b) is frozenset:
+        return as_set(a) <= b
+    return all(member(x, b) for x in iter_set(a))
+
+
+def union(s: Value) -> frozenset:
+    out: set = set()
+    for x in iter_set(s):
+        if not is_set(x):
+            raise EvalError(f"Attempted to apply UNION to a set containing the non-set {fmt(x)}")
+        out |= as_set(x)
+    return frozenset(out)
+
+
+def domain(f: Value) -> Value:
+    if type(f) is tuple:
+        return IntervalSet(1, len(f))
+    if type(f) is FnValue:
+        return frozenset(f.d)
+    if hasattr(f, "domain"):
+        return f.domain
+    if type(f) is str:
+        return IntervalSet(1, len(f))
+    raise EvalError(f"Attempted to apply the operator DOMAIN to a non-function:\n{fmt(f)}")
+
+
+CORE_SETS = {"BOOLEAN": BOOLEAN, "STRING": STRING}
+
+__all__ = ["Builtin", "STANDARD_MODULES", "UNSUPPORTED_MODULES", "cup", "cap", "setminus", "subseteq",
+           "union", "domain", "values_equal", "kind", "ModelValue"]

@@ -1,0 +1,589 @@
+"""TLA+ values as canonical, hashable Python objects.
+
+Representation (chosen so that Python equality *is* TLA+ equality and states can be
+hashed as plain tuples):
+
+* BOOLEAN -> ``bool``; integers -> ``int``; strings -> ``str``;
+* model values -> `ModelValue` (interned by name);
+* functions whose domain is ``1..n`` (tuples, sequences, and e.g. ``[i \\in 1..2 |-> i]``)
+  -> ``tuple``; the empty function is ``()``;
+* every other function, records included (records are functions over strings)
+  -> `FnValue` wrapping a dict;
+* finite sets -> ``frozenset``; intervals and the structured sets ``SUBSET S``,
+  ``[S -> T]``, ``[a : S]``, ``S \\X T``, ``Seq(S)``, ``Nat``, ``Int``, ``STRING`` ->
+  `LazySet` subclasses that test membership without enumerating, and materialise
+  to a frozenset only when a finite set is really needed.
+
+Known difference from TLC: ``TRUE``/``1`` and ``FALSE``/``0`` are equal Python
+values, so a set or function domain mixing booleans and integers collapses (TLC
+reports an error comparing them); the ``=`` operator itself does report the error.
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import Any, Iterable, Iterator
+
+from .errors import EvalError
+
+Value = Any
+
+
+class ModelValue:
+    """A TLC model value (declared in the .cfg as ``a = a`` or ``S = {a, b}``)."""
+
+    __slots__ = ("name", "rank")
+    _interned: dict[str, "ModelValue"] = {}
+
+    def __new__(cls, name: str) -> "ModelValue":
+        mv = cls._interned.get(name)
+        if mv is None:
+            mv = object.__new__(cls)
+            mv.name = name
+            mv.rank = len(cls._interned)
+            cls._interned[name] = mv
+        return mv
+
+    def __reduce__(self) -> tuple:
+        return (ModelValue, (self.name,))
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+class FnValue:
+    """A function that is not a tuple: a record or a function with a non-``1..n`` domain."""
+
+    __slots__ = ("d", "_hash")
+
+    def __init__(self, d: dict) -> None:
+        self.d = d
+        self._hash = -1
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is FnValue and (self is other or self.d == other.d)  # type: ignore[union-attr]
+
+    def __ne__(self, other: object) -> bool:
+        return not self.__eq__(other)
+
+    def __hash__(self) -> int:
+        h = self._hash
+        if h == -1:
+            h = self._hash = hash(frozenset(self.d.items()))
+        return h
+
+    def __reduce__(self) -> tuple:
+        return (FnValue, (self.d,))
+
+    def __repr__(self) -> str:
+        return fmt(self)
+
+
+def make_fn(d: dict) -> Value:
+    """Canonical function value for the mapping `d` (a tuple when the domain is 1..n)."""
+    n = len(d)
+    if n == 0:
+        return ()
+    if 1 in d and n in d:
+        keys_ok = True
+        for k in d:
+            if type(k) is not int or k < 1 or k > n:
+                keys_ok = False
+                break
+        if keys_ok:
+            return tuple(d[i] for i in range(1, n + 1))
+    return FnValue(d)
+
+
+# ----------------------------------------------------------------- lazy sets
+
+
+class LazySet:
+    """A set given by a rule; membership without enumeration, enumeration in TLC's order."""
+
+    __slots__ = ("_mat",)
+    finite = True
+
+    def contains(self, v: Value) -> bool:
+        raise NotImplementedError
+
+    def iterate(self) -> Iterator[Value]:
+        raise NotImplementedError
+
+    def describe(self) -> str:
+        raise NotImplementedError
+
+    def materialize(self) -> frozenset:
+        m = getattr(self, "_mat", None)
+        if m is None:
+            if not self.finite:
+                raise EvalError(f"Attempted to enumerate the infinite set {self.describe()}")
+            m = frozenset(self.iterate())
+            self._mat = m
+        return m
+
+    def size(self) -> int:
+        return len(self.materialize())
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:
+            return True
+        if isinstance(other, (frozenset, LazySet)):
+            if not self.finite or (isinstance(other, LazySet) and not other.finite):
+                return type(self) is type(other) and self.describe() == other.describe()
+            return self.materialize() == as_set(other)
+        return False
+
+    def __hash__(self) -> int:
+        if not self.finite:
+            return hash(self.describe())
+        return hash(self.materialize())
+
+    def __reduce__(self) -> tuple:
+        return (frozenset, (tuple(self.materialize()),)) if self.finite else (type(self), ())
+
+    def __repr__(self) -> str:
+        return self.describe()
+
+
+class IntervalSet(LazySet):
+    __slots__ = ("lo", "hi")
+
+    def __init__(self, lo: int, hi: int) -> None:
+        self.lo, self.hi = lo, hi
+
+    def contains(self, v: Value) -> bool:
+        return type(v) is int and self.lo <= v <= self.hi
+
+    def iterate(self) -> Iterator[Value]:
+        return iter(range(self.lo, self.hi + 1))
+
+    def size(self) -> int:
+        return max(0, self.hi - self.lo + 1)
+
+    def describe(self) -> str:
+        return f"{self.lo}..{self.hi}" if self.lo <= self.hi else "{}"
+
+    def __reduce__(self) -> tuple:
+        return (IntervalSet, (self.lo, self.hi))
+
+
+class _InfiniteSet(LazySet):
+    __slots__ = ()
+    finite = False
+    name = ""
+
+    def describe(self) -> str:
+        return self.name
+
+    def iterate(self) -> Iterator[Value]:
+        raise EvalError(f"Attempted to enumerate the infinite set {self.name}")
+
+    def __reduce__(self) -> tuple:
+        return (type(self), ())
+
+
+class NatSet(_InfiniteSet):
+    __slots__ = ()
+    name = "Nat"
+
+    def contains(self, v: Value) -> bool:
+        return type(v) is int and v >= 0
+
+
+class IntSet(_InfiniteSet):
+    __slots__ = ()
+    name = "Int"
+
+    def contains(self, v: Value) -> bool:
+        return type(v) is int
+
+
+class StringSet(_InfiniteSet):
+    __slots__ = ()
+    name = "STRING"
+
+    def contains(self, v: Value) -> bool:
+        return type(v) is str
+
+
+class SeqSet(LazySet):
+    """``Seq(S)``: infinite unless S is empty."""
+
+    __slots__ = ("base",)
+    finite = False
+
+    def __init__(self, base: Value) -> None:
+        self.base = base
+
+    def contains(self, v: Value) -> bool:
+        return type(v) is tuple and all(member(x, self.base) for x in v)
+
+    def iterate(self) -> Iterator[Value]:
+        raise EvalError(f"Attempted to enumerate the infinite set Seq({fmt(self.base)})")
+
+    def describe(self) -> str:
+        return f"Seq({fmt(self.base)})"
+
+    def __reduce__(self) -> tuple:
+        return (SeqSet, (self.base,))
+
+
+class PowerSet(LazySet):
+    """``SUBSET S``; enumerated by increasing size like TLC's normalised order."""
+
+    __slots__ = ("base", "finite")
+
+    def __init__(self, base: Value) -> None:
+        self.base = base
+        self.finite = is_finite(base)
+
+    def contains(self, v: Value) -> bool:
+        if not isinstance(v, (frozenset, LazySet)):
+            return False
+        return all(member(x, self.base) for x in iter_set(v))
+
+    def iterate(self) -> Iterator[Value]:
+        elems = sorted_elems(self.base)
+        for k in range(len(elems) + 1):
+            for combo in itertools.combinations(elems, k):
+                yield frozenset(combo)
+
+    def size(self) -> int:
+        return 2 ** set_size(self.base)
+
+    def describe(self) -> str:
+        return f"SUBSET {fmt(self.base)}"
+
+    def __reduce__(self) -> tuple:
+        return (PowerSet, (self.base,))
+
+
+class FnSetValue(LazySet):
+    """``[D -> R]``."""
+
+    __slots__ = ("dom", "rng", "finite")
+
+    def __init__(self, dom: Value, rng: Value) -> None:
+        self.dom, self.rng = dom, rng
+        self.finite = is_finite(dom) and (is_finite(rng) or set_size(dom) == 0)
+
+    def contains(self, v: Value) -> bool:
+        if type(v) is tuple:
+            keys: Iterable = range(1, len(v) + 1)
+            vals: Iterable = v
+            if not set_equal_keys(self.dom, len(v), None):
+                return False
+        elif type(v) is FnValue:
+            if not set_equal_keys(self.dom, len(v.d), v.d):
+                return False
+            vals = v.d.values()
+        else:
+            return False
+        rng = self.rng
+        return all(member(x, rng) for x in vals)
+
+    def iterate(self) -> Iterator[Value]:
+        dom = sorted_elems(self.dom)
+        rng = sorted_elems(self.rng)
+        for combo in itertools.product(rng, repeat=len(dom)):
+            yield make_fn(dict(zip(dom, combo)))
+
+    def size(self) -> int:
+        return set_size(self.rng) ** set_size(self.dom)
+
+    def describe(self) -> str:
+        return f"[{fmt(self.dom)} -> {fmt(self.rng)}]"
+
+    def __reduce__(self) -> tuple:
+        return (FnSetValue, (self.dom, self.rng))
+
+
+class RecSetValue(LazySet):
+    """``[a : S, b : T]``."""
+
+    __slots__ = ("fields", "finite")
+
+    def __init__(self, fields: tuple[tuple[str, Value], ...]) -> None:
+        self.fields = fields
+        self.finite = all(is_finite(s) for _, s in fields)
+
+    def contains(self, v: Value) -> bool:
+        if type(v) is not FnValue or len(v.d) != len(self.fields):
+            return False
+        d = v.d
+        for name, s in self.fields:
+            if name not in d or not member(d[name], s):
+                return False
+        return True
+
+    def iterate(self) -> Iterator[Value]:
+        names = [n for n, _ in self.fields]
+        for combo in itertools.product(*(sorted_elems(s) for _, s in self.fields)):
+            yield FnValue(dict(zip(names, combo)))
+
+    def size(self) -> int:
+        n = 1
+        for _, s in self.fields:
+            n *= set_size(s)
+        return n
+
+    def describe(self) -> str:
+        return "[" + ", ".join(f"{n} : {fmt(s)}" for n, s in self.fields) + "]"
+
+    def __reduce__(self) -> tuple:
+        return (RecSetValue, (self.fields,))
+
+
+class ProductSet(LazySet):
+    """``S1 \\X S2 \\X ...``."""
+
+    __slots__ = ("factors", "finite")
+
+    def __init__(self, factors: tuple[Value, ...]) -> None:
+        self.factors = factors
+        self.finite = all(is_finite(s) for s in factors)
+
+    def contains(self, v: Value) -> bool:
+        if type(v) is not tuple or len(v) != len(self.factors):
+            return False
+        return all(member(x, s) for x, s in zip(v, self.factors))
+
+    def iterate(self) -> Iterator[Value]:
+        return iter(itertools.product(*(sorted_elems(s) for s in self.factors)))
+
+    def size(self) -> int:
+        n = 1
+        for s in self.factors:
+            n *= set_size(s)
+        return n
+
+    def describe(self) -> str:
+        return " \\X ".join(fmt(s) for s in self.factors)
+
+    def __reduce__(self) -> tuple:
+        return (ProductSet, (self.factors,))
+
+
+class FilteredSet(LazySet):
+    """An infinite set combined with another set: ``Nat \\ {0}``, ``Int \\cup {..}``..."""
+
+    __slots__ = ("test", "text", "finite")
+
+    def __init__(self, test: Any, text: str) -> None:
+        self.test, self.text, self.finite = test, text, False
+
+    def contains(self, v: Value) -> bool:
+        return self.test(v)
+
+    def iterate(self) -> Iterator[Value]:
+        raise EvalError(f"Attempted to enumerate the infinite set {self.text}")
+
+    def describe(self) -> str:
+        return self.text
+
+    def __reduce__(self) -> tuple:
+        raise TypeError("infinite sets cannot be stored in states")
+
+
+NAT = NatSet()
+INT = IntSet()
+STRING = StringSet()
+BOOLEAN = frozenset((False, True))
+
+
+# ----------------------------------------------------------------- set helpers
+
+
+def is_set(v: Value) -> bool:
+    return type(v) is frozenset or isinstance(v, LazySet)
+
+
+def is_finite(s: Value) -> bool:
+    if type(s) is frozenset:
+        return True
+    if isinstance(s, LazySet):
+        return s.finite
+    raise EvalError(f"Attempted to use a non-set value as a set: {fmt(s)}")
+
+
+def set_size(s: Value) -> int:
+    if type(s) is frozenset:
+        return len(s)
+    if isinstance(s, LazySet):
+        if not s.finite:
+            raise EvalError(f"Attempted to compute the cardinality of the infinite set {s.describe()}")
+        return s.size()
+    raise EvalError(f"Attempted to compute the cardinality of a non-set: {fmt(s)}")
+
+
+def as_set(v: Value) -> frozenset:
+    """The finite set `v` as a frozenset (error for non-sets and infinite sets)."""
+    if type(v) is frozenset:
+        return v
+    if isinstance(v, LazySet):
+        return v.materialize()
+    raise EvalError(f"Attempted to use a non-set value as a set: {fmt(v)}")
+
+
+def member(v: Value, s: Value) -> bool:
+    if type(s) is frozenset:
+        return v in s
+    if isinstance(s, LazySet):
+        return s.contains(v)
+    raise EvalError(f"Attempted to check if the value:\n{fmt(v)}\nis an element of the non-set {fmt(s)}")
+
+
+def set_equal_keys(dom: Value, n: int, d: dict | None) -> bool:
+    """Is `dom` exactly the domain of a function with dict `d` (or 1..n when d is None)?"""
+    if set_size(dom) != n:
+        return False
+    if d is None:
+        return all(member(i, dom) for i in range(1, n + 1))
+    return all(member(k, dom) for k in d)
+
+
+# ----------------------------------------------------------------- TLC order
+
+# TLC orders strings (and model values) by when their name was first interned, which
+# is roughly the order of first appearance in the .cfg and the modules.  We keep the
+# same order so that CHOOSE and enumeration agree with TLC.
+_STRING_RANK: dict[str, int] = {}
+
+
+def register_token_order(tokens: Iterable[str]) -> None:
+    for t in tokens:
+        if t not in _STRING_RANK:
+            _STRING_RANK[t] = len(_STRING_RANK)
+
+
+def string_rank(s: str) -> int:
+    r = _STRING_RANK.get(s)
+    if r is None:
+        r = _STRING_RANK[s] = len(_STRING_RANK)
+    return r
+
+
+def tlc_key(v: Value) -> tuple:
+    """Sort key reproducing TLC's normalised order within values of one kind."""
+    t = type(v)
+    if t is int:
+        return (1, v)
+    if t is bool:
+        return (0, v)
+    if t is str:
+        return (2, string_rank(v))
+    if t is ModelValue:
+        return (3, string_rank(v.name))
+    if t is tuple:
+        return (4, len(v), (), tuple(tlc_key(x) for x in v))
+    if t is FnValue:
+        keys = sorted(v.d, key=tlc_key)
+        return (4, len(keys), tuple(tlc_key(k) for k in keys), tuple(tlc_key(v.d[k]) for k in keys))
+    if t is frozenset or isinstance(v, LazySet):
+        elems = sorted_elems(v)
+        return (5, len(elems), tuple(tlc_key(x) for x in elems))
+    return (9, repr(v))
+
+
+_SORTED_CACHE: dict[frozenset, tuple] = {}
+
+
+def sorted_elems(s: Value) -> tuple:
+    """The elements of a finite set in TLC's enumeration order."""
+    if type(s) is frozenset:
+        r = _SORTED_CACHE.get(s)
+        # {0, 1} == {FALSE, TRUE} in Python: make sure a hit has the right element type.
+        if r is None or (r and type(r[0]) is not type(next(iter(s)))):
+            if len(_SORTED_CACHE) > 20000:
+                _SORTED_CACHE.clear()
+            if all(type(x) is int for x in s):
+                r = tuple(sorted(s))
+            else:
+                r = tuple(sorted(s, key=tlc_key))
+            _SORTED_CACHE[s] = r
+        return r
+    if isinstance(s, LazySet):
+        if isinstance(s, IntervalSet):
+            return tuple(range(s.lo, s.hi + 1))
+        if isinstance(s, PowerSet):
+            return tuple(sorted(s.materialize(), key=tlc_key))
+        return tuple(s.iterate())
+    raise EvalError(f"Attempted to enumerate a non-set value: {fmt(s)}")
+
+
+def iter_set(s: Value) -> Iterable[Value]:
+    """Elements in an unspecified order (for order-independent uses)."""
+    if type(s) is frozenset:
+        return s
+    if isinstance(s, LazySet):
+        if isinstance(s, IntervalSet):
+            return range(s.lo, s.hi + 1)
+        return s.materialize()
+    raise EvalError(f"Attempted to enumerate a non-set value: {fmt(s)}")
+
+
+# ----------------------------------------------------------------- kinds, equality
+
+
+def kind(v: Value) -> str:
+    t = type(v)
+    if t is bool:
+        return "boolean"
+    if t is int:
+        return "integer"
+    if t is str:
+        return "string"
+    if t is ModelValue:
+        return "model value"
+    if t is tuple or t is FnValue:
+        return "function"
+    if t is frozenset or isinstance(v, LazySet):
+        return "set"
+    if callable(v):
+        return "operator"
+    return t.__name__
+
+
+def values_equal(a: Value, b: Value) -> bool:
+    """TLA+ ``=``: TLC reports an error comparing values of different kinds, except
+    model values (which differ from every other value)."""
+    ta, tb = type(a), type(b)
+    if ta is tb:
+        return a == b
+    ka, kb = kind(a), kind(b)
+    if ka == kb:
+        return a == b
+    if ka == "model value" or kb == "model value":
+        return False
+    raise EvalError(f"Attempted to check equality of {ka} {fmt(a)} with non-{ka}:\n{fmt(b)}")
+
+
+# ----------------------------------------------------------------- printing
+
+
+def fmt(v: Value) -> str:
+    """TLC's printed form of a value."""
+    t = type(v)
+    if t is bool:
+        return "TRUE" if v else "FALSE"
+    if t is int:
+        return str(v)
+    if t is str:
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+    if t is ModelValue:
+        return v.name
+    if t is tuple:
+        return "<<" + ", ".join(fmt(x) for x in v) + ">>"
+    if t is FnValue:
+        keys = sorted(v.d, key=tlc_key)
+        if all(type(k) is str for k in keys):
+            return "[" + ", ".join(f"{k} |-> {fmt(v.d[k])}" for k in keys) + "]"
+        return "(" + " @@ ".join(f"{fmt(k)} :> {fmt(v.d[k])}" for k in keys) + ")"
+    if t is frozenset:
+        return "{" + ", ".join(fmt(x) for x in sorted_elems(v)) + "}"
+    if isinstance(v, LazySet):
+        return v.describe()
+    if callable(v):
+        return "<operator>"
+    return repr(v)

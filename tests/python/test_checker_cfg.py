@@ -1,0 +1,53 @@
+"""Parsing of TLC .cfg files."""
+
+from __future__ import annotations
+
+import pytest
+
+from safestate.checker.cfg import parse_config_text
+from safestate.tla.errors import TlaError
+from safestate.tla.values import ModelValue
+
+
+def test_checker_cfg_parses_every_statement() -> None:
+    cfg = parse_config_text("""\\* comment
+CONSTANTS N = 3  S = {a, b}  a = a  Name = "x" Neg = -2 T = <<1, TRUE>>
+CONSTANT C <- Op
+(* block
+   comment *)
+SPECIFICATION Spec
+INVARIANTS Inv1 Inv2
+INVARIANT Inv3
+PROPERTY Live
+CONSTRAINT Bound
+ACTION_CONSTRAINT Step
+SYMMETRY Sym
+VIEW View
+CHECK_DEADLOCK FALSE
+""", "m.cfg")
+    assert cfg.constants["N"][0] == 3
+    assert cfg.constants["S"][0] == frozenset({ModelValue("a"), ModelValue("b")})
+    assert cfg.constants["a"][0] is ModelValue("a")
+    assert cfg.constants["Name"][0] == "x" and cfg.constants["Neg"][0] == -2
+    assert cfg.constants["T"][0] == (1, True)
+    assert cfg.substitutions["C"][0] == "Op"
+    assert cfg.specification.name == "Spec"
+    assert [i.name for i in cfg.invariants] == ["Inv1", "Inv2", "Inv3"]
+    assert [p.name for p in cfg.properties] == ["Live"]
+    assert cfg.constraints[0].name == "Bound" and cfg.action_constraints[0].name == "Step"
+    assert cfg.symmetry.name == "Sym" and cfg.view.name == "View"
+    assert cfg.check_deadlock is False
+    assert cfg.invariants[1].loc.line == 7
+
+
+def test_checker_cfg_init_next_and_default_deadlock_check() -> None:
+    cfg = parse_config_text("INIT Init NEXT Next", "m.cfg")
+    assert cfg.init.name == "Init" and cfg.next.name == "Next" and cfg.check_deadlock
+
+
+@pytest.mark.parametrize("text,line", [("CONSTANT N 3", 1), ("INIT\n", 1), ("\nCHECK_DEADLOCK maybe", 2),
+                                       ("FOO Bar", 1), ("CONSTANT N = {1, 2", 1)])
+def test_checker_cfg_errors_have_positions(text: str, line: int) -> None:
+    with pytest.raises(TlaError) as err:
+        parse_config_text(text, "m.cfg")
+    assert err.value.loc.file == "m.cfg" and err.value.loc.line == line

@@ -1,0 +1,46 @@
+"""Bad input (tests/tla/errors): a clear message with file:line, a non-zero exit,
+never a Python traceback."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import ERRORS, load_expected, run_safestate
+
+EXPECTED = load_expected(ERRORS)
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_checker_reports_error_with_position(name: str) -> None:
+    want = EXPECTED[name]
+    p = run_safestate("check", str(ERRORS / f"{name}.tla"))
+    out = p.stdout + p.stderr
+    assert p.returncode != 0
+    assert "Traceback" not in out
+    assert "internal error" not in out
+    cfg_error = want["kind"] == "cfg"
+    file = f"{name}.cfg" if cfg_error else f"{name}.tla"
+    assert f"{file}:{want['line']}:" in out, out
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_checker_json_error_has_location(name: str) -> None:
+    p = run_safestate("check", str(ERRORS / f"{name}.tla"), "--json")
+    got = json.loads(p.stdout)
+    assert got["result"] == "error"
+    assert got["error"]["line"] == EXPECTED[name]["line"]
+    assert got["error"]["file"].endswith((".tla", ".cfg"))
+
+
+def test_checker_missing_cfg_is_a_clear_error(tla_dir) -> None:
+    path = tla_dir("NoCfg", "---- MODULE NoCfg ----\nVARIABLE x\nInit == x = 0\nNext == x' = x\n====\n")
+    p = run_safestate("check", str(path))
+    assert p.returncode == 151
+    assert "NoCfg.cfg" in p.stderr and "not found" in p.stderr
+
+
+def test_checker_unknown_file_is_a_clear_error(tmp_path) -> None:
+    p = run_safestate("check", str(tmp_path / "Missing.tla"))
+    assert p.returncode != 0 and "Traceback" not in p.stderr
