@@ -26,12 +26,12 @@ def tlc_jar() -> str | None:
     return jar if jar and os.path.isfile(jar) else None
 
 
-def run_tlc(jar: str, tla_path: str, cfg_path: str, timeout: float = 3600) -> TlcSummary:
+def run_tlc(jar: str, tla_path: str, cfg_path: str, timeout: float = 3600, workers: int = 1) -> TlcSummary:
     if shutil.which("java") is None:
         raise RuntimeError("java is not on PATH")
     meta = tempfile.mkdtemp(prefix="tlc-meta-")
     folder = os.path.dirname(os.path.abspath(tla_path))
-    cmd = ["java", "-XX:+UseParallelGC", "-cp", jar, "tlc2.TLC", "-workers", "1", "-metadir", meta,
+    cmd = ["java", "-XX:+UseParallelGC", "-cp", jar, "tlc2.TLC", "-workers", str(workers), "-metadir", meta,
            "-noGenerateSpecTE", "-config", os.path.abspath(cfg_path), os.path.basename(tla_path)]
     try:
         p = subprocess.run(cmd, cwd=folder, capture_output=True, text=True, timeout=timeout)

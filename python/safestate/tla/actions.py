@@ -24,6 +24,7 @@ from .compiler import Compiler, _enum_checked, _prefix, check_bool
 from .env import UNSET, Code, Env, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
+from .specialise import var_read
 from .values import member, values_equal
 
 Cont = Callable[[Any, Any, list], None]
@@ -102,9 +103,40 @@ class ActionCompiler:
         return lambda s, t, L: None
 
     def a_And(self, e: A.And, env: Env, k: Cont) -> Code:
-        for item in reversed(e.items):
-            k = self.action(item, env, k)
+        # Runs of plain assignments (x' = e, UNCHANGED <<x, y>>) become one closure.
+        items = list(e.items)
+        while items:
+            run: list[tuple[int, Code, Loc]] = []
+            while items:
+                parts = self._plain_assignments(items[-1], env)
+                if parts is None:
+                    break
+                run[:0] = parts
+                items.pop()
+            if len(run) > 1 and self.c.fast_paths:
+                k = assign_run(run, k)
+            elif run and not self.c.fast_paths:
+                for i, rhs, loc in reversed(run):
+                    k = self._assign(i, rhs, k, loc)
+            elif run:
+                i, rhs, loc = run[0]
+                k = self._assign(i, rhs, k, loc)
+            if items:
+                k = self.action(items.pop(), env, k)
         return k
+
+    def _plain_assignments(self, e: A.Expr, env: Env) -> list[tuple[int, Code, Loc]] | None:
+        """``x' = e`` or ``UNCHANGED <<x, y>>`` as (variable, value code, loc) triples."""
+        if isinstance(e, A.Binary) and e.op == "=":
+            target = self._target_var(e.lhs, env)
+            if target is not None:
+                return [(target[0], self.c.expr(e.rhs, env), e.loc)]
+            return None
+        if isinstance(e, A.Unary) and e.op == "UNCHANGED" and not env.init_mode:
+            idx = self._unchanged_vars(e.arg, env, 0)
+            if idx is not None:
+                return [(i, var_read(i), e.loc) for i in idx]
+        return None
 
     def a_Or(self, e: A.Or, env: Env, k: Cont) -> Code:
         return _branches([self.action(i, env, k) for i in e.items])
@@ -305,6 +337,31 @@ class ActionCompiler:
             if isinstance(sym, SubstSym):
                 return self._unchanged_vars(sym.expr, Env(sym.scope, env.frame), depth + 1)
         return None
+
+
+def assign_run(run: list[tuple[int, Code, Loc]], k: Cont) -> Code:
+    """Consecutive assignments in one closure, with the semantics of the chain of
+    `_assign` closures they replace: in order, each assigns its variable if unset
+    (later right-hand sides see it) or else tests it; then `k`; then undo."""
+    # UNCHANGED x (and x' = x) copy s[x] without calling a closure.
+    items = [(i, rhs, loc, getattr(rhs, "var", -1)) for i, rhs, loc in run]
+
+    def assign_all(s: Any, t: Any, L: list) -> None:
+        done = []
+        for i, rhs, loc, src in items:
+            v = s[src] if src >= 0 else rhs(s, t, L)
+            cur = t[i]
+            if cur is UNSET:
+                t[i] = v
+                done.append(i)
+            elif not (cur == v if type(cur) is type(v) else _eq(cur, v, loc)):
+                for j in done:
+                    t[j] = UNSET
+                return
+        k(s, t, L)
+        for j in done:
+            t[j] = UNSET
+    return assign_all
 
 
 def _eq(a: Any, b: Any, loc: Loc) -> bool:

@@ -13,14 +13,18 @@ TLC's normalised order (CHOOSE picks the first witness in that order).
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from typing import Any, Callable
 
 from . import ast as A
+from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym
+from .inline import can_inline, inline_call
+from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
 from .stdlib import NATURALS, cap, cup, domain, setminus, subseteq, union
 from .values import (BOOLEAN, STRING, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
                      ProductSet, RecSetValue, as_set, fmt, is_set, kind, make_fn, member,
@@ -28,6 +32,7 @@ from .values import (BOOLEAN, STRING, FnSetValue, FnValue, IntervalSet, LazySet,
 
 Value = Any
 EMPTY: list = []
+_LITERALS = (A.Num, A.Str, A.Bool)
 
 
 def enum(S: Value) -> Any:
@@ -86,6 +91,11 @@ class RecursiveFunction:
 class Compiler:
     """Compiles expressions of one model (fixed constants) to closures."""
 
+    # Constant folding, inlining and the specialised closures (constfold.py,
+    # inline.py, specialise.py).  The tests turn them off to compare with the
+    # general closures.
+    fast_paths = True
+
     def __init__(self, constants: dict[str, Value], overrides: dict[str, Any]) -> None:
         # CONSTANT name -> value (from the .cfg); `overrides` maps names to symbols for `C <- Op`.
         self.constants = constants
@@ -93,6 +103,9 @@ class Compiler:
         # id(symbol) -> replacing symbol, for `C <- Op` and definitions given values
         self.sym_overrides: dict[int, Any] = {}
         self._inline_depth = 0
+        # > 0 while compiling a body that runs re-entrantly on a shared frame (see inline.py).
+        self._no_inline = 0
+        self.folder = ConstFolder(self)
 
     # ================================================================ entry points
     def compile_unit(self, e: A.Expr, scope: Scope) -> tuple[Code, int]:
@@ -207,19 +220,19 @@ class Compiler:
         method = getattr(self, "c_" + type(e).__name__, None)
         if method is None:
             raise UnsupportedError(f"unsupported expression {type(e).__name__}", e.loc)
-        return method(e, env)
+        code = method(e, env)
+        if self.fast_paths and type(e) not in _LITERALS and self.folder.is_constant(e, env):
+            code = fold(code, env.frame.size)
+        return code
 
     def c_Num(self, e: A.Num, env: Env) -> Code:
-        v = e.value
-        return lambda s, t, L: v
+        return const_code(e.value)
 
     def c_Str(self, e: A.Str, env: Env) -> Code:
-        v = e.value
-        return lambda s, t, L: v
+        return const_code(e.value)
 
     def c_Bool(self, e: A.Bool, env: Env) -> Code:
-        v = e.value
-        return lambda s, t, L: v
+        return const_code(e.value)
 
     def c_Unsupported(self, e: A.Unsupported, env: Env) -> Code:
         raise UnsupportedError(f"unsupported construct: {e.what}", e.loc)
@@ -255,18 +268,10 @@ class Compiler:
     def _local_ref(self, name: str, local: Any, args: list[A.Expr], env: Env, loc: Loc) -> Code:
         if isinstance(local, SlotLocal):
             self._arity(name, 0, args, loc)
-            slot = local.slot
-            return lambda s, t, L: L[slot]
+            return slot_read(local.slot)
         if isinstance(local, LazyLocal):
             self._arity(name, 0, args, loc)
-            slot, code = local.slot, local.code
-
-            def lazy(s: Any, t: Any, L: list) -> Value:
-                v = L[slot]
-                if v is NOTSET:
-                    v = L[slot] = code(s, t, L)
-                return v
-            return lazy
+            return lazy_read(local.slot, local.code)
         if isinstance(local, ByNameLocal):
             self._arity(name, 0, args, loc)
             return self.expr(local.expr, local.env)
@@ -297,7 +302,7 @@ class Compiler:
             i = sym.index
             if env.init_mode:
                 return self._next_var(i, name, loc, init=True)
-            return lambda s, t, L: s[i]
+            return var_read(i)
         if isinstance(sym, ConstSym):
             if name not in self.constants:
                 raise TlaError("config", f"The constant parameter {name} is not assigned a value by the "
@@ -381,6 +386,8 @@ class Compiler:
             return _prefix(pre, body)
         if d.fn_bounds is not None:
             return self._fn_def_ref(sym)
+        if self.fast_paths and (d.params or info.vars) and can_inline(self, sym):
+            return inline_call(self, sym, args, env, loc)
         compiled = self._compiled_def(sym)
         if not d.params:
             if compiled.constant:
@@ -467,7 +474,11 @@ class Compiler:
             if len(a.params) != arity:
                 raise TlaError("semantic", f"LAMBDA has {len(a.params)} parameters, {arity} expected", a.loc)
             slots = [env.frame.alloc() for _ in a.params]
-            body = self.expr(a.body, env.bind_all({p: SlotLocal(sl) for p, sl in zip(a.params, slots)}))
+            self._no_inline += 1
+            try:
+                body = self.expr(a.body, env.bind_all({p: SlotLocal(sl) for p, sl in zip(a.params, slots)}))
+            finally:
+                self._no_inline -= 1
 
             def make_lambda(s: Any, t: Any, L: list) -> Callable:
                 def op(*vals: Value) -> Value:
@@ -492,16 +503,20 @@ class Compiler:
         slots = [env.frame.alloc() for _ in range(arity)]
         fake = [A.Name(a.loc, f"$p{i}") for i in range(arity)]
         inner_env = env.bind_all({f"$p{i}": SlotLocal(sl) for i, sl in enumerate(slots)})
-        if local is not None:
-            body = self._local_ref(name, local, fake, inner_env, a.loc)
-        else:
-            sym = env.scope.lookup(name)
-            if sym is None:
-                core = _CORE_BINARY.get(name)
-                if core is None or arity != 2:
-                    raise self._unknown(name, a.loc)
-                return lambda s, t, L: core
-            body = self._symbol_ref(name, sym, fake, inner_env, a.loc)
+        self._no_inline += 1
+        try:
+            if local is not None:
+                body = self._local_ref(name, local, fake, inner_env, a.loc)
+            else:
+                sym = env.scope.lookup(name)
+                if sym is None:
+                    core = _CORE_BINARY.get(name)
+                    if core is None or arity != 2:
+                        raise self._unknown(name, a.loc)
+                    return lambda s, t, L: core
+                body = self._symbol_ref(name, sym, fake, inner_env, a.loc)
+        finally:
+            self._no_inline -= 1
 
         def make_op(s: Any, t: Any, L: list) -> Callable:
             def op(*vals: Value) -> Value:
@@ -557,7 +572,11 @@ class Compiler:
             bindings = {}
             for p, sl in zip(d.params, local.param_slots):
                 bindings[p.name] = OpLocal(sl, p.arity) if p.arity else SlotLocal(sl)
-            local.holder[0] = self.expr(d.body, local.env.bind_all(bindings))
+            self._no_inline += 1
+            try:
+                local.holder[0] = self.expr(d.body, local.env.bind_all(bindings))
+            finally:
+                self._no_inline -= 1
         holder = local.holder
         slots = local.param_slots
         arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
@@ -680,6 +699,8 @@ class Compiler:
         return disj
 
     def c_If(self, e: A.If, env: Env) -> Code:
+        if isinstance(e.other, A.If) and self.fast_paths:
+            return self._if_chain(e, env)
         c, a, b = self.expr(e.cond, env), self.expr(e.then, env), self.expr(e.other, env)
         loc = e.cond.loc
 
@@ -691,6 +712,39 @@ class Compiler:
                 return b(s, t, L)
             return check_bool(v, loc, "IF condition")
         return ite
+
+    def _if_chain(self, e: A.If, env: Env) -> Code:
+        """IF c1 THEN a1 ELSE IF c2 THEN a2 ... ELSE b as one loop instead of nested
+        closures (long row tables are written this way)."""
+        arms = []
+        node: A.Expr = e
+        while isinstance(node, A.If):
+            arms.append((self.expr(node.cond, env), self.expr(node.then, env), node.cond.loc))
+            node = node.other
+        other = self.expr(node, env)
+        if all(const_value(a) is not NO_VALUE for _, a, _ in arms):
+            # Every branch a constant (a row table): return the values directly.
+            arms = [(c, const_value(a), cl) for c, a, cl in arms]
+
+            def if_table(s: Any, t: Any, L: list) -> Value:
+                for c, v, cl in arms:
+                    r = c(s, t, L)
+                    if r is True:
+                        return v
+                    if r is not False:
+                        check_bool(r, cl, "IF condition")
+                return other(s, t, L)
+            return if_table
+
+        def if_chain(s: Any, t: Any, L: list) -> Value:
+            for c, a, cl in arms:
+                r = c(s, t, L)
+                if r is True:
+                    return a(s, t, L)
+                if r is not False:
+                    check_bool(r, cl, "IF condition")
+            return other(s, t, L)
+        return if_chain
 
     def c_Case(self, e: A.Case, env: Env) -> Code:
         arms = [(self.expr(g, env), self.expr(v, env), g.loc) for g, v in e.arms]
@@ -873,6 +927,10 @@ class Compiler:
         if isinstance(sym, DefSym):
             return self._call_def(sym, [e.lhs, e.rhs], env, e.loc)
         if op in ("\\in", "\\notin"):
+            if self.fast_paths and self.folder.is_constant(e.rhs, env):
+                fast = member_const(self.expr(e.lhs, env), const_value(self.expr(e.rhs, env)), op == "\\notin")
+                if fast is not None:
+                    return fast
             test = self.membership(e.rhs, env)
             lhs = self.expr(e.lhs, env)
             loc = e.loc
@@ -881,6 +939,10 @@ class Compiler:
             return _guard(lambda s, t, L: not test(s, t, L, lhs(s, t, L)), loc)
         a, b = self.expr(e.lhs, env), self.expr(e.rhs, env)
         loc = e.loc
+        if op in ("=", "/=") and self.fast_paths:
+            fast = eq_code(a, b, loc, op == "/=")
+            if fast is not None:
+                return fast
         if op == "=":
             def eq(s: Any, t: Any, L: list) -> bool:
                 x, y = a(s, t, L), b(s, t, L)
@@ -984,6 +1046,10 @@ class Compiler:
     def membership(self, set_expr: A.Expr, env: Env) -> Callable[[Any, Any, list, Value], bool]:
         """Compile ``v \\in set_expr`` without building structured sets."""
         e = set_expr
+        if self.fast_paths and self.folder.is_constant(e, env):
+            fast = membership_const(const_value(self.expr(e, env)))
+            if fast is not None:
+                return fast
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(env.scope.lookup(".."), BuiltinSym):
             lo, hi = self.expr(e.lhs, env), self.expr(e.rhs, env)
             return lambda s, t, L, v: type(v) is int and lo(s, t, L) <= v <= hi(s, t, L)
@@ -1125,19 +1191,7 @@ class Compiler:
                                                                        for c in codes]))), e.loc)
 
     def c_Dot(self, e: A.Dot, env: Env) -> Code:
-        r = self.expr(e.rec, env)
-        name = e.field
-        loc = e.loc
-
-        def dot(s: Any, t: Any, L: list) -> Value:
-            rv = r(s, t, L)
-            if type(rv) is FnValue:
-                v = rv.d.get(name, NOTSET)
-                if v is not NOTSET:
-                    return v
-                raise EvalError(f"Attempted to access nonexistent field '{name}' of record\n{fmt(rv)}", loc)
-            raise EvalError(f"Attempted to access field '{name}' of the non-record {fmt(rv)}", loc)
-        return dot
+        return dot_code(self.expr(e.rec, env), e.field, e.loc, self.fast_paths)
 
     def c_TupleLit(self, e: A.TupleLit, env: Env) -> Code:
         codes = [self.expr(x, env) for x in e.elems]
@@ -1155,8 +1209,7 @@ class Compiler:
             path = []
             for kind_, item in u.path:
                 if kind_ == "field":
-                    v = item
-                    path.append(lambda s, t, L, v=v: v)
+                    path.append(const_code(item))
                 else:
                     exprs = item  # type: ignore[assignment]
                     if len(exprs) == 1:
@@ -1173,6 +1226,12 @@ class Compiler:
                 keys = [p(s, t, L) for p in path]
                 f = _update(f, keys, 0, val, s, t, L, at_slot, loc)
             return f
+        if self.fast_paths and all(len(path) == 1 for path, _ in updates):
+            flat = []
+            for (key,), val in updates:
+                kv = const_value(key)
+                flat.append((kv if kv is not NO_VALUE and type(kv) is not tuple else (key,), val))
+            return except_flat(base, flat, at_slot, except_)
         return except_
 
     # ---------------------------------------------------------------- actions in expressions
@@ -1433,27 +1492,69 @@ _CORE_BINARY: dict[str, Callable[[Value, Value], Value]] = {
 
 def _int_op(op: str, f: Callable[[int, int], Value]) -> Callable[[Code, Code, Loc], Code]:
     def make(a: Code, b: Code, loc: Loc) -> Code:
+        def slow(x: Value, y: Value) -> Value:
+            bad = x if type(x) is not int else y
+            raise EvalError(f"Attempted to apply the operator {op} to the non-integer {fmt(bad)}", loc)
+        c = const_value(b)
+        if type(c) is int:
+            # `x + 1`, `n - 1`, `i <= N`: the right operand is a constant.
+            def code_c(s: Any, t: Any, L: list) -> Value:
+                x = a(s, t, L)
+                if type(x) is int:
+                    return f(x, c)
+                return slow(x, c)
+            return code_c
+
         def code(s: Any, t: Any, L: list) -> Value:
             x = a(s, t, L)
             y = b(s, t, L)
             if type(x) is int and type(y) is int:
                 return f(x, y)
-            bad = x if type(x) is not int else y
-            raise EvalError(f"Attempted to apply the operator {op} to the non-integer {fmt(bad)}", loc)
+            return slow(x, y)
         return code
     return make
 
 
-def _checked(op: str, fn: Callable) -> Callable[[Code, Code, Loc], Code]:
+def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callable[[int], bool]) -> Callable[[Code, Code, Loc], Code]:
+    """``%`` and ``\\div``: integers with a valid divisor take the fast path; anything
+    else goes through the standard-library function for TLC's error message."""
     def make(a: Code, b: Code, loc: Loc) -> Code:
-        return _guard(lambda s, t, L: fn(a(s, t, L), b(s, t, L)), loc)
+        def code(s: Any, t: Any, L: list) -> Value:
+            try:
+                x = a(s, t, L)
+                y = b(s, t, L)
+                if type(x) is int and type(y) is int and ok(y):
+                    return fast(x, y)
+                return fn(x, y)
+            except EvalError as err:
+                raise err.with_loc(loc)
+            except (TypeError, RecursionError) as err:
+                raise EvalError(_python_error(err), loc) from None
+        c = const_value(b)
+        if type(c) is int and ok(c):
+            def code_c(s: Any, t: Any, L: list) -> Value:
+                try:
+                    x = a(s, t, L)
+                except EvalError as err:
+                    raise err.with_loc(loc)
+                except (TypeError, RecursionError) as err:
+                    raise EvalError(_python_error(err), loc) from None
+                if type(x) is int:
+                    return fast(x, c)
+                try:
+                    return fn(x, c)
+                except EvalError as err:
+                    raise err.with_loc(loc)
+            return code_c
+        return code
     return make
 
 
 _FAST_INT = {
-    "+": _int_op("+", lambda x, y: x + y), "-": _int_op("-", lambda x, y: x - y),
-    "*": _int_op("*", lambda x, y: x * y), "<": _int_op("<", lambda x, y: x < y),
-    "<=": _int_op("<=", lambda x, y: x <= y), ">": _int_op(">", lambda x, y: x > y),
-    ">=": _int_op(">=", lambda x, y: x >= y), "..": _int_op("..", IntervalSet),
-    "%": _checked("%", NATURALS["%"].fn), "\\div": _checked("\\div", NATURALS["\\div"].fn),
+    "+": _int_op("+", operator.add), "-": _int_op("-", operator.sub),
+    "*": _int_op("*", operator.mul), "<": _int_op("<", operator.lt),
+    "<=": _int_op("<=", operator.le), ">": _int_op(">", operator.gt),
+    ">=": _int_op(">=", operator.ge), "..": _int_op("..", IntervalSet),
+    "%": _checked("%", NATURALS["%"].fn, operator.mod, (0).__lt__),
+    "\\div": _checked("\\div", NATURALS["\\div"].fn, operator.floordiv, (0).__ne__),
 }

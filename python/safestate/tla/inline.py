@@ -1,0 +1,80 @@
+"""Inlining of small state-level operators at their call sites.
+
+A call to a compiled operator allocates a frame (a list), evaluates every
+argument into it and calls the body closure.  For small operators -- guards such
+as ``IsIdle(m) == m.state = "IDLE"``, updates such as ``WithCat(m, c) ==
+[m EXCEPT !.cat = c]`` -- that overhead dominates the work.  Inlining compiles the
+body into the caller's frame instead:
+
+* an argument that is a bound variable of the caller (``L[slot]``) is not copied:
+  the parameter refers to the same slot;
+* an argument that folds to a constant is substituted by name, so constant
+  folding and the constant fast paths apply inside the body (``Enter(m, "IDLE")``
+  folds ``"IDLE" \\in Powered``);
+* any other argument is evaluated once, before the body, into a fresh slot --
+  the same eager order as a real call.
+
+Only operators without operator parameters, not recursive and not too large are
+inlined, and never inside bodies that run re-entrantly on a shared frame (LET
+operators, LAMBDAs and operator arguments), where a fresh slot could be
+overwritten by a nested call before it is read.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from . import ast as A
+from .constfold import NO_VALUE, const_value
+from .env import ByNameLocal, Code, Env, SlotLocal
+from .errors import Loc
+from .modules import DefSym
+
+# Body size (AST nodes) up to which an operator is inlined, and the nesting limit.
+MAX_NODES = 160
+MAX_DEPTH = 12
+
+_SIZES: dict[int, tuple[Any, int]] = {}
+
+
+def body_size(e: Any) -> int:
+    hit = _SIZES.get(id(e))
+    if hit is not None and hit[0] is e:
+        return hit[1]
+    from .compiler import _children
+    n = 1 + sum(body_size(c) for c in _children(e))
+    _SIZES[id(e)] = (e, n)
+    return n
+
+
+def can_inline(compiler: Any, sym: DefSym) -> bool:
+    d = sym.defn
+    return (compiler._no_inline == 0 and not sym.recursive and d.fn_bounds is None
+            and compiler._inline_depth < MAX_DEPTH
+            and all(p.arity == 0 for p in d.params) and body_size(d.body) <= MAX_NODES)
+
+
+def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
+    """The body of `sym` compiled in the caller's frame (see the module docstring)."""
+    from .compiler import _prefix
+    bindings: dict[str, Any] = {}
+    pre: list[tuple[int, Code]] = []
+    for p, a in zip(sym.defn.params, args):
+        if isinstance(a, A.Name):
+            local = env.locals.get(a.name)
+            if isinstance(local, SlotLocal):
+                bindings[p.name] = local
+                continue
+        code = compiler.expr(a, env)
+        if const_value(code) is not NO_VALUE:
+            bindings[p.name] = ByNameLocal(a, env)
+            continue
+        slot = env.frame.alloc()
+        pre.append((slot, code))
+        bindings[p.name] = SlotLocal(slot)
+    compiler._inline_depth += 1
+    try:
+        body = compiler.expr(sym.defn.body, Env(sym.scope, env.frame, bindings, env.init_mode))
+    finally:
+        compiler._inline_depth -= 1
+    return _prefix(pre, body)
