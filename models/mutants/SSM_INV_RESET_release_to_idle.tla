@@ -1,0 +1,759 @@
+-------------------- MODULE SSM_INV_RESET_release_to_idle --------------------
+(* MUTANT of SystemStateManager.tla for INV_RESET: C07: releasing the      *)
+(* E-stop enters IDLE instead of ESTOP_RESET_NEEDED (no Reset needed).     *)
+(* Generated: a copy of SystemStateManager.tla with one change, marked     *)
+(* MUTANT. TLC must report INV_RESET violated (see expected.json).         *)
+(***************************************************************************)
+(* The SystemStateManager of a 6-axis industrial robot (RSM-01 .. RSM-17), *)
+(* modelled row by row after docs/design/system-state-manager.md ("the     *)
+(* page"; section numbers below refer to it).                              *)
+(*                                                                         *)
+(* One step of this spec is exactly one event the C++ accepts (page §1):   *)
+(*   Cycle(in)   -- SystemStateManager::cycle(ScanInputs), abstract inputs *)
+(*   Submit(cmd) -- SystemStateManager::submit(Command)                    *)
+(* The variable `event` records the event that produced each state, so a   *)
+(* trace is a script of C++ calls; models/README.md gives the mapping.     *)
+(*                                                                         *)
+(* A cycle is the sequential composition  §3 channel monitoring ; §5       *)
+(* safety rows ; §6 one command ; §8 axes.  TLA+ has no sequential         *)
+(* composition of actions, so every section is a pure function from a      *)
+(* manager record to a manager record, every row is one small named        *)
+(* operator (row id in its name), and the event assigns the result to the  *)
+(* variables.  Consequently each event has exactly one successor (see      *)
+(* Determinism below).                                                     *)
+(***************************************************************************)
+EXTENDS Integers, Sequences, FiniteSets
+
+-----------------------------------------------------------------------------
+(*************************** Parameters (§9) ******************************)
+CONSTANTS
+    DiscrepancyCycles,    \* D, Config::discrepancy_cycles (RSM-04, RSM-02)
+    ArmingTimeoutCycles,  \* Config::arming_timeout_cycles (RSM-07)
+    MaxStopCycles,        \* Config::max_stop_cycles (RSM-11)
+    T1SpeedLimit,         \* Config::t1_speed_limit_mm_s (RSM-10)
+    QueueCapacity,        \* Config::command_queue_limit (RSM-14)
+    JogCommands           \* the JOG_START commands the operator may submit
+
+(* The input values the environment may present (restricts the input      *)
+(* space of a run; the full space is given by the type Inputs below).     *)
+CONSTANTS
+    EstopInputs,          \* set of <<estop_a, estop_b>>  (TRUE = NC contact closed)
+    SafeguardInputs,      \* set of <<gate_a, gate_b>>    (TRUE = closed / clear)
+    EnablingInputs,       \* set of <<enable_a, enable_b>>
+    SelectorInputs,       \* subset of Selectors
+    SpeedInputs,          \* subset of Speeds
+    ServoReadyInputs,     \* subset of BOOLEAN
+    DriveFaultInputs,     \* subset of BOOLEAN
+    SelfTestInputs,       \* subset of BOOLEAN
+    LockoutHoldsInputs,   \* TRUE: the held signals stop changing in ERROR_LOCKOUT
+    CombineChanges        \* TRUE: a held change and free choices in one cycle
+
+D == DiscrepancyCycles
+
+EnablePositions == {"RELEASED", "MIDDLE", "PANIC"}
+Selectors       == {"AUTO", "T1", "T2", "INVALID"}
+Speeds          == {"ZERO", "MOVING", "OVER_T1"}
+Modes           == {"AUTO", "T1", "T2"}
+
+CommandKinds == {"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME",
+                 "JOG_START", "JOG_STOP", "T2_CONFIRM"}
+
+\* A command record (C++: Command). Commands other than JOG_START carry 0s.
+CommandType == [kind: CommandKinds, axis: Int, direction: Int, speed_mm_s: Int]
+Simple(k)   == [kind |-> k, axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
+Commands    == {Simple(k) : k \in CommandKinds \ {"JOG_START"}} \cup JogCommands
+
+\* The levels the environment holds before the first cycle (all healthy,
+\* enabling device released, selector on AUTO, robot at rest).
+InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
+                  gate_a |-> TRUE, gate_b |-> TRUE,
+                  enable_a |-> "RELEASED", enable_b |-> "RELEASED",
+                  selector |-> "AUTO", self_test_ok |-> TRUE,
+                  servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO"]
+
+ASSUME DiscrepancyCycles   \in Nat \ {0}
+ASSUME ArmingTimeoutCycles \in Nat \ {0}
+ASSUME MaxStopCycles       \in Nat \ {0}
+ASSUME T1SpeedLimit        \in Nat \ {0}
+ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
+ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
+                              speed_mm_s: Int]
+ASSUME EstopInputs      \subseteq BOOLEAN \X BOOLEAN
+ASSUME SafeguardInputs  \subseteq BOOLEAN \X BOOLEAN
+ASSUME EnablingInputs   \subseteq EnablePositions \X EnablePositions
+ASSUME SelectorInputs   \subseteq Selectors
+ASSUME SpeedInputs      \subseteq Speeds
+ASSUME ServoReadyInputs \subseteq BOOLEAN
+ASSUME DriveFaultInputs \subseteq BOOLEAN
+ASSUME SelfTestInputs   \subseteq BOOLEAN
+ASSUME LockoutHoldsInputs \in BOOLEAN
+ASSUME CombineChanges \in BOOLEAN
+ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
+       /\ <<TRUE, TRUE>> \in SafeguardInputs
+       /\ <<"RELEASED", "RELEASED">> \in EnablingInputs
+       /\ "AUTO" \in SelectorInputs /\ "ZERO" \in SpeedInputs
+       /\ FALSE \in ServoReadyInputs /\ FALSE \in DriveFaultInputs
+       /\ TRUE \in SelfTestInputs
+
+-----------------------------------------------------------------------------
+(***************************** Value sets (§4-§8) *************************)
+States == {"BOOT", "ERROR_LOCKOUT", "ESTOP_ACTIVE", "ESTOP_RESET_NEEDED", "IDLE",
+           "ARMING", "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE", "MANUAL_JOGGING",
+           "STOPPING", "HOLD"}
+Operational == {"AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE", "MANUAL_JOGGING"}
+Powered     == {"ARMING", "STOPPING", "HOLD"} \cup Operational          \* §4
+Motion      == {"AUTO_RUNNING", "MANUAL_JOGGING"}                       \* §4
+
+StopCategories == {"NONE", "CAT0", "CAT1", "CAT2"}
+FaultCodes == {"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP",
+               "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING", "SELECTOR_INVALID",
+               "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT"}
+Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
+            "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
+            "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
+            "QUEUE_FULL"}
+AxisStates == {"Disabled", "StandStill", "Homing", "DiscreteMotion",
+               "ContinuousMotion", "SynchronizedMotion", "Stopping", "ErrorStop"}
+Axes == 1..6
+
+NoJog == [axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
+
+\* The abstract inputs of one cycle (§2, "derived each cycle").
+Inputs == [estop_a: BOOLEAN, estop_b: BOOLEAN, gate_a: BOOLEAN, gate_b: BOOLEAN,
+           enable_a: EnablePositions, enable_b: EnablePositions,
+           selector: Selectors, self_test_ok: BOOLEAN, servo_ready: BOOLEAN,
+           drive_fault: BOOLEAN, speed: Speeds]
+
+Min(a, b) == IF a <= b THEN a ELSE b
+Max2(a, b) == IF a >= b THEN a ELSE b
+
+-----------------------------------------------------------------------------
+(******************************* Variables *********************************)
+(* Manager state: named exactly as the §7 status/output keys.             *)
+VARIABLES
+    state, selector, session_mode, stop_category, fault_code,
+    last_reject_reason, command_result,
+    estop_mismatch, safeguard_mismatch, enabling_mismatch, selector_invalid,
+    state_cycles, t2_confirmed, resume_to, jog, queue, axes
+
+(* Environment and history variables (not C++ state):                     *)
+(*   inputs            -- the inputs of the last cycle (before the first    *)
+(*                        cycle: InitialInputs); the environment changes    *)
+(*                        one signal group per cycle from these.            *)
+(*   event             -- the event that produced this state (not in View). *)
+(*   reset_since_trip  -- INV-RESET: no E-stop trip since the last Reset    *)
+(*                        accepted with both E-stop channels released.      *)
+(*   jog_in_auto       -- INV-NOJOG-AUTO: the last cycle popped a JOG_START *)
+(*                        or JOG_STOP while in AUTO.                        *)
+(*   t1_overspeed      -- INV-T1SPEED: the last cycle read OVER_T1 while    *)
+(*                        the session (at the start of the cycle) was T1.  *)
+(*   ever_locked       -- INV-DISCREPANCY: ERROR_LOCKOUT was ever entered.  *)
+VARIABLES inputs, event, reset_since_trip, jog_in_auto, t1_overspeed, ever_locked
+
+mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
+              last_reject_reason, command_result, estop_mismatch,
+              safeguard_mismatch, enabling_mismatch, selector_invalid,
+              state_cycles, t2_confirmed, resume_to, jog, queue, axes>>
+histVars == <<inputs, reset_since_trip, jog_in_auto, t1_overspeed, ever_locked>>
+vars     == <<mgrVars, histVars, event>>
+
+\* The held input signals (see the environment below).
+Held(in) == <<in.estop_a, in.estop_b, in.gate_a, in.gate_b, in.enable_a, in.enable_b,
+              in.selector>>
+
+(* The fingerprint.  It leaves out what no guard, no environment choice   *)
+(* and no invariant reads, so that the quotient graph has the same        *)
+(* behaviours for every checked property: `event` (how this state was     *)
+(* reached), the free input signals of the last cycle, and the            *)
+(* write-only status field last_reject_reason.  Traces still show them:   *)
+(* TLC rebuilds a trace from real successor states.                       *)
+View == <<state, selector, session_mode, stop_category, fault_code,
+          command_result, estop_mismatch, safeguard_mismatch,
+          enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
+          resume_to, jog, queue, axes,
+          Held(inputs), reset_since_trip, jog_in_auto, t1_overspeed, ever_locked>>
+
+\* The manager state as one record, so that the sections can be composed.
+Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
+        stop_category |-> stop_category, fault_code |-> fault_code,
+        last_reject_reason |-> last_reject_reason, command_result |-> command_result,
+        estop_mismatch |-> estop_mismatch, safeguard_mismatch |-> safeguard_mismatch,
+        enabling_mismatch |-> enabling_mismatch, selector_invalid |-> selector_invalid,
+        state_cycles |-> state_cycles, t2_confirmed |-> t2_confirmed,
+        resume_to |-> resume_to, jog |-> jog, queue |-> queue, axes |-> axes]
+
+SetMgr(m) ==
+    /\ state' = m.state                 /\ selector' = m.selector
+    /\ session_mode' = m.session_mode   /\ stop_category' = m.stop_category
+    /\ fault_code' = m.fault_code       /\ last_reject_reason' = m.last_reject_reason
+    /\ command_result' = m.command_result
+    /\ estop_mismatch' = m.estop_mismatch
+    /\ safeguard_mismatch' = m.safeguard_mismatch
+    /\ enabling_mismatch' = m.enabling_mismatch
+    /\ selector_invalid' = m.selector_invalid
+    /\ state_cycles' = m.state_cycles   /\ t2_confirmed' = m.t2_confirmed
+    /\ resume_to' = m.resume_to         /\ jog' = m.jog
+    /\ queue' = m.queue                 /\ axes' = m.axes
+
+-----------------------------------------------------------------------------
+(*********************** Derived input facts (§2) **************************)
+EstopTripped(in) == ~in.estop_a \/ ~in.estop_b                    \* 1oo2, RSM-04
+GateOpen(in)     == ~in.gate_a \/ ~in.gate_b                      \* 1oo2, RSM-04
+EnableMiddle(in) == in.enable_a = "MIDDLE" /\ in.enable_b = "MIDDLE"
+EnablePanic(in)  == in.enable_a = "PANIC" \/ in.enable_b = "PANIC"
+
+Manual(m) == m.session_mode \in {"T1", "T2"}
+
+\* "in AUTO" of §6.
+InAuto(m) == m.selector = "AUTO" \/ m.session_mode = "AUTO"
+
+-----------------------------------------------------------------------------
+(******************** State entry and per-state data (§4) ******************)
+\* Entering a state sets its data afresh; callers then set what the row keeps.
+Enter(m, s) ==
+    [m EXCEPT !.state        = s,
+              !.session_mode = IF s \in Powered THEN m.session_mode ELSE "NONE",
+              !.t2_confirmed = FALSE,
+              !.state_cycles = 0,
+              !.resume_to    = "NONE",
+              !.jog          = NoJog,
+              !.fault_code   = "NONE"]
+
+\* "-> X, CATn": set the status field stop_category (§5, §7).
+WithCat(m, cat) == [m EXCEPT !.stop_category = cat]
+
+Lockout(m, code) == [Enter(m, "ERROR_LOCKOUT") EXCEPT !.fault_code = code,
+                                                      !.stop_category = "CAT0"]
+
+-----------------------------------------------------------------------------
+(************************ §3 Channel monitoring ****************************)
+\* mismatch := (a != b) ? min(mismatch + 1, D + 1) : 0   (every state)
+Count(n, bad) == IF bad THEN Min(n + 1, D + 1) ELSE 0
+
+Monitor(m, in) ==
+    [m EXCEPT !.estop_mismatch     = Count(@, in.estop_a # in.estop_b),
+              !.safeguard_mismatch = Count(@, in.gate_a # in.gate_b),
+              !.enabling_mismatch  = Count(@, in.enable_a # in.enable_b),
+              !.selector_invalid   = Count(@, in.selector = "INVALID"),
+              !.selector           = in.selector]
+
+\* A counter above D is a discrepancy fault; codes in the order of §3.
+DiscrepancyCode(m) ==
+    IF      m.estop_mismatch     > D THEN "DISCREPANCY_ESTOP"
+    ELSE IF m.safeguard_mismatch > D THEN "DISCREPANCY_SAFEGUARD"
+    ELSE IF m.enabling_mismatch  > D THEN "DISCREPANCY_ENABLING"
+    ELSE IF m.selector_invalid   > D THEN "SELECTOR_INVALID"
+    ELSE "NONE"
+
+-----------------------------------------------------------------------------
+(************ §5 Safety evaluation: one guard and one effect per row ********)
+(* `m` is the manager after §3 (its state is the state before the row).  *)
+StopCat1Free(m) ==        \* "powered, not (STOPPING with CAT1)" (C12-C14)
+    m.state \in Powered /\ ~(m.state = "STOPPING" /\ m.stop_category = "CAT1")
+
+C01_Guard(m, in) == m.state = "ERROR_LOCKOUT"                   \* RSM-04
+C02_Guard(m, in) == m.state = "BOOT" /\ ~in.self_test_ok        \* RSM-12
+C03_Guard(m, in) == DiscrepancyCode(m) # "NONE"                 \* RSM-04, RSM-02
+C04_Guard(m, in) == m.state = "BOOT" /\ EstopTripped(in)        \* RSM-12
+C05_Guard(m, in) == m.state = "BOOT"                            \* RSM-12
+C06_Guard(m, in) == m.state # "ESTOP_ACTIVE" /\ EstopTripped(in) \* RSM-05
+C07_Guard(m, in) == m.state = "ESTOP_ACTIVE" /\ ~EstopTripped(in) \* RSM-05
+C08_Guard(m, in) == m.state = "ESTOP_ACTIVE"                    \* RSM-05
+C09_Guard(m, in) == m.state \in Powered /\ in.drive_fault       \* RSM-07, RSM-03
+C10_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T1"  \* RSM-10
+                    /\ in.speed = "OVER_T1"
+C11_Guard(m, in) == m.state \in Powered /\ Manual(m) /\ EnablePanic(in)  \* RSM-09
+C12_Guard(m, in) == StopCat1Free(m) /\ in.selector # m.session_mode      \* RSM-02
+C13_Guard(m, in) == StopCat1Free(m) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
+C14_Guard(m, in) == StopCat1Free(m) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
+C15_Guard(m, in) == m.state = "ARMING" /\ in.servo_ready                 \* RSM-07
+C16_Guard(m, in) == m.state = "ARMING" /\ m.state_cycles = ArmingTimeoutCycles
+C17_Guard(m, in) == m.state = "ARMING"                                   \* RSM-07
+C18_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-11
+                    /\ m.stop_category = "CAT1"
+C19_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-11
+                    /\ m.stop_category = "CAT2"
+C20_Guard(m, in) == m.state = "STOPPING" /\ m.state_cycles = MaxStopCycles
+C21_Guard(m, in) == m.state = "STOPPING"                                 \* RSM-11
+C22_Guard(m, in) == m.state = "IDLE" /\ in.selector # "T2"               \* RSM-06
+
+C01(m, in) == m                                        \* stay: only re-init leaves
+C02(m, in) == Lockout(m, "SELF_TEST_FAILED")
+C03(m, in) == Lockout(m, DiscrepancyCode(m))
+C04(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
+C05(m, in) == Enter(m, "IDLE")
+C06(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
+C07(m, in) == Enter(m, "IDLE")  \* MUTANT           \* never IDLE (RSM-05)
+C08(m, in) == m
+C09(m, in) == Lockout(m, "DRIVE_FAULT")
+C10(m, in) == Lockout(m, "T1_OVERSPEED")
+C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
+C12(m, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
+C13(m, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
+C14(m, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
+C15(m, in) == Enter(m, IF m.session_mode = "AUTO" THEN "AUTO_IDLE" ELSE "MANUAL_IDLE")
+C16(m, in) == Lockout(m, "ARMING_TIMEOUT")
+C17(m, in) == [m EXCEPT !.state_cycles = @ + 1]
+C18(m, in) == Enter(m, "IDLE")                         \* power removed, brakes on
+C19(m, in) == [Enter(m, "HOLD") EXCEPT !.resume_to = m.resume_to, !.jog = m.jog]
+C20(m, in) == Lockout(m, "STOP_TIMEOUT")
+C21(m, in) == [m EXCEPT !.state_cycles = @ + 1]
+C22(m, in) == [m EXCEPT !.t2_confirmed = FALSE]
+C23(m, in) == m                                        \* no change
+
+\* First matching row wins (§5). The chain is written once, here.
+SafetyRow(m, in) ==
+    IF      C01_Guard(m, in) THEN "C01"
+    ELSE IF C02_Guard(m, in) THEN "C02"
+    ELSE IF C03_Guard(m, in) THEN "C03"
+    ELSE IF C04_Guard(m, in) THEN "C04"
+    ELSE IF C05_Guard(m, in) THEN "C05"
+    ELSE IF C06_Guard(m, in) THEN "C06"
+    ELSE IF C07_Guard(m, in) THEN "C07"
+    ELSE IF C08_Guard(m, in) THEN "C08"
+    ELSE IF C09_Guard(m, in) THEN "C09"
+    ELSE IF C10_Guard(m, in) THEN "C10"
+    ELSE IF C11_Guard(m, in) THEN "C11"
+    ELSE IF C12_Guard(m, in) THEN "C12"
+    ELSE IF C13_Guard(m, in) THEN "C13"
+    ELSE IF C14_Guard(m, in) THEN "C14"
+    ELSE IF C15_Guard(m, in) THEN "C15"
+    ELSE IF C16_Guard(m, in) THEN "C16"
+    ELSE IF C17_Guard(m, in) THEN "C17"
+    ELSE IF C18_Guard(m, in) THEN "C18"
+    ELSE IF C19_Guard(m, in) THEN "C19"
+    ELSE IF C20_Guard(m, in) THEN "C20"
+    ELSE IF C21_Guard(m, in) THEN "C21"
+    ELSE IF C22_Guard(m, in) THEN "C22"
+    ELSE "C23"
+
+Safety(m, in) ==
+    LET r == SafetyRow(m, in) IN
+    CASE r = "C01" -> C01(m, in) [] r = "C02" -> C02(m, in)
+      [] r = "C03" -> C03(m, in) [] r = "C04" -> C04(m, in)
+      [] r = "C05" -> C05(m, in) [] r = "C06" -> C06(m, in)
+      [] r = "C07" -> C07(m, in) [] r = "C08" -> C08(m, in)
+      [] r = "C09" -> C09(m, in) [] r = "C10" -> C10(m, in)
+      [] r = "C11" -> C11(m, in) [] r = "C12" -> C12(m, in)
+      [] r = "C13" -> C13(m, in) [] r = "C14" -> C14(m, in)
+      [] r = "C15" -> C15(m, in) [] r = "C16" -> C16(m, in)
+      [] r = "C17" -> C17(m, in) [] r = "C18" -> C18(m, in)
+      [] r = "C19" -> C19(m, in) [] r = "C20" -> C20(m, in)
+      [] r = "C21" -> C21(m, in) [] r = "C22" -> C22(m, in)
+      [] r = "C23" -> C23(m, in)
+
+-----------------------------------------------------------------------------
+(********** §6 One command from the queue: validation rows K01-K35 *********)
+(* `m` is the manager after §5; `c` the popped command; `in` the inputs.  *)
+ValidJog(c) == c.axis \in Axes /\ c.direction \in {-1, 1} /\ c.speed_mm_s > 0
+
+CommandRow(m, c, in) ==
+    IF m.state = "ERROR_LOCKOUT" THEN "K01"                            \* RSM-04
+    ELSE CASE
+      c.kind = "RESET" ->                                             \* RSM-05
+        IF      m.state = "ESTOP_ACTIVE"        THEN "K02"
+        ELSE IF m.state # "ESTOP_RESET_NEEDED"  THEN "K03"
+        ELSE IF in.drive_fault                  THEN "K04"
+        ELSE "K05"
+   [] c.kind = "SERVO_ON" ->                                          \* RSM-06
+        IF      m.state # "IDLE"                                  THEN "K06"
+        ELSE IF in.drive_fault                                    THEN "K07"
+        ELSE IF m.selector = "INVALID"                            THEN "K08"
+        ELSE IF m.selector = "AUTO" /\ GateOpen(in)               THEN "K09"
+        ELSE IF m.selector \in {"T1", "T2"} /\ ~EnableMiddle(in)  THEN "K10"
+        ELSE IF m.selector = "T2" /\ ~m.t2_confirmed              THEN "K11"
+        ELSE "K12"
+   [] c.kind = "SERVO_OFF" ->                                         \* RSM-13, RSM-11
+        IF m.state \notin {"ARMING", "HOLD"} \cup Operational THEN "K13" ELSE "K14"
+   [] c.kind = "START" ->                                             \* RSM-08
+        IF      m.state \in {"MANUAL_IDLE", "MANUAL_JOGGING"} THEN "K15"
+        ELSE IF m.state # "AUTO_IDLE"                         THEN "K16"
+        ELSE IF GateOpen(in)                                  THEN "K17"
+        ELSE "K18"
+   [] c.kind = "PAUSE" ->                                             \* RSM-11
+        IF m.state \notin Motion THEN "K19" ELSE "K20"
+   [] c.kind = "RESUME" ->                                            \* RSM-11
+        IF      m.state # "HOLD"                                    THEN "K21"
+        ELSE IF m.resume_to = "AUTO_RUNNING" /\ GateOpen(in)        THEN "K22"
+        ELSE IF m.resume_to = "MANUAL_JOGGING" /\ ~EnableMiddle(in) THEN "K23"
+        ELSE "K24"
+   [] c.kind = "JOG_START" ->                                         \* RSM-08/09/10
+        IF      InAuto(m)                 THEN "K25"
+        ELSE IF ~ValidJog(c)              THEN "K26"
+        ELSE IF m.state # "MANUAL_IDLE"   THEN "K27"
+        ELSE IF ~EnableMiddle(in)         THEN "K28"
+        ELSE "K29"
+   [] c.kind = "JOG_STOP" ->                                          \* RSM-08/09
+        IF      InAuto(m)                   THEN "K30"
+        ELSE IF m.state # "MANUAL_JOGGING"  THEN "K31"
+        ELSE "K32"
+   [] c.kind = "T2_CONFIRM" ->                                        \* RSM-06
+        IF      m.state # "IDLE"       THEN "K33"
+        ELSE IF m.selector # "T2"      THEN "K34"
+        ELSE "K35"
+
+\* The reject rows and their reason codes (RSM-13).
+RejectReason ==
+    [K01 |-> "LOCKED_OUT",    K02 |-> "ESTOP_PRESSED",    K03 |-> "WRONG_STATE",
+     K04 |-> "DRIVE_FAULT",   K06 |-> "WRONG_STATE",      K07 |-> "DRIVE_FAULT",
+     K08 |-> "SELECTOR_INVALID", K09 |-> "SAFEGUARD_OPEN",
+     K10 |-> "ENABLE_NOT_MIDDLE", K11 |-> "T2_NOT_CONFIRMED",
+     K13 |-> "WRONG_STATE",   K15 |-> "WRONG_MODE",       K16 |-> "WRONG_STATE",
+     K17 |-> "SAFEGUARD_OPEN", K19 |-> "WRONG_STATE",     K21 |-> "WRONG_STATE",
+     K22 |-> "SAFEGUARD_OPEN", K23 |-> "ENABLE_NOT_MIDDLE",
+     K25 |-> "JOG_IN_AUTO",   K26 |-> "INVALID_ARGUMENT", K27 |-> "WRONG_STATE",
+     K28 |-> "ENABLE_NOT_MIDDLE", K30 |-> "JOG_IN_AUTO",  K31 |-> "WRONG_STATE",
+     K33 |-> "WRONG_STATE",   K34 |-> "WRONG_MODE"]
+
+RejectRows == DOMAIN RejectReason
+
+\* A rejected command changes nothing but the two reason fields (RSM-13).
+Reject(m, reason) == [m EXCEPT !.command_result = reason,
+                               !.last_reject_reason = reason]
+
+\* The accepting rows.
+K05(m, c, in) == Enter(m, "IDLE")                                     \* INV-RESET
+K12(m, c, in) == [Enter(m, "ARMING") EXCEPT !.session_mode = m.selector,
+                                            !.stop_category = "NONE"]
+K14(m, c, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
+K18(m, c, in) == Enter(m, "AUTO_RUNNING")
+K20(m, c, in) == [WithCat(Enter(m, "STOPPING"), "CAT2")
+                    EXCEPT !.resume_to = m.state, !.jog = m.jog]
+K24(m, c, in) == [Enter(m, m.resume_to) EXCEPT !.jog = m.jog]
+ClampT1(m, v) == IF m.session_mode = "T1" THEN Min(v, T1SpeedLimit) ELSE v  \* RSM-10
+K29(m, c, in) == [Enter(m, "MANUAL_JOGGING")
+                    EXCEPT !.jog = [axis |-> c.axis, direction |-> c.direction,
+                                    speed_mm_s |-> ClampT1(m, c.speed_mm_s)]]
+K32(m, c, in) == Enter(m, "MANUAL_IDLE")
+K35(m, c, in) == [m EXCEPT !.t2_confirmed = TRUE]
+
+Accept(r, m, c, in) ==
+    LET n == CASE r = "K05" -> K05(m, c, in) [] r = "K12" -> K12(m, c, in)
+               [] r = "K14" -> K14(m, c, in) [] r = "K18" -> K18(m, c, in)
+               [] r = "K20" -> K20(m, c, in) [] r = "K24" -> K24(m, c, in)
+               [] r = "K29" -> K29(m, c, in) [] r = "K32" -> K32(m, c, in)
+               [] r = "K35" -> K35(m, c, in)
+    IN [n EXCEPT !.command_result = "ACCEPTED"]
+
+\* Pops at most one command (RSM-15); an empty queue sets command_result NONE.
+CommandStep(m, in) ==
+    IF m.queue = << >> THEN [m EXCEPT !.command_result = "NONE"]
+    ELSE LET c  == Head(m.queue)
+             m1 == [m EXCEPT !.queue = Tail(@)]
+             r  == CommandRow(m1, c, in)
+         IN IF r \in RejectRows THEN Reject(m1, RejectReason[r])
+                                ELSE Accept(r, m1, c, in)
+
+-----------------------------------------------------------------------------
+(******************** §8 PLCopen axes (RSM-17) *****************************)
+(* AxisStep is the step function of models/PLCopenAxis.tla, copied        *)
+(* verbatim (that model checks it against the PLCopen legal transitions   *)
+(* for every current state, desired state and speed reading).             *)
+MotionStates == {"ContinuousMotion", "SynchronizedMotion", "DiscreteMotion", "Homing"}
+
+AxisStep(cur, des, zero) ==
+    IF      des = "ErrorStop"  THEN "ErrorStop"
+    ELSE IF cur = "ErrorStop"  THEN "ErrorStop"   \* only MC_Reset leaves it
+    ELSE IF des = "Disabled"   THEN "Disabled"    \* MC_Power off
+    ELSE IF cur = "Disabled"   THEN (IF des = "Stopping" THEN "Disabled" ELSE "StandStill")
+    ELSE IF cur = "Stopping"   THEN (IF des = "Stopping" \/ ~zero THEN "Stopping"
+                                                             ELSE "StandStill")
+    ELSE IF des = "Stopping"   THEN "Stopping"    \* MC_Stop
+    ELSE IF des = "StandStill" THEN (IF cur = "StandStill" THEN "StandStill"
+                                                           ELSE "Stopping")
+    ELSE IF cur = "Homing"     THEN "Homing"      \* homing is not interrupted
+    ELSE des                                      \* CM/SM from StandStill or motion
+
+\* The axis state the manager state wants (§8, first table).
+DesiredAxis(m, i) ==
+    IF m.state = "ERROR_LOCKOUT" /\ m.fault_code = "DRIVE_FAULT" THEN "ErrorStop"
+    ELSE IF m.state \in {"AUTO_IDLE", "MANUAL_IDLE", "HOLD"} THEN "StandStill"
+    ELSE IF m.state = "AUTO_RUNNING" THEN "SynchronizedMotion"
+    ELSE IF m.state = "MANUAL_JOGGING" THEN
+            (IF i = m.jog.axis THEN "ContinuousMotion" ELSE "StandStill")
+    ELSE IF m.state = "STOPPING" THEN "Stopping"
+    ELSE "Disabled"
+
+AxesStep(m, in) ==
+    [m EXCEPT !.axes = [i \in Axes |->
+                 AxisStep(m.axes[i], DesiredAxis(m, i), in.speed = "ZERO")]]
+
+-----------------------------------------------------------------------------
+(***************************** The two events (§1) *************************)
+\* One scan cycle: §3, §5, §6 (against the state after §5), §8.
+AfterSafety(in) == Safety(Monitor(Mgr, in), in)
+AfterCycle(in)  == AxesStep(CommandStep(AfterSafety(in), in), in)
+
+\* Submit: a full queue rejects at once with QUEUE_FULL (RSM-14).
+AfterSubmit(c) ==
+    IF Len(queue) < QueueCapacity THEN [Mgr EXCEPT !.queue = Append(@, c)]
+    ELSE [Mgr EXCEPT !.last_reject_reason = "QUEUE_FULL"]
+
+Cycle(in) ==
+    LET m2 == AfterSafety(in)
+        m  == AxesStep(CommandStep(m2, in), in)     \* = AfterCycle(in)
+    IN /\ SetMgr(m)
+       /\ inputs' = in
+       /\ event' = [kind |-> "cycle", inputs |-> in]
+       /\ reset_since_trip' =
+            IF m2.state = "ESTOP_ACTIVE" \/ m.state = "ESTOP_ACTIVE" THEN FALSE
+            ELSE IF /\ queue # << >> /\ Head(queue).kind = "RESET"
+                    /\ m.command_result = "ACCEPTED"
+                    /\ in.estop_a /\ in.estop_b
+                 THEN TRUE
+            ELSE reset_since_trip
+       /\ jog_in_auto' = /\ queue # << >>
+                         /\ Head(queue).kind \in {"JOG_START", "JOG_STOP"}
+                         /\ InAuto(m2)
+       /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
+       /\ ever_locked' = (ever_locked \/ m2.state = "ERROR_LOCKOUT"
+                                      \/ m.state = "ERROR_LOCKOUT")
+
+Submit(c) ==
+    /\ SetMgr(AfterSubmit(c))
+    /\ event' = [kind |-> "submit", command |-> c]
+    /\ UNCHANGED histVars
+
+-----------------------------------------------------------------------------
+(************************** Environment and spec **************************)
+(* The inputs of a cycle fall in two classes.                              *)
+(*  - Held signals, the safety channels and the selector: the environment  *)
+(*    keeps their levels and, per cycle, holds them all or changes one     *)
+(*    group (the E-stop pair, the safeguard pair, the enabling pair, or   *)
+(*    the selector).  Any input history is a sequence of such changes,    *)
+(*    the manager seeing the intermediate vectors as extra cycles.         *)
+(*  - Free signals, speed, servo_ready, drive_fault and self_test_ok:      *)
+(*    chosen afresh each cycle from their allowed values where the coming  *)
+(*    cycle reads them (page: speed only while powered -- C10, C18, C19,   *)
+(*    the §8 Stopping axes and the T1 history; servo_ready only in ARMING  *)
+(*    -- C15; drive_fault only while powered -- C09 -- or when a RESET or  *)
+(*    SERVO_ON is at the head of the queue -- K04, K07; self_test_ok only *)
+(*    in BOOT -- C02), and a fixed default (ZERO, FALSE, FALSE, TRUE)      *)
+(*    elsewhere, where the value cannot change the successor; likewise    *)
+(*    OVER_T1 is offered only in a T1 session.  Free                       *)
+(*    signals are therefore not part of the View.                          *)
+(* With LockoutHoldsInputs (the CI cfg) the held signals stop changing     *)
+(* once in ERROR_LOCKOUT: there, by C01 and K01, only the §3 counters and *)
+(* the selector status still follow the inputs.  Cycles and Submits go on. *)
+HeldVariants(cur) ==
+    IF state = "ERROR_LOCKOUT" /\ LockoutHoldsInputs THEN {cur} ELSE
+    {cur}
+    \cup {[cur EXCEPT !.estop_a = p[1], !.estop_b = p[2]] : p \in EstopInputs}
+    \cup {[cur EXCEPT !.gate_a = p[1], !.gate_b = p[2]] : p \in SafeguardInputs}
+    \cup {[cur EXCEPT !.enable_a = p[1], !.enable_b = p[2]] : p \in EnablingInputs}
+    \cup {[cur EXCEPT !.selector = v] : v \in SelectorInputs}
+
+DriveFaultRead == \/ state \in Powered
+                  \/ queue # << >> /\ Head(queue).kind \in {"RESET", "SERVO_ON"}
+
+\* OVER_T1 is read only in a T1 session (C10, and the T1 history); in other
+\* powered states it acts as MOVING (§8 reads only speed = ZERO).
+SpeedChoices ==
+    IF state \notin Powered THEN {"ZERO"}
+    ELSE IF session_mode = "T1" THEN SpeedInputs
+    ELSE SpeedInputs \ (IF "MOVING" \in SpeedInputs THEN {"OVER_T1"} ELSE {})
+
+FreeChoices ==
+    [speed:        SpeedChoices,
+     servo_ready:  IF state = "ARMING" THEN ServoReadyInputs ELSE {FALSE},
+     drive_fault:  IF DriveFaultRead THEN DriveFaultInputs ELSE {FALSE},
+     self_test_ok: IF state = "BOOT" THEN SelfTestInputs ELSE {TRUE}]
+
+FreeDefault == [speed |-> "ZERO", servo_ready |-> FALSE, drive_fault |-> FALSE,
+                self_test_ok |-> TRUE]
+
+WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
+                            !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok]
+
+\* With CombineChanges a cycle may change a held group and choose the free
+\* signals at once; without it (the CI cfg) a cycle either changes one held
+\* group (free signals at their defaults) or holds them and chooses the
+\* free signals.
+NextInputs(cur) ==
+    IF CombineChanges
+    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
+    ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)}
+         \cup {WithFree(cur, f) : f \in FreeChoices}
+
+\* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
+\* off, every axis Disabled.
+Init ==
+    /\ state = "BOOT"             /\ selector = "INVALID"
+    /\ session_mode = "NONE"      /\ stop_category = "NONE"
+    /\ fault_code = "NONE"        /\ last_reject_reason = "NONE"
+    /\ command_result = "NONE"
+    /\ estop_mismatch = 0 /\ safeguard_mismatch = 0
+    /\ enabling_mismatch = 0 /\ selector_invalid = 0
+    /\ state_cycles = 0           /\ t2_confirmed = FALSE
+    /\ resume_to = "NONE"         /\ jog = NoJog
+    /\ queue = << >>              /\ axes = [i \in Axes |-> "Disabled"]
+    /\ inputs = InitialInputs     /\ event = [kind |-> "init"]
+    /\ reset_since_trip = TRUE    /\ jog_in_auto = FALSE
+    /\ t1_overspeed = FALSE       /\ ever_locked = FALSE
+
+\* A full queue rejects every command alike (QUEUE_FULL, only
+\* last_reject_reason changes), so when it is full one representative
+\* command is submitted: the other choices give the same View.
+SubmitChoices == IF Len(queue) < QueueCapacity THEN Commands ELSE {Simple("RESET")}
+
+Next ==
+    \/ \E in \in NextInputs(inputs) : Cycle(in)
+    \/ \E c \in SubmitChoices : Submit(c)
+
+Spec == Init /\ [][Next]_vars
+
+-----------------------------------------------------------------------------
+(************************ Outputs (§7, RSM-16) *****************************)
+contactor_closed     == state \in Powered
+drive_enable         == state \in Powered
+brake_release        == state \in Powered
+ramp_down_request    == state = "STOPPING"
+reset_lamp           == state = "ESTOP_RESET_NEEDED"
+commanded_speed_mm_s == IF state = "MANUAL_JOGGING" THEN jog.speed_mm_s ELSE 0
+queue_length         == Len(queue)
+
+-----------------------------------------------------------------------------
+(******************************* Invariants ********************************)
+JogType == {NoJog} \cup [axis: Axes, direction: {-1, 1}, speed_mm_s: Nat \ {0}]
+
+TypeOK ==
+    /\ state \in States
+    /\ selector \in Selectors
+    /\ session_mode \in Modes \cup {"NONE"}
+    /\ stop_category \in StopCategories
+    /\ fault_code \in FaultCodes
+    /\ last_reject_reason \in Reasons \cup {"NONE"}
+    /\ command_result \in Reasons \cup {"NONE", "ACCEPTED"}
+    /\ estop_mismatch \in 0..(D + 1) /\ safeguard_mismatch \in 0..(D + 1)
+    /\ enabling_mismatch \in 0..(D + 1) /\ selector_invalid \in 0..(D + 1)
+    /\ state_cycles \in 0..Max2(ArmingTimeoutCycles, MaxStopCycles)
+    /\ t2_confirmed \in BOOLEAN
+    /\ resume_to \in {"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}
+    /\ jog \in JogType
+    /\ queue \in Seq(Commands) /\ Len(queue) <= QueueCapacity
+    /\ axes \in [Axes -> AxisStates]
+    /\ inputs \in Inputs
+    /\ reset_since_trip \in BOOLEAN /\ jog_in_auto \in BOOLEAN
+    /\ t1_overspeed \in BOOLEAN /\ ever_locked \in BOOLEAN
+    \* per-state data is meaningful only where §4 says so
+    /\ (session_mode # "NONE") <=> (state \in Powered)
+    /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
+    /\ t2_confirmed => state = "IDLE"
+    /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"}
+    /\ (resume_to # "NONE") <=> (state = "HOLD" \/ (state = "STOPPING" /\ stop_category = "CAT2"))
+    /\ (jog # NoJog) <=> (state = "MANUAL_JOGGING" \/ resume_to = "MANUAL_JOGGING")
+
+\* INV-RESET (RSM-05): ARMING and OPERATIONAL are reachable from
+\* ESTOP_ACTIVE only through K05, a Reset accepted while both E-stop
+\* channels were released.
+INV_RESET == state \in {"ARMING"} \cup Operational => reset_since_trip
+
+\* INV-NOJOG-AUTO (RSM-08): never MANUAL_JOGGING with session_mode or
+\* selector AUTO at the end of a cycle; a jog command in AUTO changes
+\* nothing: it is rejected with JOG_IN_AUTO (K25, K30; LOCKED_OUT in
+\* ERROR_LOCKOUT, K01 comes first), and a rejection changes only the
+\* reason fields (Reject).
+INV_NOJOG_AUTO ==
+    /\ state = "MANUAL_JOGGING" => session_mode # "AUTO" /\ selector # "AUTO"
+    /\ jog_in_auto =>
+           command_result = IF state = "ERROR_LOCKOUT" THEN "LOCKED_OUT"
+                                                       ELSE "JOG_IN_AUTO"
+
+\* INV-DISCREPANCY (RSM-04, RSM-02): a mismatch counter above D implies
+\* ERROR_LOCKOUT; ERROR_LOCKOUT is never left.
+INV_DISCREPANCY ==
+    /\ (\/ estop_mismatch > D \/ safeguard_mismatch > D
+        \/ enabling_mismatch > D \/ selector_invalid > D) => state = "ERROR_LOCKOUT"
+    /\ ever_locked => state = "ERROR_LOCKOUT"
+
+\* INV-POWER (RSM-03, RSM-07, RSM-16): contactor, drive enable and brake
+\* release only in powered states; in ESTOP_ACTIVE and ERROR_LOCKOUT all
+\* three are off.
+INV_POWER ==
+    /\ (contactor_closed \/ drive_enable \/ brake_release) => state \in Powered
+    /\ state \in {"ESTOP_ACTIVE", "ERROR_LOCKOUT"} =>
+           ~contactor_closed /\ ~drive_enable /\ ~brake_release
+
+\* INV-GATE (RSM-08): AUTO_RUNNING only with both safeguard channels closed.
+INV_GATE == state = "AUTO_RUNNING" => inputs.gate_a /\ inputs.gate_b
+
+\* INV-ENABLE (RSM-09): MANUAL_JOGGING only in T1/T2 with both enabling
+\* channels MIDDLE.
+INV_ENABLE ==
+    state = "MANUAL_JOGGING" =>
+        /\ session_mode \in {"T1", "T2"}
+        /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
+
+\* INV-T1SPEED (RSM-10): in a T1 session the commanded speed never exceeds
+\* T1SpeedLimit, and a cycle that reads OVER_T1 during a T1 session ends
+\* unpowered.
+INV_T1SPEED ==
+    /\ session_mode = "T1" => commanded_speed_mm_s <= T1SpeedLimit
+    /\ t1_overspeed => state \notin Powered
+
+\* INV-1OO2 (RSM-04): a tripped channel of a safety input that guards the
+\* current mode never coexists with a motion state: E-stop always,
+\* safeguard in AUTO, enabling device in T1/T2 (not the safeguard in
+\* manual modes, RSM-09).
+INV_1OO2 ==
+    state \in Motion =>
+        /\ inputs.estop_a /\ inputs.estop_b
+        /\ session_mode = "AUTO" => inputs.gate_a /\ inputs.gate_b
+        /\ session_mode \in {"T1", "T2"} =>
+               inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
+
+(* Determinism (RSM-15): each event has exactly one successor.  We chose  *)
+(* to make this true by construction: Next is \E e : Cycle(e) \/ Submit(e)*)
+(* and each of these is "every variable' = a function of (state, e)"     *)
+(* (SetMgr of AfterCycle/AfterSubmit: IF/CASE chains with disjoint guards,*)
+(* no \E, no disjunction).  An invariant cannot enumerate the successors  *)
+(* of an action, so the invariant restates it over the set of successor  *)
+(* values computed from the same functions: for every event enabled in    *)
+(* the current state the successor set is a singleton, and the functions  *)
+(* are total there (TLC reports an error if a CASE has no matching arm or *)
+(* Head is applied to << >>).                                             *)
+Determinism ==
+    /\ \A in \in NextInputs(inputs) : Cardinality({AfterCycle(in)}) = 1
+    /\ \A c \in Commands : Cardinality({AfterSubmit(c)}) = 1
+
+-----------------------------------------------------------------------------
+(*********** Input profiles, substituted by the .cfg files with <- *********)
+(* (TLC's .cfg syntax has no tuples or records.)                          *)
+Jog(ax, dir, v) == [kind |-> "JOG_START", axis |-> ax, direction |-> dir, speed_mm_s |-> v]
+
+\* CI: a valid jog above T1SpeedLimit (clamped in T1 only) and an invalid
+\* one (axis 7).  Full: also a valid slow jog and two more invalid ones.
+CI_JogCommands   == {Jog(2, -1, 400), Jog(7, 1, 100)}
+Full_JogCommands == {Jog(1, 1, 100), Jog(2, -1, 400), Jog(7, 1, 100),
+                     Jog(3, 0, 100), Jog(4, 1, 0)}
+
+\* Pairs: healthy, and channel B alone tripped (a trip and a disagreement).
+CI_ChannelPairs  == {<<TRUE, TRUE>>, <<TRUE, FALSE>>}
+All_ChannelPairs == BOOLEAN \X BOOLEAN
+\* Full cfg (long timers): only consistent readings where a disagreement
+\* would let a 50-cycle counter run along a 1000-cycle timer.
+Consistent_ChannelPairs == {<<TRUE, TRUE>>, <<FALSE, FALSE>>}
+Full_JogCommands_Small  == {Jog(2, -1, 400)}
+Consistent_EnablingPairs == {<<"RELEASED", "RELEASED">>, <<"MIDDLE", "MIDDLE">>}
+\* Enabling: released, middle, and one channel fully pressed (panic, not
+\* middle, and a disagreement).
+CI_EnablingPairs  == {<<"RELEASED", "RELEASED">>, <<"MIDDLE", "MIDDLE">>,
+                      <<"MIDDLE", "PANIC">>}
+All_EnablingPairs == EnablePositions \X EnablePositions
+
+-----------------------------------------------------------------------------
+(***************** Row reachability (for the coverage check) ***************)
+\* The §5 and §6 rows that the next cycle fires from the current state,
+\* for every input vector the environment may present next.
+RowsFiredBy(in) ==
+    LET m2 == AfterSafety(in)
+        k  == IF queue = << >> THEN {}
+              ELSE {CommandRow([m2 EXCEPT !.queue = Tail(@)], Head(queue), in)}
+    IN {SafetyRow(Monitor(Mgr, in), in)} \cup k
+
+NextRows == UNION {RowsFiredBy(in) : in \in NextInputs(inputs)}
+
+\* "Row r never fires": TLC must find a violation for every reachable row.
+RowNeverFires(r) == r \notin NextRows
+
+=============================================================================
