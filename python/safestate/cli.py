@@ -11,13 +11,11 @@ import argparse
 import importlib
 import sys
 
-# name -> (module, one-line help).  `prove`, `conform` and `report` are added by
-# their owners the same way.
+# name -> (module, one-line help).
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "check": ("safestate.checker.cli", "model-check a TLA+ specification (TLC-equivalent)"),
-    "prove": ("safestate.prover.cli", "prove invariants with z3"),
-    "conform": ("safestate.conformance.cli", "check the C++ implementation against the model"),
-    "report": ("safestate.report.cli", "build the evidence report"),
+    "prove": ("safestate.prove.cli", "prove invariants with z3 (BMC, k-induction, PDR)"),
+    "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
 }
 
 

@@ -1,0 +1,7 @@
+"""python -m safestate.prove MODEL.tla ..."""
+
+import sys
+
+from .cli import main
+
+sys.exit(main())

@@ -1,0 +1,357 @@
+"""The standard-module operators, infix operators and function/record/set
+constructors, on symbolic values (see translate.py)."""
+
+from __future__ import annotations
+
+import itertools
+from typing import TYPE_CHECKING, Any, Callable
+
+import z3
+
+from ..tla import ast as A
+from ..tla.errors import Loc
+from .sets import (EnumSet, PredSet, SetV, cardinality, difference, intersect, need_enum, need_set, subseteq,
+                   union)
+from .values import Fn, ProveError, Rec, SeqV, Tup, eq, is_z3, ite, key_value, tracked
+
+if TYPE_CHECKING:
+    from .translate import Ctx, Translator
+
+BUILTIN_NAMES = {"Nat", "Int", "BOOLEAN", "STRING"}
+_ENUM_LIMIT = 4096  # largest interval or product enumerated explicitly
+
+
+def _int_set(desc: str, pred: Callable[[Any], z3.BoolRef], upper: int | None = None) -> PredSet:
+    def member(x: Any) -> z3.BoolRef:
+        if not (is_z3(x) and z3.is_int(x)):
+            return z3.BoolVal(False)
+        return pred(x)
+    return PredSet(desc, member, lambda n: z3.Int(n), upper=upper)
+
+
+NAT = lambda: _int_set("Nat", lambda x: x >= 0)  # noqa: E731
+INT = lambda: _int_set("Int", lambda x: z3.BoolVal(True))  # noqa: E731
+
+
+def boolean_set() -> EnumSet:
+    return EnumSet([(z3.BoolVal(True), z3.BoolVal(False)), (z3.BoolVal(True), z3.BoolVal(True))])
+
+
+def interval(tr: "Translator", lo: z3.ArithRef, hi: z3.ArithRef, loc: Loc) -> SetV:
+    clo, chi = tr.conc(lo), tr.conc(hi)
+    if clo is not None and chi is not None and chi - clo < _ENUM_LIMIT:
+        return EnumSet([(z3.BoolVal(True), z3.IntVal(i)) for i in range(clo, chi + 1)], z3.IntVal(0))
+    upper = chi if chi is not None else tr.upper_bound(hi)
+    return _int_set(f"{lo}..{hi}", lambda x: z3.And(lo <= x, x <= hi), upper)
+
+
+def product(sets: list[SetV], loc: Loc) -> SetV:
+    enums = [s for s in sets if isinstance(s, EnumSet)]
+    if len(enums) == len(sets):
+        items = []
+        for combo in itertools.product(*[s.items for s in enums]):
+            items.append((z3.And([g for g, _ in combo]) if len(combo) > 1 else combo[0][0],
+                          Tup(tuple(x for _, x in combo))))
+        return EnumSet([(_s(g), x) for g, x in items])
+
+    def member(x: Any) -> z3.BoolRef:
+        if not isinstance(x, Tup) or len(x.items) != len(sets):
+            return z3.BoolVal(False)
+        return z3.And([s.member(v, loc) for s, v in zip(sets, x.items)])
+    return PredSet("\\X", member, lambda n: Tup(tuple(s.fresh(f"{n}[{i + 1}]", loc) for i, s in enumerate(sets))))
+
+
+def _s(g: z3.BoolRef) -> z3.BoolRef:
+    return g if z3.is_true(g) or z3.is_false(g) else z3.simplify(g)
+
+
+def rec_set(fields: dict[str, SetV], loc: Loc) -> SetV:
+    enums = [s for s in fields.values() if isinstance(s, EnumSet)]
+    size = 1
+    for s in enums:
+        size *= max(1, len(s.items))
+    names = list(fields)
+    if len(enums) == len(fields) and size <= _ENUM_LIMIT:
+        items = []
+        for combo in itertools.product(*[need_enum(fields[f], "record set", loc).items for f in names]):
+            items.append((_s(z3.And([g for g, _ in combo])), Rec({f: x for f, (_, x) in zip(names, combo)})))
+        return EnumSet(items)
+
+    def member(x: Any) -> z3.BoolRef:
+        if not isinstance(x, Rec) or set(x.fields) != set(names):
+            return z3.BoolVal(False)
+        return z3.And([fields[f].member(x.fields[f], loc) for f in names])
+    return PredSet("[f : S]", member, lambda n: Rec({f: fields[f].fresh(f"{n}.{f}", loc) for f in names}))
+
+
+def fn_set(tr: "Translator", dom: EnumSet, rng: SetV, loc: Loc) -> SetV:
+    keys = []
+    for g, x in dom.items:
+        k = tr.conc(x)
+        if k is None or not z3.is_true(_s(g)):
+            raise ProveError("[D -> S] with a domain that is not a constant finite set", loc)
+        keys.append(k)
+
+    def member(f: Any) -> z3.BoolRef:
+        if isinstance(f, Tup):
+            from .values import tup_as_fn
+            f = tup_as_fn(f)
+        if not isinstance(f, Fn) or set(f.keys) != set(keys):
+            return z3.BoolVal(False)
+        return z3.And([rng.member(f.vals[k], loc) for k in keys])
+    return PredSet("[D -> S]", member, lambda n: Fn(tuple(keys), {k: rng.fresh(f"{n}[{k}]", loc) for k in keys}))
+
+
+def seq_set(elem: SetV, loc: Loc) -> PredSet:
+    def member(s: Any) -> z3.BoolRef:
+        if isinstance(s, Tup):
+            return z3.And([elem.member(x, loc) for x in s.items])
+        if not isinstance(s, SeqV):
+            return z3.BoolVal(False)
+        return z3.And([s.length >= 0, s.length <= s.cap] +
+                      [z3.Implies(s.length > i, elem.member(x, loc)) for i, x in enumerate(s.items)])
+
+    def maker(n: str) -> Any:
+        raise ProveError("Seq(S) needs a length bound (a TypeOK conjunct Len(x) <= N)", loc)
+    return PredSet("Seq(S)", member, maker, extra={"seq_elem": elem})
+
+
+def domain(tr: "Translator", v: Any, loc: Loc) -> SetV:
+    if isinstance(v, Rec):
+        return EnumSet([(z3.BoolVal(True), tr.strings.val(f, loc)) for f in v.fields])
+    if isinstance(v, Fn):
+        return EnumSet([(z3.BoolVal(True), key_value(k, tr.strings)) for k in v.keys])
+    if isinstance(v, Tup):
+        return EnumSet([(z3.BoolVal(True), z3.IntVal(i)) for i in range(1, len(v.items) + 1)], z3.IntVal(0))
+    if isinstance(v, SeqV):
+        return EnumSet([(v.length >= i, z3.IntVal(i)) for i in range(1, v.cap + 1)], z3.IntVal(0))
+    raise ProveError("DOMAIN of a value that is not a function", loc)
+
+
+def powerset(tr: "Translator", s: Any, loc: Loc) -> SetV:
+    base = need_set(s, "SUBSET", loc)
+
+    def maker(n: str) -> Any:
+        raise ProveError("SUBSET over a non-constant set (only membership in SUBSET S is translated)", loc)
+    return PredSet("SUBSET", lambda x: subseteq(need_set(x, "\\in SUBSET", loc), base, loc), maker,
+                   extra={"subset_of": base})
+
+
+def big_union(s: Any, loc: Loc) -> SetV:
+    outer = need_enum(s, "UNION", loc)
+    items: list[tuple[z3.BoolRef, Any]] = []
+    for g, inner in outer.items:
+        e = need_enum(inner, "UNION", loc)
+        items.extend((_s(z3.And(g, g2)), x) for g2, x in e.items)
+    return EnumSet(items)
+
+
+def fn_apply(tr: "Translator", f: Any, arg: Any, loc: Loc) -> Any:
+    if isinstance(f, Rec):
+        k = tr.conc(arg)
+        if isinstance(k, str):
+            if k not in f.fields:
+                raise ProveError(f"record has no field {k}", loc)
+            return f.fields[k]
+        return _select([(eq(arg, tr.strings.val(n, loc)), x) for n, x in f.fields.items()], loc)
+    if isinstance(f, Fn):
+        k = tr.conc(arg)
+        if k is not None:
+            if k not in f.vals:
+                raise ProveError(f"function applied outside its domain ({k!r})", loc)
+            return f.vals[k]
+        return _select([(eq(arg, key_value(kk, tr.strings), loc), f.vals[kk]) for kk in f.keys], loc)
+    if isinstance(f, (Tup, SeqV)):
+        items = f.items
+        k = tr.conc(arg)
+        if k is not None:
+            if not (isinstance(k, int) and 1 <= k <= len(items)):
+                raise ProveError(f"index {k!r} outside the tuple or sequence", loc)
+            return items[k - 1]
+        return _select([(arg == i + 1, x) for i, x in enumerate(items)], loc)
+    raise ProveError("application of a value that is not a function", loc)
+
+
+def _select(cases: list[tuple[z3.BoolRef, Any]], loc: Loc) -> Any:
+    # outside the domain the result is unspecified (TLC reports an error): take the last case
+    if not cases:
+        raise ProveError("application of a function with an empty domain", loc)
+    out = cases[-1][1]
+    for c, x in reversed(cases[:-1]):
+        out = ite(c, x, out, loc)
+    return out
+
+
+def update(tr: "Translator", v: Any, path: list[tuple[str, Any]], new: Callable[[Any], Any], loc: Loc) -> Any:
+    """[v EXCEPT !path = new(@)]"""
+    if not path:
+        return new(v)
+    kind, item = path[0]
+    rest = path[1:]
+    if kind == "field" or isinstance(v, Rec):
+        name = item if kind == "field" else tr.conc(item)
+        if isinstance(v, Rec):
+            if not isinstance(name, str):
+                return Rec({f: ite(eq(item, tr.strings.val(f, loc)), update(tr, x, rest, new, loc), x, loc)
+                            for f, x in v.fields.items()})
+            if name not in v.fields:
+                raise ProveError(f"EXCEPT on a missing field {name}", loc)
+            return Rec({**v.fields, name: update(tr, v.fields[name], rest, new, loc)})
+        item = tr.strings.val(item, loc)
+    if isinstance(v, Fn):
+        k = tr.conc(item)
+        if k is not None:
+            if k not in v.vals:
+                return v  # TLA+: EXCEPT outside the domain changes nothing
+            return Fn(v.keys, {**v.vals, k: update(tr, v.vals[k], rest, new, loc)})
+        return Fn(v.keys, {kk: ite(eq(item, key_value(kk, tr.strings), loc), update(tr, x, rest, new, loc), x, loc)
+                           for kk, x in v.vals.items()})
+    if isinstance(v, (Tup, SeqV)):
+        k = tr.conc(item)
+        items = list(v.items)
+        if k is not None:
+            if isinstance(k, int) and 1 <= k <= len(items):
+                items[k - 1] = update(tr, items[k - 1], rest, new, loc)
+        else:
+            items = [ite(item == i + 1, update(tr, x, rest, new, loc), x, loc) for i, x in enumerate(items)]
+        return Tup(tuple(items)) if isinstance(v, Tup) else SeqV(tuple(items), v.length)
+    raise ProveError("EXCEPT on a value that is not a function or record", loc)
+
+
+# ---------------------------------------------------------------- named operators
+
+def apply_builtin(tr: "Translator", name: str, args: list[A.Expr], ctx: "Ctx", loc: Loc) -> Any:
+    if name == "Nat":
+        return NAT()
+    if name == "Int":
+        return INT()
+    if name == "BOOLEAN":
+        return boolean_set()
+    if name == "STRING":
+        return PredSet("STRING", lambda x: z3.BoolVal(is_z3(x) and x.sort() == tr.strings.sort),
+                       lambda n: z3.Const(n, tr.strings.sort))
+    if name == "Cardinality" and len(args) == 1 and isinstance(args[0], A.SetEnum) and len(args[0].elems) == 1:
+        return z3.IntVal(1)  # a literal singleton: its element need not be translated
+    vals = [tracked(tr.val(a, ctx), a.loc) for a in args]
+    if name == "Len":
+        s = vals[0]
+        if isinstance(s, Tup):
+            return z3.IntVal(len(s.items))
+        if isinstance(s, SeqV):
+            return s.length
+        raise ProveError("Len of a value that is not a sequence", loc)
+    if name == "Head":
+        s = vals[0]
+        if isinstance(s, (Tup, SeqV)) and s.items:
+            return s.items[0]
+        raise ProveError("Head of a value that is not a non-empty sequence", loc)
+    if name == "Tail":
+        s = vals[0]
+        if isinstance(s, Tup):
+            return Tup(s.items[1:])
+        if isinstance(s, SeqV):
+            if not s.items:
+                raise ProveError("Tail of an empty sequence", loc)
+            return SeqV(s.items[1:] + (s.items[-1],), z3.If(s.length > 0, s.length - 1, 0))
+        raise ProveError("Tail of a value that is not a sequence", loc)
+    if name == "Append":
+        s, x = vals
+        if isinstance(s, Tup):
+            return Tup(s.items + (x,))
+        if isinstance(s, SeqV):
+            items = tuple(ite(s.length == i, x, old, loc) for i, old in enumerate(s.items))
+            return SeqV(items, s.length + 1)
+        raise ProveError("Append to a value that is not a sequence", loc)
+    if name == "\\o":
+        a, b = vals
+        if isinstance(a, Tup) and isinstance(b, Tup):
+            return Tup(a.items + b.items)
+        raise ProveError("\\o of sequences whose lengths are not constant", loc)
+    if name == "Seq":
+        return seq_set(need_set(vals[0], "Seq", loc), loc)
+    if name == "Cardinality":
+        return cardinality(need_enum(vals[0], "Cardinality", loc), loc)
+    if name == "IsFiniteSet":
+        return z3.BoolVal(isinstance(vals[0], EnumSet))
+    if name in (":>", "@@"):
+        return _tlc_fn(tr, name, vals[0], vals[1], loc)
+    if name in ("+", "-", "*", "\\div", "%", "<", ">", "<=", ">=", ".."):
+        return _arith(tr, name, vals[0], vals[1], loc)
+    if name == "-.":
+        return -vals[0]
+    raise ProveError(f"the standard operator {name}", loc)
+
+
+def _tlc_fn(tr: "Translator", op: str, a: Any, b: Any, loc: Loc) -> Any:
+    if op == ":>":
+        k = tr.conc(a)
+        if k is None:
+            raise ProveError(":> with a symbolic key", loc)
+        return Fn((k,), {k: b})
+    if not (isinstance(a, Fn) and isinstance(b, Fn)):
+        raise ProveError("@@ of values that are not functions", loc)
+    keys = a.keys + tuple(k for k in b.keys if k not in a.vals)
+    return Fn(keys, {**b.vals, **a.vals})
+
+
+def _arith(tr: "Translator", op: str, a: Any, b: Any, loc: Loc) -> Any:
+    if not (is_z3(a) and z3.is_int(a) and is_z3(b) and z3.is_int(b)):
+        raise ProveError(f"{op} of values that are not integers", loc)
+    if op == "+":
+        return a + b
+    if op == "-":
+        return a - b
+    if op == "*":
+        return a * b
+    if op == "\\div":
+        return a / b  # z3 Int division is Euclidean: TLA+'s \div for a positive divisor
+    if op == "%":
+        return a % b
+    if op == "<":
+        return a < b
+    if op == ">":
+        return a > b
+    if op == "<=":
+        return a <= b
+    if op == ">=":
+        return a >= b
+    if op == "..":
+        return interval(tr, a, b, loc)
+    raise ProveError(f"operator {op}", loc)
+
+
+def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
+    op = e.op
+    if op == "=>":
+        return z3.Implies(tr.boolean(e.lhs, ctx), tr.boolean(e.rhs, ctx))
+    if op in ("<=>", "\\equiv"):
+        return tr.boolean(e.lhs, ctx) == tr.boolean(e.rhs, ctx)
+    a = tr.val(e.lhs, ctx)
+    b = tr.val(e.rhs, ctx)
+    loc = e.loc
+    if op == "=":
+        return eq(a, b, loc)
+    if op in ("/=", "#"):
+        return z3.Not(eq(a, b, loc))
+    a, b = tracked(a, e.lhs.loc), tracked(b, e.rhs.loc)
+    if op in (":>", "@@"):
+        return _tlc_fn(tr, op, a, b, loc)
+    if op == "\\in":
+        return need_set(b, "\\in", loc).member(a, loc)
+    if op == "\\notin":
+        return z3.Not(need_set(b, "\\notin", loc).member(a, loc))
+    if op == "\\cup":
+        return union(need_set(a, op, loc), need_set(b, op, loc), loc)
+    if op == "\\cap":
+        return intersect(need_set(a, op, loc), need_set(b, op, loc), loc)
+    if op == "\\":
+        return difference(need_set(a, op, loc), need_set(b, op, loc), loc)
+    if op == "\\subseteq":
+        return subseteq(need_set(a, op, loc), need_set(b, op, loc), loc)
+    if op in ("+", "-", "*", "\\div", "%", "<", ">", "<=", ">=", ".."):
+        return _arith(tr, op, a, b, loc)
+    if op == "\\o":
+        if isinstance(a, Tup) and isinstance(b, Tup):
+            return Tup(a.items + b.items)
+        raise ProveError("\\o of sequences whose lengths are not constant", loc)
+    raise ProveError(f"the operator {op}", loc)

@@ -1,0 +1,1 @@
+"""Proof engines: bounded model checking, k-induction, PDR (Spacer)."""

@@ -1,0 +1,567 @@
+"""A TLA+ model as a symbolic transition system: state variables, symbolic
+constants, Init, Next, invariants and the variable domains taken from TypeOK.
+
+Domains: each conjunct of TypeOK of the form ``x \\in S`` gives the shape and
+range of variable x (``x \\in a..b``, ``x \\in [D -> S]``, ``x \\in [f : S]``,
+``x \\in S1 \\cup S2``...); ``x \\in Seq(S)`` needs a conjunct ``Len(x) <= N``
+whose N is a number or a constant with a bounded range.  A variable that
+TypeOK does not type is "untracked": its assignments are dropped, which is
+sound only because such a variable cannot be read (reading it is an error).
+
+Constants: a CONSTANT C with an ASSUME conjunct ``C \\in S`` (S a set of
+numbers, strings...) or ``C \\subseteq S`` (S a small constant finite set)
+stays symbolic, constrained by every ASSUME conjunct that mentions it; any
+other constant takes its .cfg value.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Any
+
+import z3
+
+from ..checker.cfg import Config, parse_config
+from ..tla import ast as A
+from ..tla.errors import Loc, TlaError
+from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoader, Scope, SubstSym, VarSym,
+                           build_root_scope, load_module)
+from ..tla.values import ModelValue
+from .builtins import powerset
+from .sets import EnumSet, PredSet, SetV
+from .translate import Ctx, Translator
+from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, leaves
+
+_TAG = [0]
+
+
+@dataclass
+class System:
+    module: A.Module
+    scope: Scope
+    strings: Strings
+    tr: Translator
+    variables: list[str]          # tracked variables, in declaration order
+    untracked: list[str]
+    cur: dict[str, Any]
+    nxt: dict[str, Any]
+    params: dict[str, Any]        # symbolic constants -> their symbolic value
+    constants_report: dict[str, Any]
+    assumptions: z3.BoolRef
+    domain: z3.BoolRef            # the TypeOK domains of the tracked variables
+    init: z3.BoolRef
+    init_aux: list[z3.ExprRef]
+    trans: z3.BoolRef
+    trans_aux: list[z3.ExprRef]
+    cur_leaves: list[z3.ExprRef] = field(default_factory=list)
+    nxt_leaves: list[z3.ExprRef] = field(default_factory=list)
+    param_leaves: list[z3.ExprRef] = field(default_factory=list)
+    _copies: dict[int, list[z3.ExprRef]] = field(default_factory=dict)
+    _aux: dict[int, list[z3.ExprRef]] = field(default_factory=dict)
+    _base_quantified: bool | None = None
+
+    # ----------------------------------------------------------- formulas
+    def predicate(self, name: str) -> z3.BoolRef:
+        """A state predicate defined in the model (or its proofs module)."""
+        sym = self.scope.lookup(name)
+        if not isinstance(sym, DefSym) or sym.defn.params:
+            raise TlaError("config", f"{name} is not a state predicate of {self.module.name}", None)
+        return self.tr.boolean(sym.defn.body, Ctx(self.scope, {}, False))
+
+    def conjuncts(self, name: str) -> dict[str, z3.BoolRef]:
+        """The top-level conjuncts of a state predicate, labelled (for CTI reports)."""
+        sym = self.scope.lookup(name)
+        if not isinstance(sym, DefSym) or sym.defn.params:
+            raise TlaError("config", f"{name} is not a state predicate of {self.module.name}", None)
+        out = {}
+        for c in _conjuncts(_expand(sym.defn.body, self.scope)):
+            label = f"{name}: {os.path.basename(c.loc.file)}:{c.loc.line}"
+            out[label] = self.expr(c)
+        return out
+
+    def expr(self, e: A.Expr) -> z3.BoolRef:
+        return self.tr.boolean(e, Ctx(self.scope, {}, False))
+
+    def state(self, i: int) -> list[z3.ExprRef]:
+        if i not in self._copies:
+            self._copies[i] = [z3.Const(f"{leaf}@{i}", leaf.sort()) for leaf in self.cur_leaves]
+        return self._copies[i]
+
+    def at(self, f: z3.BoolRef, i: int) -> z3.BoolRef:
+        """A state formula about step i of an unrolling."""
+        return z3.substitute(f, list(zip(self.cur_leaves, self.state(i))))
+
+    def init_at(self, i: int = 0) -> z3.BoolRef:
+        aux = [z3.Const(f"{a}@i{i}", a.sort()) for a in self.init_aux]
+        return z3.substitute(self.init, list(zip(self.cur_leaves, self.state(i))) + list(zip(self.init_aux, aux)))
+
+    def trans_at(self, i: int) -> z3.BoolRef:
+        """Next between steps i and i+1 (fresh copies of the Skolem constants)."""
+        aux = [z3.Const(f"{a}@{i}", a.sort()) for a in self.trans_aux]
+        self._aux[i] = aux
+        pairs = list(zip(self.cur_leaves, self.state(i))) + list(zip(self.nxt_leaves, self.state(i + 1)))
+        return z3.substitute(self.trans, pairs + list(zip(self.trans_aux, aux)))
+
+    def solver(self, *formulas: z3.ExprRef) -> z3.Solver:
+        """A solver for unrollings of Init, Next and `formulas`: quantifier-free when they are.
+
+        z3's default solver is several times slower on these unrollings than the
+        one configured for QF_AUFLIA (measured on the flagship model).
+        """
+        if self._base_quantified is None:
+            self._base_quantified = any(_quantified(f) for f in (self.init, self.trans, self.assumptions, self.domain))
+        quantified = self._base_quantified or any(_quantified(f) for f in formulas)
+        return z3.Solver() if quantified else z3.SolverFor("QF_AUFLIA")
+
+    # ----------------------------------------------------------- models
+    def state_values(self, model: z3.ModelRef, i: int | None) -> dict[str, Any]:
+        """The concrete value of every tracked variable at step i (None: the template state)."""
+        from .values import evaluate
+        pairs = list(zip(self.cur_leaves, self.state(i))) if i is not None else []
+
+        def ev(t: z3.ExprRef) -> z3.ExprRef:
+            return model.eval(z3.substitute(t, pairs) if pairs else t, model_completion=True)
+        return {v: evaluate(self.cur[v], ev, self.strings) for v in self.variables}
+
+    def param_values(self, model: z3.ModelRef) -> dict[str, Any]:
+        from .values import evaluate
+        return {n: evaluate(v, lambda t: model.eval(t, model_completion=True), self.strings)
+                for n, v in self.params.items() if not isinstance(v, SetV)} | {
+            n: _set_value(v, model, self.strings) for n, v in self.params.items() if isinstance(v, EnumSet)}
+
+
+def _quantified(f: z3.ExprRef) -> bool:
+    """Does `f` contain a quantifier?  (Walks the DAG through the C API: z3py's wrappers are slow.)"""
+    from z3 import z3core as C
+    ctx = f.ctx.ref()
+    seen: set[int] = set()
+    stack = [f.as_ast()]
+    while stack:
+        a = stack.pop()
+        i = C.Z3_get_ast_id(ctx, a)
+        if i in seen:
+            continue
+        seen.add(i)
+        k = C.Z3_get_ast_kind(ctx, a)
+        if k == z3.Z3_QUANTIFIER_AST:
+            return True
+        if k == z3.Z3_APP_AST:
+            app = C.Z3_to_app(ctx, a)
+            stack.extend(C.Z3_get_app_arg(ctx, app, j) for j in range(C.Z3_get_app_num_args(ctx, app)))
+    return False
+
+
+def _set_value(s: SetV, model: z3.ModelRef, strings: Strings) -> frozenset:
+    from .values import evaluate
+    assert isinstance(s, EnumSet)
+    ev = lambda t: model.eval(t, model_completion=True)  # noqa: E731
+    out = []
+    for g, x in s.items:
+        if z3.is_true(ev(g)):
+            out.append(_freeze(evaluate(x, ev, strings)))
+    return frozenset(out)
+
+
+def _freeze(v: Any) -> Any:
+    if isinstance(v, dict):
+        return tuple(sorted((k, _freeze(x)) for k, x in v.items()))
+    return v
+
+
+# ---------------------------------------------------------------- building
+
+def _walk(e: Any):
+    stack = [e]
+    while stack:
+        x = stack.pop()
+        if isinstance(x, list) or isinstance(x, tuple):
+            stack.extend(x)
+            continue
+        if x is None or isinstance(x, (str, int, bool, Loc)):
+            continue
+        yield x
+        for cls in type(x).__mro__:
+            for f in getattr(cls, "__slots__", ()):
+                if f != "loc":
+                    stack.append(getattr(x, f, None))
+
+
+def _strings_of(modules: list[A.Module], config: Config | None) -> list[str]:
+    out: set[str] = set()
+    for m in modules:
+        for u in m.units:
+            for x in _walk(u):
+                if isinstance(x, A.Str):
+                    out.add(x.value)
+                elif isinstance(x, (A.RecLit, A.RecSet)):
+                    out.update(f for f, _ in x.fields)
+                elif isinstance(x, A.Dot):
+                    out.add(x.field)
+        for a in m.assumes:
+            for x in _walk(a.expr):
+                if isinstance(x, A.Str):
+                    out.add(x.value)
+    if config is not None:
+        def add(v: Any) -> None:
+            if isinstance(v, str):
+                out.add(v)
+            elif isinstance(v, ModelValue):
+                out.add(v.name)  # type: ignore[attr-defined]
+            elif isinstance(v, (frozenset, tuple)):
+                for y in v:
+                    add(y)
+        for v, _ in config.constants.values():
+            add(v)
+    return sorted(out)
+
+
+def _from_cfg(v: Any, strings: Strings, loc: Loc) -> Any:
+    if isinstance(v, bool):
+        return z3.BoolVal(v)
+    if isinstance(v, int):
+        return z3.IntVal(v)
+    if isinstance(v, str):
+        return strings.val(v, loc)
+    if isinstance(v, ModelValue):
+        return strings.val(v.name, loc)  # type: ignore[attr-defined]
+    if isinstance(v, tuple):
+        return Tup(tuple(_from_cfg(x, strings, loc) for x in v))
+    if isinstance(v, frozenset):
+        return EnumSet([(z3.BoolVal(True), _from_cfg(x, strings, loc)) for x in sorted(v, key=repr)])
+    raise ProveError(f"constant value {v!r} of the .cfg", loc)
+
+
+def _conjuncts(e: A.Expr) -> list[A.Expr]:
+    if isinstance(e, A.And):
+        return [c for x in e.items for c in _conjuncts(x)]
+    return [e]
+
+
+def _names_in(e: A.Expr) -> set[str]:
+    return {x.name for x in _walk(e) if isinstance(x, (A.Name, A.Apply))}
+
+
+def _all_modules(loader: ModuleLoader) -> list[A.Module]:
+    return list(loader.cache.values())
+
+
+def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = None,
+          type_invariant: str = "TypeOK", cfg_constants: set[str] | None = None, log=lambda s: None) -> System:
+    module = load_module(model_path)
+    if cfg_path is None:
+        cand = os.path.splitext(model_path)[0] + ".cfg"
+        cfg_path = cand if os.path.exists(cand) else None
+    config = parse_config(cfg_path) if cfg_path else None
+    loader = ModuleLoader(module)
+    scope, var_syms = build_root_scope(module, loader)
+    modules = _all_modules(loader)
+    extra: A.Module | None = None
+    if proofs_module:
+        extra = load_module(proofs_module)
+        _merge_proofs_module(scope, extra, module, loader)
+        modules.append(extra)
+    _TAG[0] += 1
+    strings = Strings(_strings_of(modules, config), str(_TAG[0]))
+
+    # ---- constants: the .cfg values first (ASSUME sets may mention other constants)
+    declared = {n: s for n, s in scope.names.items() if isinstance(s, ConstSym)}
+    constants: dict[str, Any] = {}
+    overrides: dict[str, Any] = {}
+    if config is not None:
+        for name, (value, loc) in config.constants.items():
+            if name in declared:
+                constants[name] = _from_cfg(value, strings, loc)
+            elif scope.lookup(name) is not None:
+                overrides[name] = _from_cfg(value, strings, loc)
+        for name, (target, loc) in config.substitutions.items():
+            tsym = scope.lookup(target)
+            if tsym is None:
+                raise TlaError("config", f"{target} (substituted for {name}) is not defined", loc)
+            overrides[name] = tsym
+    tr = Translator(strings, constants, overrides, {}, None)
+    tr.root_scope = scope
+    tr.const_upper = {}
+    ctx = Ctx(scope, {}, False)
+    assumes = [c for m in modules for a in m.assumes for c in _conjuncts(a.expr)]
+
+    params: dict[str, Any] = {}
+    defining: set[int] = set()  # ASSUME conjuncts that define a symbolic constant's range
+    report: dict[str, Any] = {}
+    fixed = set(declared) if cfg_constants is not None and not cfg_constants else (cfg_constants or set())
+    if fixed - set(declared):
+        raise TlaError("config", f"--cfg-constants names no constant {', '.join(sorted(fixed - set(declared)))}",
+                       None)
+    if True:  # symbolic constants from the ASSUME conjuncts C \\in S and C \\subseteq S
+        for c in assumes:
+            if not (isinstance(c, A.Binary) and c.op in ("\\in", "\\subseteq") and isinstance(c.lhs, A.Name)
+                    and c.lhs.name in declared and c.lhs.name not in params and c.lhs.name not in fixed):
+                continue
+            name = c.lhs.name
+            try:
+                s = tr.val(c.rhs, ctx)
+            except TlaError:
+                continue
+            if c.op == "\\in" and isinstance(s, SetV) and not (isinstance(s, PredSet) and "seq_elem" in s.extra):
+                try:
+                    v = s.fresh(name, c.loc)
+                except TlaError:
+                    continue
+                if isinstance(s, PredSet) and s.upper is not None:
+                    tr.const_upper[name] = s.upper
+                if isinstance(s, EnumSet):
+                    ints = [concrete(x, strings) for _, x in s.items]
+                    if ints and all(isinstance(i, int) for i in ints):
+                        tr.const_upper[name] = max(ints)  # type: ignore[type-var]
+                params[name] = v
+                defining.add(id(c))
+            elif c.op == "\\subseteq" and isinstance(s, EnumSet) and len(s.items) <= 64 and \
+                    all(z3.is_true(g) for g, _ in s.items):
+                params[name] = EnumSet([(z3.Bool(f"{name}!has{i}"), x) for i, (_, x) in enumerate(s.items)],
+                                       s.items[0][1] if s.items else None)
+                defining.add(id(c))
+            elif c.op == "\\subseteq" and isinstance(s, PredSet) and "seq_elem" not in s.extra:
+                try:
+                    proto = s.fresh(name + "!elem", c.loc)
+                except TlaError:
+                    continue
+                sorts = [x.sort() for x in leaves(proto)]
+                if not sorts:
+                    continue
+                # any subset of an infinite set: membership is an uninterpreted predicate
+                has = z3.Function(f"{name}!has", *sorts, z3.BoolSort())
+                params[name] = _uf_subset(name, s, has)
+                defining.add(id(c))
+    for n, v in params.items():
+        constants[n] = v
+        overrides.pop(n, None)
+    constraints = []
+    for c in assumes:
+        names = _names_in(c)
+        if not names & set(params):
+            continue
+        if id(c) in defining and isinstance(c, A.Binary) and isinstance(c.lhs, A.Name) and \
+                isinstance(params.get(c.lhs.name), PredSet):
+            continue  # holds by construction of the uninterpreted subset
+        try:
+            constraints.append(tr.boolean(c, ctx))
+        except TlaError as e:
+            log(f"warning: ASSUME at {c.loc} not translated ({e.message}); the proof covers more constant values")
+    for n in declared:
+        if n in params:
+            rel = [f"ASSUME {_show(c)}" for c in assumes if n in _names_in(c)]
+            report[n] = "symbolic (" + "; ".join(rel) + ")"
+        elif n in constants:
+            report[n] = _report_value(constants[n], strings)
+        elif n in overrides:
+            report[n] = f"cfg: <- {config.substitutions[n][0]}" if config else "cfg"
+        else:
+            raise TlaError("config", f"the constant {n} has no value: give it in the .cfg or constrain it "
+                                     f"with ASSUME {n} \\in S", declared[n].loc)
+    tr._memo.clear()
+
+    # ---- variable domains from TypeOK
+    tsym = scope.lookup(type_invariant)
+    if not isinstance(tsym, DefSym):
+        raise TlaError("config", f"the model defines no {type_invariant}: the proof takes variable domains "
+                                 f"from it", Loc(model_path, 1, 1))
+    domains: dict[str, tuple[SetV, A.Expr]] = {}
+    bounds: dict[str, tuple[A.Expr, Ctx]] = {}
+    var_names = [v.name for v in var_syms]
+    for c, cscope in _typing_conjuncts(tsym.defn.body, scope):
+        cctx = Ctx(cscope, {}, False)
+        if not isinstance(c, A.Binary):
+            continue
+        lhs = _root_var(c.lhs, cscope, var_names)
+        if c.op == "\\in" and lhs is not None and lhs not in domains:
+            domains[lhs] = (tr.val(c.rhs, cctx), c)
+        elif c.op == "\\subseteq" and lhs is not None and lhs not in domains:
+            domains[lhs] = (powerset(tr, tr.val(c.rhs, cctx), c.loc), c)
+        elif c.op in ("<=", "<") and isinstance(c.lhs, A.Apply) and c.lhs.name == "Len":
+            v = _root_var(c.lhs.args[0], cscope, var_names)
+            if v is not None:
+                rhs = c.rhs if c.op == "<=" else A.Binary(c.loc, "-", c.rhs, A.Num(c.loc, 1))
+                bounds[v] = (rhs, cctx)
+    cur: dict[str, Any] = {}
+    nxt: dict[str, Any] = {}
+    untracked = []
+    domain_parts = []
+    for v in var_names:
+        if v not in domains:
+            cur[v] = nxt[v] = UNTRACKED
+            untracked.append(v)
+            continue
+        s, c = domains[v]
+        cur[v] = _fresh_var(tr, s, v, bounds.get(v), c)
+        nxt[v] = _fresh_var(tr, s, v + "'", bounds.get(v), c)
+        domain_parts.append(s.member(cur[v], c.loc))
+    tracked = [v for v in var_names if v not in untracked]
+    if untracked:
+        log(f"not typed by {type_invariant}, not tracked: {', '.join(untracked)}")
+    tr.cur, tr.nxt = cur, nxt
+
+    # ---- Init and Next
+    init_name = config.init.name if config and config.init else "Init"
+    next_name = config.next.name if config and config.next else "Next"
+    if config and config.specification and not config.init:
+        init_name, next_name = _split_spec(scope, config.specification.name)
+    init = tr.act(_def_body(scope, init_name, model_path), ctx)
+    init_aux, tr.skolems = tr.skolems, []
+    trans = tr.act(_def_body(scope, next_name, model_path), ctx)
+    trans_aux, tr.skolems = tr.skolems, []
+    sys_ = System(module if extra is None else module, scope, strings, tr, tracked, untracked, cur, nxt, params,
+                  report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux)
+    sys_.cur_leaves = [x for v in tracked for x in leaves(cur[v])]
+    sys_.nxt_leaves = [x for v in tracked for x in leaves(nxt[v])]
+    sys_.param_leaves = [x for v in params.values() for x in _param_leaves(v)]
+    return sys_
+
+
+def _uf_subset(name: str, s: PredSet, has: z3.FuncDeclRef) -> PredSet:
+    """Any subset of the infinite set s: membership is an uninterpreted predicate `has`."""
+    return PredSet(f"{name} (symbolic subset)", lambda x: z3.And(s.member(x), has(*leaves(x))),
+                   lambda n: s.fresh(n), extra={"uf": has})
+
+
+def _param_leaves(v: Any) -> list[z3.ExprRef]:
+    if isinstance(v, PredSet):
+        return []
+    if isinstance(v, EnumSet):
+        return [g for g, _ in v.items]
+    return leaves(v)
+
+
+def _show(e: A.Expr) -> str:
+    if isinstance(e, A.Binary):
+        return f"{_show(e.lhs)} {e.op} {_show(e.rhs)}"
+    if isinstance(e, A.Name):
+        return e.name
+    if isinstance(e, A.Num):
+        return str(e.value)
+    if isinstance(e, A.SetEnum):
+        return "{" + ", ".join(_show(x) for x in e.elems) + "}"
+    if isinstance(e, A.Apply) and e.name == "\\X":
+        return " \\X ".join(_show(x) for x in e.args)
+    if isinstance(e, A.Apply):
+        return f"{e.name}(" + ", ".join(_show(x) for x in e.args) + ")"
+    if isinstance(e, A.TupleLit):
+        return "<<" + ", ".join(_show(x) for x in e.elems) + ">>"
+    if isinstance(e, A.Bool):
+        return "TRUE" if e.value else "FALSE"
+    if isinstance(e, A.RecSet):
+        return "[" + ", ".join(f"{f} : {_show(x)}" for f, x in e.fields) + "]"
+    if isinstance(e, A.Str):
+        return f'"{e.value}"'
+    return "..."
+
+
+def _report_value(v: Any, strings: Strings) -> Any:
+    c = concrete(v, strings)
+    if c is not None:
+        return c
+    if isinstance(v, EnumSet):
+        return "cfg: {" + ", ".join(str(concrete(x, strings)) for _, x in v.items) + "}"
+    return "cfg"
+
+
+def _expand(e: A.Expr, scope: Scope, keep_names: bool = False) -> A.Expr:
+    """Unfold zero-arity definitions used as TypeOK conjuncts (TypeOK == A /\\ Other)."""
+    if isinstance(e, A.And):
+        return A.And(e.loc, [_expand(x, scope) for x in e.items])
+    if isinstance(e, A.Name):
+        sym = scope.lookup(e.name)
+        if isinstance(sym, DefSym) and not sym.defn.params and not sym.defn.fn_bounds and sym.scope is scope:
+            return _expand(sym.defn.body, scope)
+    return e
+
+
+def _typing_conjuncts(e: A.Expr, scope: Scope) -> list[tuple[A.Expr, Scope]]:
+    """TypeOK's conjuncts with the scope they are written in, through definitions and M!Op."""
+    if isinstance(e, A.And):
+        return [x for item in e.items for x in _typing_conjuncts(item, scope)]
+    if isinstance(e, A.Name):
+        sym = scope.lookup(e.name)
+        if isinstance(sym, DefSym) and not sym.defn.params and not sym.defn.fn_bounds:
+            return _typing_conjuncts(sym.defn.body, sym.scope)
+    if isinstance(e, A.Prefixed) and not e.args and all(not s.args for s in e.path):
+        inner: Scope | None = scope
+        for step in e.path:
+            isym = inner.lookup(step.name) if inner is not None else None
+            inner = isym.scope if isinstance(isym, InstanceSym) else None
+        dsym = inner.lookup(e.name) if inner is not None else None
+        if isinstance(dsym, DefSym) and not dsym.defn.params:
+            return _typing_conjuncts(dsym.defn.body, dsym.scope)
+    return [(e, scope)]
+
+
+def _root_var(e: A.Expr, scope: Scope, var_names: list[str]) -> str | None:
+    """The state variable an expression names, through INSTANCE substitutions (q <- buf)."""
+    if not isinstance(e, A.Name):
+        return None
+    sym = scope.lookup(e.name)
+    if isinstance(sym, VarSym) and e.name in var_names:
+        return e.name
+    if isinstance(sym, SubstSym):
+        return _root_var(sym.expr, sym.scope, var_names)
+    return None
+
+
+def _fresh_var(tr: Translator, s: SetV, name: str, bound: tuple[A.Expr, Ctx] | None, c: A.Expr) -> Any:
+    if isinstance(s, PredSet) and "subset_of" in s.extra:
+        base = s.extra["subset_of"]
+        if not (isinstance(base, EnumSet) and base.all_certain()) or len(base.items) > 256:
+            raise ProveError(f"{name} is a subset of a set that is not a small constant finite set", c.loc)
+        return EnumSet([(z3.Bool(f"{name}[{i}]"), x) for i, (_, x) in enumerate(base.items)],
+                       base.items[0][1] if base.items else None)
+    if isinstance(s, PredSet) and "seq_elem" in s.extra:
+        if bound is None:
+            raise ProveError(f"{name} \\in Seq(S) needs a length bound: add the TypeOK conjunct Len({name}) <= N",
+                             c.loc)
+        b = tr.val(bound[0], bound[1])
+        cap = tr.upper_bound(b)
+        if cap is None:
+            raise ProveError(f"the length bound of {name} has no finite upper bound (bound its constant with "
+                             f"ASSUME N \\in a..b)", bound[0].loc)
+        elem: SetV = s.extra["seq_elem"]
+        return SeqV(tuple(elem.fresh(f"{name}[{i + 1}]", c.loc) for i in range(cap)), z3.Int(f"{name}.len"))
+    return s.fresh(name, c.loc)
+
+
+def _def_body(scope: Scope, name: str, path: str) -> A.Expr:
+    sym = scope.lookup(name)
+    if not isinstance(sym, DefSym):
+        raise TlaError("config", f"the model defines no {name}", Loc(path, 1, 1))
+    return sym.defn.body
+
+
+def _split_spec(scope: Scope, name: str) -> tuple[str, str]:
+    sym = scope.lookup(name)
+    if isinstance(sym, DefSym):
+        items = _conjuncts(sym.defn.body)
+        init = next((x for x in items if isinstance(x, A.Name)), None)
+        box = next((x for x in items if isinstance(x, A.Unary) and x.op == "[]"), None)
+        if init is not None and box is not None and isinstance(box.arg, A.StepAction) and \
+                isinstance(box.arg.action, A.Name):
+            return init.name, box.arg.action.name
+    raise ProveError(f"SPECIFICATION {name} is not of the form Init /\\ [][Next]_v", None)
+
+
+def _merge_proofs_module(scope: Scope, extra: A.Module, model: A.Module, loader: ModuleLoader) -> None:
+    """Add the definitions of proofs/<Model>Proofs.tla (which EXTENDS the model) to the model's scope.
+
+    The front end looks for extended modules beside the root module only, so the
+    proofs module cannot be the root; its definitions are evaluated in the model's scope.
+    """
+    for name, loc in extra.extends:
+        if name != model.name:
+            found = loader.find(name, loc)
+            if not isinstance(found, dict):
+                raise ProveError(f"a proofs module may EXTEND only {model.name} and standard modules", loc)
+            for n, b in found.items():
+                scope.names.setdefault(n, BuiltinSym(b))
+    if extra.constants or extra.variables:
+        raise ProveError("a proofs module declares no CONSTANTS or VARIABLES", Loc(extra.file, 1, 1))
+    for u in extra.units:
+        if not isinstance(u, A.OpDef):
+            raise ProveError("INSTANCE in a proofs module", u.loc)
+        scope.names[u.name] = DefSym(u, scope, u.name in extra.recursive or u.fn_bounds is not None)
