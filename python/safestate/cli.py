@@ -1,8 +1,7 @@
 """The ``safestate`` console script.
 
 Each subcommand lives in its own module exposing ``add_arguments(parser)`` and
-``run(args) -> int``; register it in `SUBCOMMANDS`.  Subcommands whose module is
-not installed yet are simply not offered.
+``run(args) -> int``; register it in `SUBCOMMANDS`.
 """
 
 from __future__ import annotations
@@ -23,12 +22,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="safestate", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
     for name, (module_name, help_text) in SUBCOMMANDS.items():
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as e:
-            if e.name and module_name.startswith(e.name):
-                continue  # subcommand not available in this installation
-            raise
+        module = importlib.import_module(module_name)
         p = sub.add_parser(name, help=help_text)
         module.add_arguments(p)
         p.set_defaults(run=module.run)
