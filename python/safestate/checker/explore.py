@@ -151,9 +151,16 @@ class Explorer:
             trace = self.trace(trace_to)
             if extra is not None:
                 trace.append(extra)
+        left = len(self.states) - self.head
+        if not initial:
+            # As TLC's queue: the state being expanded (`self.head`) has been dequeued,
+            # and a new successor violating an invariant is never enqueued.
+            left -= 1
+            if result == "safety failure" and extra is None:
+                left -= 1
         self.outcome = CheckResult(result, len(self.states), self.generated,
                                    self.max_level if self.generated else 0,
-                                   len(self.states) - self.head, violated, trace, error,
+                                   left, violated, trace, error,
                                    initial_violation=initial)
         raise _Stop()
 
@@ -284,7 +291,7 @@ class Explorer:
         except TlaError as e:
             if isinstance(e, EvalError) or e.kind == "eval":
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
-                                           len(self.states) - self.head, error=e, trace=self.trace(i))
+                                           len(self.states) - self.head - 1, error=e, trace=self.trace(i))
                 raise _Stop() from None
             raise
         if self.generated == before and m.check_deadlock:

@@ -27,7 +27,7 @@ from ..tla.compiler import Compiler, check_bool
 from ..tla.env import UNSET, Env, Frame
 from ..tla.errors import EvalError, Loc, TlaError, UnsupportedError
 from ..tla.modules import (BuiltinSym, ConstSym, DefSym, ModuleLoader, Scope, VarSym, build_root_scope,
-                           load_module)
+                           load_module, tlc_intern_order)
 from ..tla.parser import parse_text
 from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order
 from .cfg import Config, ConfigEntry, parse_config
@@ -203,8 +203,7 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
     register_token_order(config.tokens)
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
-    for m in loader.cache.values():
-        register_token_order(m.token_order)
+    register_token_order(tlc_intern_order(loader))
     constants, overrides = _constants(config, scope, module)
     compiler = Compiler(constants, overrides)
     compiler.sym_overrides = {id(scope.lookup(n)): target for n, target in overrides.items()}

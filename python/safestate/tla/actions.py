@@ -16,6 +16,7 @@ Continuations are fixed at compile time, so no closures are built while explorin
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -410,17 +411,18 @@ def _exists(binds: list, body: Code) -> Code:
                 L[slot] = v
                 body(s, t, L)
         return exists1
-    n = len(binds)
+    # TLC (ContextEnumerator) evaluates every bound set first, then enumerates the
+    # combinations like an odometer whose FIRST binder turns fastest:
+    # `\E d \in D, z \in BOOLEAN` visits (d1, FALSE), (d2, FALSE), ..., (d1, TRUE), ...
+    rbinds = binds[::-1]
 
-    def rec(s: Any, t: Any, L: list, i: int) -> None:
-        if i == n:
+    def exists_n(s: Any, t: Any, L: list) -> None:
+        elems = [_enum_checked(b[0](s, t, L), b[3]) for b in binds]
+        for combo in itertools.product(*elems[::-1]):
+            for (_, slots, is_tuple, sloc), v in zip(rbinds, combo):
+                assign_binder(L, slots, is_tuple, v, sloc)
             body(s, t, L)
-            return
-        set_code, slots, is_tuple, sloc = binds[i]
-        for v in _enum_checked(set_code(s, t, L), sloc):
-            assign_binder(L, slots, is_tuple, v, sloc)
-            rec(s, t, L, i + 1)
-    return lambda s, t, L: rec(s, t, L, 0)
+    return exists_n
 
 
 def _let(resets: list[int], body: Code) -> Code:

@@ -316,5 +316,7 @@ class Module:
     recursive: set[str] = field(default_factory=set)
     # Nested modules declared inside this module's text, by name.
     submodules: dict[str, "Module"] = field(default_factory=dict)
-    # Identifiers and strings in order of first appearance (TLC orders strings this way).
+    # The words (identifiers, keywords) and the string contents of the module's file, in
+    # order of first appearance (TLC orders strings by when they were interned).
     token_order: list[str] = field(default_factory=list)
+    string_order: list[str] = field(default_factory=list)

@@ -13,6 +13,7 @@ TLC's normalised order (CHOOSE picks the first witness in that order).
 
 from __future__ import annotations
 
+import itertools
 import operator
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -480,18 +481,7 @@ class Compiler:
             finally:
                 self._no_inline -= 1
 
-            def make_lambda(s: Any, t: Any, L: list) -> Callable:
-                def op(*vals: Value) -> Value:
-                    saved = [L[sl] for sl in slots]
-                    for sl, v in zip(slots, vals):
-                        L[sl] = v
-                    try:
-                        return body(s, t, L)
-                    finally:
-                        for sl, v in zip(slots, saved):
-                            L[sl] = v
-                return op
-            return make_lambda
+            return _operator_value(body, slots)
         name = a.name if isinstance(a, (A.Name, A.OpRef)) else None
         if name is None:
             raise TlaError("semantic", f"an operator of {arity} arguments is expected here", a.loc)
@@ -518,18 +508,7 @@ class Compiler:
         finally:
             self._no_inline -= 1
 
-        def make_op(s: Any, t: Any, L: list) -> Callable:
-            def op(*vals: Value) -> Value:
-                saved = [L[sl] for sl in slots]
-                for sl, v in zip(slots, vals):
-                    L[sl] = v
-                try:
-                    return body(s, t, L)
-                finally:
-                    for sl, v in zip(slots, saved):
-                        L[sl] = v
-            return op
-        return make_op
+        return _operator_value(body, slots)
 
     def _fn_def_ref(self, sym: DefSym) -> Code:
         """A function definition ``f[x \\in S] == e`` (possibly recursive)."""
@@ -839,21 +818,22 @@ class Compiler:
                         check_bool(r, bloc, "quantifier body")
                 return not exists
             return quant1
-        n = len(binds)
+        # As TLC (ContextEnumerator): all bound sets are evaluated first, then the
+        # FIRST binder turns fastest (see actions._exists).
+        rbinds = binds[::-1]
 
-        def rec(s: Any, t: Any, L: list, i: int) -> bool:
-            if i == n:
+        def quant_n(s: Any, t: Any, L: list) -> bool:
+            elems = [_enum_checked(b[0](s, t, L), b[3]) for b in binds]
+            for combo in itertools.product(*elems[::-1]):
+                for (_, slots, is_tuple, sloc), v in zip(rbinds, combo):
+                    _assign(L, slots, is_tuple, v, sloc)
                 r = body(s, t, L)
-                if r is True or r is False:
-                    return r
-                return check_bool(r, bloc, "quantifier body")
-            set_code, slots, is_tuple, sloc = binds[i]
-            for v in _enum_checked(set_code(s, t, L), sloc):
-                _assign(L, slots, is_tuple, v, sloc)
-                if rec(s, t, L, i + 1) is exists:
+                if r is not True and r is not False:
+                    r = check_bool(r, bloc, "quantifier body")
+                if r is exists:
                     return exists
             return not exists
-        return lambda s, t, L: rec(s, t, L, 0)
+        return quant_n
 
     def c_UnboundedQuant(self, e: A.UnboundedQuant, env: Env) -> Code:
         raise EvalError(f"TLC encountered the non-enumerable quantifier bound in {e.kind} "
@@ -1558,3 +1538,20 @@ _FAST_INT = {
     "%": _checked("%", NATURALS["%"].fn, operator.mod, (0).__lt__),
     "\\div": _checked("\\div", NATURALS["\\div"].fn, operator.floordiv, (0).__ne__),
 }
+
+
+def _operator_value(body: Callable, slots: list[int]) -> Callable:
+    """A LAMBDA or operator argument as a Python callable: binds its parameters to their
+    frame slots for the call and restores them afterwards (the frame is reused)."""
+    def make_op(s: Any, t: Any, L: list) -> Callable:
+        def op(*vals: Value) -> Value:
+            saved = [L[sl] for sl in slots]
+            for sl, v in zip(slots, vals):
+                L[sl] = v
+            try:
+                return body(s, t, L)
+            finally:
+                for sl, v in zip(slots, saved):
+                    L[sl] = v
+        return op
+    return make_op

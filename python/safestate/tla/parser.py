@@ -72,7 +72,8 @@ _BUILTIN_SETS = {
     "boolean_set": "BOOLEAN", "real_number_set": "Real",
 }
 
-_TOKEN_RE = re.compile(r'"(?:[^"\\\n]|\\.)*"|[A-Za-z0-9_]*[A-Za-z][A-Za-z0-9_]*')
+_TOKEN_RE = re.compile(r'"(?:[^"\\\n]|\\.)*"|\\[A-Za-z]+|[A-Za-z0-9_]*[A-Za-z][A-Za-z0-9_]*')
+_MODULE_START_RE = re.compile(r"-{4,}\s*MODULE\b")
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "f": "\f", '"': '"', "\\": "\\"}
 
 
@@ -86,22 +87,33 @@ def parse_text(text: str, file: str) -> list[A.Module]:
     modules = [conv.module(n) for n in tree.root_node.named_children if n.type == "module"]
     if not modules:
         raise TlaError("syntax", "no MODULE found (expected '---- MODULE Name ----')", Loc(file, 1, 1))
-    order = _token_order(text)
+    words, strings = _token_order(text)
     for m in modules:
-        m.token_order = order
+        m.token_order = words
+        m.string_order = strings
     return modules
 
 
-def _token_order(text: str) -> list[str]:
-    """Identifiers and string contents in order of first appearance, skipping comments."""
+def _token_order(text: str) -> tuple[list[str], list[str]]:
+    """The words (identifiers and keywords) and the string contents of a file, each in
+    order of first appearance, skipping comments and the text before the first module.
+
+    TLC's string order is the order in which names are interned: SANY interns every
+    word while parsing a file, but the content of a string literal only when the
+    module is semantically analysed (`StringNode`), after all files have been parsed."""
+    start = _MODULE_START_RE.search(text)
+    if start is not None:
+        text = text[start.start():]
     text = re.sub(r"\(\*.*?\*\)", " ", text, flags=re.S)
     text = re.sub(r"\\\*[^\n]*", " ", text)
-    seen: dict[str, None] = {}
+    words: dict[str, None] = {}
+    strings: dict[str, None] = {}
     for tok in _TOKEN_RE.findall(text):
         if tok.startswith('"'):
-            tok = _unescape(tok[1:-1])
-        seen.setdefault(tok, None)
-    return list(seen)
+            strings.setdefault(_unescape(tok[1:-1]), None)
+        elif not tok.startswith("\\"):
+            words.setdefault(tok, None)
+    return list(words), list(strings)
 
 
 def _unescape(s: str) -> str:
