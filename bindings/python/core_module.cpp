@@ -217,7 +217,10 @@ PYBIND11_MODULE(_core, m) {
       "conformance harness and for scripting. Every state, mode, reason and row is named by the\n"
       "upper-case string of the design page.";
 
-  py::class_<Config>(m, "Config", "Parameters of the manager (design §9). Every field is read/write.")
+  // module_local: the conformance suite loads a deliberately wrong build of this module
+  // (conformance/wrong_variant/) beside this one; global registration would clash.
+  py::class_<Config>(m, "Config", "Parameters of the manager (design §9). Every field is read/write.",
+                     py::module_local())
       .def(py::init<>(), "The defaults of design §9.")
       .def(py::init([](const py::kwargs& kw) {
              Config c;
@@ -256,7 +259,8 @@ PYBIND11_MODULE(_core, m) {
       });
 
   py::class_<SystemStateManager>(m, "Manager",
-                                 "One SystemStateManager. A new Manager is a power cycle: it starts in BOOT.")
+                                 "One SystemStateManager. A new Manager is a power cycle: it starts in BOOT.",
+                                 py::module_local())
       .def(py::init<const Config&>(), py::arg("config") = Config{})
       .def(
           "cycle", [](SystemStateManager& self, const py::dict& inputs) { return outputs_dict(self.cycle(scan_inputs(inputs))); },

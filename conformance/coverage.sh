@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Branch coverage of src/*.cpp under the conformance suite.
+#   conformance/coverage.sh [BUILD_DIR] [-- extra `safestate conform` arguments]
+# Builds safestate_cov._core with --coverage (conformance/wrong_variant/CMakeLists.txt,
+# unchanged sources), runs the trace replay + Hypothesis through it, prints gcovr's
+# branch summary of src/*.cpp.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+repo="$(cd "$here/.." && pwd)"
+build="${1:-$repo/build/conform-coverage}"; shift || true
+[ "${1:-}" = "--" ] && shift
+py="${PYTHON:-$repo/.venv/bin/python}"
+"$here/wrong_variant/build.sh" coverage "$build" > /dev/null
+find "$build" -name '*.gcda' -delete
+SAFESTATE_CORE_PATH="$build" SAFESTATE_CORE_MODULE=safestate_cov._core \
+  "$py" -m safestate.conform "$repo/models/SystemStateManager.tla" --hypothesis-steps 10000 "$@" || true
+"$py" -m gcovr --root "$repo" --object-directory "$build" --filter "$repo/src/" --txt-metric branch \
+  --exclude-unreachable-branches --exclude-throw-branches --print-summary --txt -

@@ -1,0 +1,41 @@
+"""Concrete traces to and from ITF files, with the checker's ITF writer/reader."""
+
+from __future__ import annotations
+
+import json
+import os
+
+from ..checker.itf import trace_to_itf
+from ..checker.model import Model
+from .events import Event
+from .traces import ConcreteTrace, Step
+
+
+def to_itf(model: Model, trace: ConcreteTrace, description: str) -> dict:
+    rows = [(trace.initial, "Init", {})]
+    rows += [(s.state, s.event.action, dict(s.event.params)) for s in trace.steps]
+    return trace_to_itf(model.variables, rows, "safestate conform", description)
+
+
+def write(path: str, model: Model, trace: ConcreteTrace, description: str) -> None:
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(to_itf(model, trace, description), f, separators=(",", ":"))
+        f.write("\n")
+
+
+def read(path: str, model: Model) -> ConcreteTrace:
+    """A trace from an ITF file: the first state, then each state's #meta action and
+    params as the event that produced it."""
+    with open(path, encoding="utf-8") as f:
+        doc = json.load(f)
+    states = doc["states"]
+    if not states:
+        raise ValueError(f"{path}: the trace has no state")
+    steps = []
+    for s in states[1:]:
+        meta = s.get("#meta", {})
+        if "action" not in meta:
+            raise ValueError(f"{path}: state {meta.get('index', '?')} has no #meta.action")
+        steps.append(Step(Event.from_itf(meta["action"], meta.get("params", {})), model.state_from_itf(s), -1))
+    return ConcreteTrace(model.state_from_itf(states[0]), steps)

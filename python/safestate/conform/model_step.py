@@ -1,0 +1,119 @@
+"""The model side of a step: the successor of a concrete model state under one event,
+computed by the checker (`Model.successors`), plus compiled evaluators of the
+model's operators (outputs, rows) so that nothing is re-implemented here.
+
+`successor()` enumerates the model's transitions from the state and keeps those
+whose event matches: there must be exactly one (the model is deterministic per
+event, and the event must be one the model allows in that state).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from ..checker.model import Model
+from ..tla import ast as A
+from ..tla.actions import ActionCompiler
+from ..tla.env import UNSET, Env, Frame, SlotLocal
+from ..tla.parser import parse_text
+from ..tla.values import Value, fmt
+from .events import Event
+
+
+class ModelStepError(Exception):
+    """The event is not allowed in the state, or has several successors."""
+
+
+class ModelStepper:
+    def __init__(self, model: Model) -> None:
+        self.model = model
+        self._defs: dict[str, Callable[[tuple], Value]] = {}
+        self._applied: dict[str, Callable[[tuple, Value], Value]] = {}
+        self.calls = 0
+        self._actions: dict[tuple[str, tuple[str, ...]], Callable[[tuple, list], list[tuple]]] = {}
+
+    def transitions(self, state: tuple) -> list[tuple[Event, tuple]]:
+        return [(Event.of(t.action, t.params), t.state) for t in self.model.successors(state)]
+
+    def successor(self, state: tuple, event: Event) -> tuple:
+        self.calls += 1
+        found = [s for e, s in self.transitions(state) if e == event]
+        if len(found) != 1:
+            what = "no transition" if not found else f"{len(found)} transitions"
+            raise ModelStepError(f"the model has {what} for event {event} in this state")
+        return found[0]
+
+    def edge_successor(self, state: tuple, event: Event) -> tuple:
+        """The successor along a graph edge the checker already found: only that
+        action is evaluated (its parameters bound to the edge's values), not the
+        whole next-state relation.  Exactly one successor is still required."""
+        self.calls += 1
+        names = tuple(k for k, _ in event.params)
+        key = (event.action, names)
+        run = self._actions.get(key)
+        if run is None:
+            run = self._actions[key] = self._compile_action(event.action, names)
+        found = run(state, [v for _, v in event.params])
+        if len(found) != 1:
+            raise ModelStepError(f"action {event} has {len(found)} successors in this state")
+        return found[0]
+
+    def _parse(self, text: str) -> A.Expr:
+        mod = parse_text(f"---- MODULE __Conform ----\n__E == {text}\n====", "<conform>")[0]
+        return mod.units[0].body  # type: ignore[union-attr]
+
+    def _bound(self, names: tuple[str, ...]) -> tuple[Env, Frame, list[int]]:
+        """An environment where `names` are bound variables stored in frame slots,
+        so one compiled unit serves every parameter value."""
+        frame = Frame()
+        slots = [frame.alloc() for _ in names]
+        env = Env(self.model.scope, frame).bind(**{n: SlotLocal(sl) for n, sl in zip(names, slots)})
+        return env, frame, slots
+
+    def _compile_action(self, action: str, names: tuple[str, ...]) -> Callable[[tuple, list], list[tuple]]:
+        env, frame, slots = self._bound(names)
+        body = self._parse(f"{action}({', '.join(names)})" if names else action)
+        out: list[tuple] = []
+        code = ActionCompiler(self.model.compiler).action(body, env, lambda s, t, L: out.append(tuple(t)))
+        nvars = len(self.model.variables)
+
+        def run(state: tuple, values: list) -> list[tuple]:
+            out.clear()
+            L: list = [None] * frame.size
+            for sl, v in zip(slots, values):
+                L[sl] = v
+            code(state, [UNSET] * nvars, L)
+            res = list(out)
+            for st in res:
+                self.model.check_complete(st, None)
+            return res
+        return run
+
+    # ------------------------------------------------------------ operators
+    def definition(self, name: str) -> Callable[[tuple], Value]:
+        """A compiled evaluator of a zero-argument definition (or variable) `name`."""
+        fn = self._defs.get(name)
+        if fn is None:
+            ev = self.model.compiler.evaluator(A.Name(self.model.module_loc(), name), self.model.scope)
+            fn = self._defs[name] = lambda s, ev=ev: ev(s, None)
+        return fn
+
+    def applied(self, op: str) -> Callable[[tuple, Value], Value]:
+        """A compiled evaluator of `op(x)`, called as f(state, x)."""
+        fn = self._applied.get(op)
+        if fn is None:
+            env, frame, (slot,) = self._bound(("__x",))
+            code = self.model.compiler.expr(self._parse(f"{op}(__x)"), env)
+
+            def fn(state: tuple, x: Value) -> Value:
+                L: list = [None] * frame.size
+                L[slot] = x
+                return code(state, None, L)
+            self._applied[op] = fn
+        return fn
+
+    def constant(self, name: str) -> Any:
+        return self.model.eval_in_state(name, None)
+
+    def has(self, name: str) -> bool:
+        return self.model.scope.lookup(name) is not None

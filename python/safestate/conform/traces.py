@@ -1,0 +1,80 @@
+"""Concrete traces: the cover's edge sequences turned into model states.
+
+A graph node stands for every state with the same VIEW; the concrete state reached
+along a path can differ from the node's representative in what the VIEW leaves out
+(e.g. last_reject_reason), and the C++ must match the concrete one.  So each step's
+state is the model successor of the previous concrete state under the edge's event
+(`ModelStepper.successor`), and its VIEW is checked to be the edge's target node.
+
+Every trace starts with the BFS-tree path to a node; the concrete states along
+tree paths are the same for every trace, so they are computed once per node.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from .cover import Trace
+from .events import Event
+from .graph import StateGraph
+from .model_step import ModelStepper
+
+
+@dataclass
+class Step:
+    event: Event
+    state: tuple
+    edge: int  # the graph edge this step takes (-1 when replaying a file)
+
+
+@dataclass
+class ConcreteTrace:
+    initial: tuple
+    steps: list[Step]
+
+
+class GraphMismatch(Exception):
+    """A step's successor is not in the node its edge points to (VIEW unsound?)."""
+
+
+class Materializer:
+    def __init__(self, stepper: ModelStepper, graph: StateGraph) -> None:
+        self.stepper = stepper
+        self.g = graph
+        self.parent = [-1] * len(graph.states)
+        self.tree: dict[int, tuple] = {}  # node -> concrete state at the end of its tree path
+        self._keys: dict[int, object] = {}
+
+    def set_tree(self, parent: list[int]) -> None:
+        self.parent = parent
+
+    def _check(self, state: tuple, node: int) -> None:
+        m = self.stepper.model
+        want = self._keys.get(node)
+        if want is None:
+            want = self._keys[node] = m.key(self.g.states[node])
+        if m.key(state) != want:
+            raise GraphMismatch(f"the successor is not the graph's node {node}")
+
+    def trace(self, t: Trace) -> ConcreteTrace:
+        g = self.g
+        cur = g.states[t.start]  # an initial state: the representative is the state itself
+        steps: list[Step] = []
+        on_tree = True
+        for e in t.edges:
+            ev, dst = g.events[e], g.dst[e]
+            on_tree = on_tree and self.parent[dst] == e
+            nxt = self.tree.get(dst) if on_tree else None
+            if nxt is None:
+                nxt = self.stepper.edge_successor(cur, ev)
+                self._check(nxt, dst)
+                if on_tree:
+                    self.tree[dst] = nxt
+            steps.append(Step(ev, nxt, e))
+            cur = nxt
+        return ConcreteTrace(g.states[t.start], steps)
+
+    def all(self, traces: list[Trace]) -> Iterator[ConcreteTrace]:
+        for t in traces:
+            yield self.trace(t)

@@ -1,0 +1,69 @@
+"""Trace generation: the cover takes every edge of a graph, from initial nodes, and
+is deterministic; the input mapping makes the C++ classify speeds as the model."""
+
+from safestate.conform.cover import Graph, UnreachableEdges, cover, steps
+
+import pytest
+
+
+def small_graph() -> Graph:
+    # 0 -> 1 -> 2 -> 0, a self-loop on 1, a branch 1 -> 3 into an absorbing node 3
+    # with a self-loop, parallel edges 2 -> 0, and 4 = a second initial node -> 2.
+    edges = [(0, 1), (1, 2), (2, 0), (1, 1), (1, 3), (3, 3), (2, 0), (4, 2), (0, 3)]
+    return Graph(5, [0, 4], [s for s, _ in edges], [d for _, d in edges])
+
+
+def check_cover(g: Graph, traces) -> None:
+    taken = set()
+    for t in traces:
+        assert t.start in g.initial
+        node = t.start
+        for e in t.edges:
+            assert g.src[e] == node, "each edge leaves where the previous one ended"
+            node = g.dst[e]
+            taken.add(e)
+    assert taken == set(range(len(g.src)))
+
+
+@pytest.mark.parametrize("max_len", [1, 2, 3, 1000])
+def test_trace_generation_covers_every_edge_of_a_small_graph(max_len):
+    g = small_graph()
+    traces = cover(g, max_len=max_len)
+    check_cover(g, traces)
+    assert steps(traces) >= len(g.src)
+
+
+def test_trace_generation_is_deterministic():
+    g = small_graph()
+    assert cover(g) == cover(g)
+
+
+def test_absorbing_node_is_entered_once_per_trace():
+    g = small_graph()
+    for t in cover(g):
+        assert sum(1 for e in t.edges if g.dst[e] == 3 and g.src[e] != 3) <= 1
+
+
+def test_unreachable_edges_are_an_error():
+    g = Graph(3, [0], [0, 2], [1, 1])  # node 2 is not reachable
+    with pytest.raises(UnreachableEdges):
+        cover(g)
+
+
+def test_speed_vectors_classify_as_the_model_levels():
+    from safestate import _core as core
+    from safestate.conform.inputs import POSE, speed_vectors
+
+    for limit in (250, 100):
+        cfg = core.Config(t1_speed_limit_mm_s=limit)
+        for level, qd in speed_vectors(core, cfg).items():
+            assert core.speed_level(POSE, qd, cfg) == level
+
+
+def test_diff_marks_the_differing_fields():
+    from safestate.conform.diff import report
+
+    text = report(3, "Cycle(...)", {"state": "IDLE", "jog_axis": 0}, {"state": "ARMING", "jog_axis": 0})
+    assert "step 3" in text and "state" in text.splitlines()[0]
+    marked = [line for line in text.splitlines()[1:] if line.startswith("!")]
+    assert len(marked) == 1 and "ARMING" in marked[0]
