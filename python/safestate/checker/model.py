@@ -311,9 +311,23 @@ def _predicate(model: Model, entry: ConfigEntry, what: str, action: bool = False
                        sym.defn.loc)
     code, size = model.compiler.compile_unit(A.Name(sym.defn.loc, entry.name), model.scope)
     loc = sym.defn.loc
+    if boolean and not info.vars and not info.action:
+        _constant_predicate(entry, what, code, size)
     if action:
         return Named(entry.name, loc, lambda s, t: code(s, t, [None] * size))
     return Named(entry.name, loc, lambda s, t: code(s, None, [None] * size))
+
+
+def _constant_predicate(entry: ConfigEntry, what: str, code: Any, size: int) -> None:
+    """TLC evaluates constant definitions at start-up; an invariant or constraint
+    that is then anything but TRUE is a cfg error (`TLC_CONFIG_ID_HAS_VALUE`).  An
+    evaluation error is left to be reported during the search, as TLC does."""
+    try:
+        v = code(None, None, [None] * size)
+    except EvalError:
+        return
+    if v is not True:
+        raise TlaError("config", f"The {what} of {entry.name} is equal to {fmt(v)}", entry.loc)
 
 
 # ---------------------------------------------------------------------- Init / Next
