@@ -123,8 +123,24 @@ class ActionCompiler:
                 i, rhs, loc = run[0]
                 k = self._assign(i, rhs, k, loc)
             if items:
-                k = self.action(items.pop(), env, k)
+                item = items.pop()
+                act = self.action(item, env, k)
+                # TLC (Tool.getNextStatesAllAssigned, getInitStates): once every variable
+                # has a value, the remaining conjuncts are evaluated as booleans, so a
+                # disjunction or \E among them yields one successor, not one per branch.
+                k = act if not items or _plain_guard(act) else self._all_assigned_guard(item, env, act, k)
         return k
+
+    def _all_assigned_guard(self, e: A.Expr, env: Env, act: Code, k: Cont) -> Code:
+        test = self.guard(e, env, k)
+
+        def conjunct(s: Any, t: Any, L: list) -> None:
+            for v in t:
+                if v is UNSET:
+                    act(s, t, L)
+                    return
+            test(s, t, L)
+        return conjunct
 
     def _plain_assignments(self, e: A.Expr, env: Env) -> list[tuple[int, Code, Loc]] | None:
         """``x' = e`` or ``UNCHANGED <<x, y>>`` as (variable, value code, loc) triples."""
@@ -379,6 +395,11 @@ class ActionCompiler:
         if named is not None:
             return self._unchanged_vars(named[0], named[1], depth + 1)
         return None
+
+
+def _plain_guard(code: Code) -> bool:
+    """Is `code` a boolean guard (made by `ActionCompiler.guard`), which never branches?"""
+    return getattr(code, "__name__", "") == "guard"
 
 
 def assign_run(run: list[tuple[int, Code, Loc]], k: Cont) -> Code:
