@@ -32,6 +32,7 @@ from typing import Any, Callable
 
 from ..tla.errors import EvalError, TlaError
 from .model import Model
+from .deep_stack import call_with_deep_stack
 
 PROGRESS_SECONDS = 5.0
 
@@ -203,6 +204,15 @@ class Explorer:
                                f"add a state constraint")
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
                                            len(self.states) - self.head, error=err)
+        except RecursionError:
+            # TLC: "This was a Java StackOverflowError" (a recursion that does not end).
+            msg = ("recursion too deep while computing states (TLC: StackOverflowError): a recursive "
+                   "operator or function probably does not terminate")
+            # TLC exits with 75 when this happens in Init, with 255 (a system error) after.
+            e = EvalError(msg) if not self.states else TlaError("stack overflow", msg)
+            self.outcome = CheckResult("error", len(self.states), self.generated,
+                                       self.max_level if self.generated else 0,
+                                       len(self.states) - self.head, error=e)
         except TlaError as e:
             # An evaluation error while computing Init or successors.
             self.outcome = CheckResult("error", len(self.states), self.generated,
@@ -310,7 +320,7 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
-    result = explorer.run()
+    result = call_with_deep_stack(explorer.run)
     result.seconds = time.monotonic() - start
     return result
 

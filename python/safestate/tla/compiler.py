@@ -437,7 +437,10 @@ class Compiler:
             raise TlaError("semantic", f"{d.name} is a function; apply it with {d.name}[...]", loc)
         info = self.def_info(sym)
         # Under a prime the body must be compiled with its variables primed.
-        if info.action or sym.scope.parameterised or env.init_mode or (env.primed and info.vars):
+        # In Init only bodies that read variables need the state being built (and a
+        # recursive one cannot be expanded).
+        init = env.init_mode and (info.vars or not sym.recursive)
+        if info.action or sym.scope.parameterised or init or (env.primed and info.vars):
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
         if d.fn_bounds is not None:
