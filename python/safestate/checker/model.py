@@ -232,8 +232,7 @@ def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str
     for name, (value, loc) in config.constants.items():
         sym = scope.lookup(name)
         if sym is None:
-            raise TlaError("config", f"In the configuration file, the identifier {name} does not appear in the "
-                           f"specification.", loc)
+            continue  # TLC ignores a value for a name the spec does not have (not so for `<-`)
         if isinstance(sym, ConstSym):
             values[name] = value
         else:
