@@ -11,15 +11,16 @@ import time
 import traceback
 
 from ..checker import exit_codes
+# Imported before any fork, so that every spec of a run is checked by the same code.
+from ..checker.explore import explore_states
+from ..checker.model import load_model
+from ..tla.errors import TlaError
 
 REFUSED = "refused"  # our checker says the construct is unsupported: acceptable, never a wrong number
 
 
 def summary_of(tla_path: str, cfg_path: str) -> dict:
     """Check in this process; the summary has TLC's fields plus `exit_code`."""
-    from ..checker.explore import explore_states
-    from ..checker.model import load_model
-    from ..tla.errors import TlaError
     try:
         r = explore_states(load_model(tla_path, cfg_path))
     except TlaError as e:
