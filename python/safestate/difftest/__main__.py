@@ -10,6 +10,7 @@ import sys
 import time
 
 from ..checker.tlc import tlc_jar
+from .generator import GRAMMARS
 from .runner import Runner, stderr_log
 
 
@@ -20,6 +21,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--seed", type=int, default=1, help="seed of the generator (default 1)")
     p.add_argument("--count", type=int, default=100, help="number of generated specs (default 100)")
     p.add_argument("--start", type=int, default=0, help="index of the first generated spec (default 0)")
+    p.add_argument("--grammar", type=int, choices=GRAMMARS, default=2,
+                   help="generator version (default 2; 1 reproduces specs of earlier runs)")
     p.add_argument("--specs", metavar="DIR", help="compare on every NAME.tla/NAME.cfg pair below DIR "
                    "instead of generated specs")
     p.add_argument("--out", metavar="DIR", help="write every (minimised) disagreement here")
@@ -38,11 +41,12 @@ def main(argv: list[str] | None = None) -> int:
         if args.specs:
             runner.run_dir(args.specs, args.progress)
         else:
-            runner.run_generated(args.seed, args.count, args.start, args.progress)
+            runner.run_generated(args.seed, args.count, args.start, args.progress, args.grammar)
     finally:
         runner.close()
     t = runner.tally
-    summary = {"tlc": jar is not None, "seed": None if args.specs else args.seed, "specs": t.specs,
+    summary = {"tlc": jar is not None, "seed": None if args.specs else args.seed,
+               "grammar": None if args.specs else args.grammar, "specs": t.specs,
                "agree": t.agree, "refused": t.refused, "disagree": t.disagree, "timeouts": t.timeouts,
                "crashes": t.crashes, "tlc_results": t.results, "seconds": round(time.monotonic() - start, 1),
                "disagreements": [{k: d[k] for k in ("name", "fields", "detail") if k in d}

@@ -30,8 +30,9 @@ class GeneratedSpec:
 
 
 class _Gen:
-    def __init__(self, rng: random.Random) -> None:
+    def __init__(self, rng: random.Random, grammar: int) -> None:
         self.r = rng
+        self.grammar = grammar
         self.vars: dict[str, str] = {}
         self.bound: list[tuple[str, str]] = []  # (name, type) of bound ints/strings in scope
         self.fresh = 0
@@ -235,10 +236,15 @@ class _Gen:
         return self.expr(ty, d)
 
 
-def generate(seed: int, index: int) -> GeneratedSpec:
-    """Spec number `index` of the run seeded with `seed` (reproducible on its own)."""
+GRAMMARS = (1, 2)
+
+
+def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
+    """Spec number `index` of the run seeded with `seed` (reproducible on its own).
+    Grammar 2 adds branching assignments (``x' = a \\/ x' = b``), \\E over strings
+    and \\E with two binders; grammar 1 specs are unchanged by it."""
     rng = random.Random(f"{seed}:{index}")
-    g = _Gen(rng)
+    g = _Gen(rng, grammar)
     name = f"G{seed}x{index}"
     nvars = rng.randint(1, 3)
     for i in range(nvars):
@@ -293,6 +299,14 @@ def generate(seed: int, index: int) -> GeneratedSpec:
             elif k == 5:
                 w = g.name("n")
                 body.append(f"/\\ LET {w} == {v} IN {w}' = {g.update(v, ty, 1)}")
+            elif g.grammar >= 2 and k == 6:
+                body.append(f"/\\ ({v}' = {g.update(v, ty, 1)} \\/ {v}' = {g.update(v, ty, 1)})")
+            elif g.grammar >= 2 and k == 7 and ty == STR:
+                w = g.name("s")
+                body.append(f"/\\ \\E {w} \\in {{\"c\", \"a\", \"b\"}} : {v}' = {w}")
+            elif g.grammar >= 2 and k == 7 and ty == INT:
+                w, w2 = g.name("i"), g.name("j")
+                body.append(f"/\\ \\E {w} \\in 0..1, {w2} \\in {{0, 2}} : {v}' = ({w} + {w2}) % {MOD}")
             else:
                 body.append(f"/\\ {v}' = {g.update(v, ty, 2)}")
         if "Moved" in helpers and rng.random() < 0.3:

@@ -36,9 +36,9 @@ class Tally:
 Source = Iterator[tuple[str, str, str]]  # (name, tla text or path, cfg text or path)
 
 
-def generated(seed: int, count: int, start: int = 0) -> Iterator[tuple[str, str, str]]:
+def generated(seed: int, count: int, start: int = 0, grammar: int = 2) -> Iterator[tuple[str, str, str]]:
     for i in range(start, start + count):
-        g = generate(seed, i)
+        g = generate(seed, i, grammar)
         yield g.name, g.tla, g.cfg
 
 
@@ -153,9 +153,9 @@ class Runner:
         return out
 
     # ------------------------------------------------------------ loops
-    def run_generated(self, seed: int, count: int, start: int, every: int) -> None:
+    def run_generated(self, seed: int, count: int, start: int, every: int, grammar: int = 2) -> None:
         t0 = time.monotonic()
-        for i, (name, tla, cfg) in enumerate(generated(seed, count, start), 1):
+        for i, (name, tla, cfg) in enumerate(generated(seed, count, start, grammar), 1):
             tp, cp = self._write(name, tla, cfg)
             self.check(name, tp, cp, (tla, cfg))
             shutil.rmtree(os.path.dirname(tp), ignore_errors=True)
