@@ -20,6 +20,7 @@ BY_KIND = {
     "config": ERROR_CONFIG_PARSE,
     "unsupported": ERROR_CONFIG_PARSE,
     "eval": FAILURE_SPEC_EVAL,
+    "invariant eval": FAILURE_SAFETY_EVAL,
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,
     "memory": ERROR_SYSTEM,

@@ -157,7 +157,7 @@ class Explorer:
             # As TLC's queue: the state being expanded (`self.head`) has been dequeued,
             # and a new successor violating an invariant is never enqueued.
             left -= 1
-            if result == "safety failure" and extra is None:
+            if result in ("safety failure", "error") and extra is None:
                 left -= 1
         self.outcome = CheckResult(result, len(self.states), self.generated,
                                    self.max_level if self.generated else 0,
@@ -243,13 +243,29 @@ class Explorer:
                 new = False
         if new:
             for inv in m.invariants:
-                if not m.holds(inv, st):
+                if not self._invariant_holds(inv, st, idx, -1, -1, L):
                     if idx >= 0:
                         self._finish("safety failure", inv.name, idx, initial=True)
                     self.outcome = CheckResult("safety failure", len(self.states), self.generated, 1,
                                                len(self.states), inv.name, [Step(st, "Init", {})],
                                                initial_violation=True)
                     raise _Stop()
+
+    def _invariant_holds(self, inv: Any, st: tuple, idx: int, parent: int, leaf: int, L: list) -> bool:
+        """`inv` on the new state `st` (stored at `idx`, or a successor of `parent` that
+        a constraint excluded).  An evaluation error (a failed Assert too) is TLC's
+        "Evaluating invariant Inv failed" (exit 76), with the trace up to `st`."""
+        try:
+            return self.m.holds(inv, st)
+        except TlaError as e:
+            if not (isinstance(e, EvalError) or e.kind in ("eval", "assert")):
+                raise
+            err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
+            if idx >= 0:
+                self._finish("error", None, idx, error=err, initial=parent < 0)
+            lf = self.m.leaves[leaf]
+            self._finish("error", None, parent, Step(st, lf.name, self.m.leaf_params(leaf, L)), error=err)
+            raise  # not reached: _finish raises _Stop
 
     def _expand_all(self) -> None:
         m = self.m
@@ -291,7 +307,7 @@ class Explorer:
                 self.edges.append(Edge(i, idx, m.leaves[leaf].name, m.leaf_params(leaf, L)))
             if new:
                 for inv in invariants:
-                    if not holds(inv, st):
+                    if not self._invariant_holds(inv, st, idx, i, leaf, L):
                         if idx >= 0:
                             self._finish("safety failure", inv.name, idx)
                         lf = m.leaves[leaf]
