@@ -160,11 +160,47 @@ class ActionCompiler:
 
     def a_Quant(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
         if e.kind != "\\E":
-            if self.c.info(e.body, env).action:
-                raise UnsupportedError("\\A over an action (a conjunction of actions) is not supported", e.loc)
-            return None
+            return self._forall(e, env, k)
         inner, binds = self.c.bind_bounds(e.bounds, env)
         return _exists(binds, self.action(e.body, inner, k))
+
+    def _forall(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
+        """``\\A x \\in S : A`` in an action is the conjunction of A for each x, as in
+        TLC (Tool.getNextStates, OPCODE_bf): A with the first binding, then the others
+        as pending conjuncts, which TLC's list takes last-first (x1, xn, ..., x2);
+        pending ones are booleans once every variable is assigned."""
+        inner, binds = self.c.bind_bounds(e.bounds, env)
+        slot = env.frame.alloc()
+
+        def after(s: Any, t: Any, L: list) -> None:
+            order, pos = L[slot]
+            if pos + 1 >= len(order):
+                k(s, t, L)
+                return
+            L[slot] = (order, pos + 1)
+            _bind_combo(L, binds, order[pos + 1])
+            if UNSET in t:
+                body(s, t, L)
+            else:
+                test(s, t, L)
+            L[slot] = (order, pos)
+            _bind_combo(L, binds, order[pos])
+        body = self.action(e.body, inner, after)
+        if _plain_guard(body):
+            return None  # a plain boolean \A: the same successors, evaluated once
+        test = self.guard(e.body, inner, after)
+
+        def forall(s: Any, t: Any, L: list) -> None:
+            combos = _combos(binds, s, t, L)
+            if not combos:
+                k(s, t, L)
+                return
+            saved = L[slot]
+            L[slot] = ([combos[0]] + combos[:0:-1], 0)
+            _bind_combo(L, binds, combos[0])
+            body(s, t, L)
+            L[slot] = saved
+        return forall
 
     def a_If(self, e: A.If, env: Env, k: Cont) -> Code | None:
         c = self.c.expr(e.cond, env)
@@ -485,6 +521,18 @@ def _exists(binds: list, body: Code) -> Code:
                 assign_binder(L, slots, is_tuple, v, sloc)
             body(s, t, L)
     return exists_n
+
+
+def _combos(binds: list, s: Any, t: Any, L: list) -> list[tuple]:
+    """Every binding of `binds` in TLC's ContextEnumerator order (first binder fastest)."""
+    elems = [list(_enum_checked(b[0](s, t, L), b[3])) for b in binds]
+    return [combo[::-1] for combo in itertools.product(*elems[::-1])]
+
+
+def _bind_combo(L: list, binds: list, combo: tuple) -> None:
+    from .compiler import _assign as assign_binder
+    for (_, slots, is_tuple, sloc), v in zip(binds, combo):
+        assign_binder(L, slots, is_tuple, v, sloc)
 
 
 def _let(resets: list[int], body: Code) -> Code:
