@@ -72,6 +72,10 @@ class CheckResult:
     warnings: list[str] = field(default_factory=list)
 
 
+class _Found(Exception):
+    """Ends the replay of a state's successors in `Explorer._step_params`."""
+
+
 class _Stop(Exception):
     """Ends the search: a violation, a deadlock or an error was recorded."""
 
@@ -175,19 +179,25 @@ class Explorer:
         steps = [Step(self.states[path[0]], "Init", {})]
         for a, b in zip(path, path[1:]):
             want, leaf = self.states[b], self.leaf[b]
-            action, params = self.m.leaves[leaf].name, {}
-            for tr_leaf, tr_params, st in self._successors_with_leaf(self.states[a]):
-                if tr_leaf == leaf and st == want:
-                    params = tr_params
-                    break
-            steps.append(Step(want, action, params))
+            steps.append(Step(want, self.m.leaves[leaf].name, self._step_params(self.states[a], leaf, want)))
         return steps
 
-    def _successors_with_leaf(self, state: tuple) -> list[tuple[int, dict, tuple]]:
-        out = []
+    def _step_params(self, state: tuple, leaf: int, want: tuple) -> dict:
+        """The parameters of the step `state` -> `want` by action `leaf`: the successors
+        are generated again up to that step only, so an action after it that fails to
+        evaluate (TLC never got there) cannot turn a violation into an error."""
         m = self.m
-        m.run_next(state, lambda st, leaf, L: out.append((leaf, m.leaf_params(leaf, L), st)))
-        return out
+        found: list[dict] = []
+
+        def match(st: tuple, lf: int, L: list) -> None:
+            if lf == leaf and st == want:
+                found.append(m.leaf_params(lf, L))
+                raise _Found()
+        try:
+            m.run_next(state, match)
+        except _Found:
+            return found[0]
+        return {}
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:

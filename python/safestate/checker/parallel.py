@@ -97,8 +97,7 @@ class ParallelExplorer(Explorer):
                         if idx >= 0:
                             self._finish("safety failure", inv.name, idx)
                         # A constraint-violating successor (not stored): recover its action parameters.
-                        params = next((pr for lf, pr, s in self._successors_with_leaf(cur)
-                                       if lf == leaf and s == st), {})
+                        params = self._step_params(cur, leaf, st)
                         self._finish("safety failure", inv.name, i, Step(st, m.leaves[leaf].name, params))
         if not successors and m.check_deadlock:
             self._finish("deadlock failure", None, i)
