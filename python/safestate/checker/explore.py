@@ -270,9 +270,15 @@ class Explorer:
         except TlaError as e:
             if not (isinstance(e, EvalError) or e.kind in ("eval", "assert")):
                 raise
+            if parent < 0:
+                # In an initial state TLC reports the error itself (exit 75), with statistics.
+                err = TlaError("eval", f"{e.message}\nWhile working on the initial state", e.loc)
+                self.outcome = CheckResult("error", len(self.states), self.generated, 1,
+                                           len(self.states) - self.head, None, [Step(st, "Init", {})], err)
+                raise _Stop()
             err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
             if idx >= 0:
-                self._finish("error", None, idx, error=err, initial=parent < 0)
+                self._finish("error", None, idx, error=err)
             lf = self.m.leaves[leaf]
             self._finish("error", None, parent, Step(st, lf.name, self.m.leaf_params(leaf, L)), error=err)
             raise  # not reached: _finish raises _Stop
