@@ -18,6 +18,7 @@ BY_KIND = {
     "syntax": ERROR_SPEC_PARSE,
     "semantic": ERROR_SPEC_PARSE,
     "config": ERROR_CONFIG_PARSE,
+    "cfg syntax": ERROR,
     "unsupported": ERROR_CONFIG_PARSE,
     "eval": FAILURE_SPEC_EVAL,
     "invariant eval": FAILURE_SAFETY_EVAL,

@@ -199,7 +199,13 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
     if not os.path.exists(cfg_path):
         raise TlaError("config", f"configuration file {os.path.basename(cfg_path)} not found (give one with "
                        f"--config)", Loc(cfg_path, 0, 0))
-    config = parse_config(cfg_path)
+    try:
+        config = parse_config(cfg_path)
+    except TlaError as e:
+        # TLC: a cfg that does not parse is a ConfigFileException, exit 255 (not 151).
+        if e.kind != "config":
+            raise
+        raise TlaError("cfg syntax", e.message, e.loc) from None
     register_token_order(config.tokens)
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
