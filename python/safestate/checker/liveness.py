@@ -208,12 +208,12 @@ class LivenessChecker:
                     if off is not None:
                         needs.append(("state", [v for v in part if not self.enabled(fi, v)]))
                     elif taken[fi] is not None:
-                        needs.append(("step", taken[fi]))
+                        needs.append(("step", fi))
                     else:
                         fair = False
                         break
                 elif taken[fi] is not None and any(self.enabled(fi, v) for v in part):
-                    needs.append(("step", taken[fi]))
+                    needs.append(("step", fi))
             if not fair:
                 continue
             if visit is not None:
@@ -237,8 +237,12 @@ class LivenessChecker:
                     continue
                 path = self._bfs_path(cur, set(what), inside)
             else:
-                u, w = what
-                path = self._bfs_path(cur, {u}, inside) + [w]
+                taken = self.fairness[what].taken
+                states = self.states
+                hops = list(zip([entry] + cycle, cycle))
+                if any(taken(states[u], states[w]) for u, w in hops):
+                    continue
+                path = self._bfs_path(cur, None, inside, lambda u, w: taken(states[u], states[w]))
             cycle.extend(path)
             on_cycle.update(path)
             cur = cycle[-1] if cycle else cur
@@ -247,23 +251,29 @@ class LivenessChecker:
         full = cycle + self._bfs_path(cur, {entry}, inside)
         return full[:-1]  # it ends with `entry`, where the lasso loops back to
 
-    def _bfs_path(self, src: int, goals: set[int], inside: set[int]) -> list[int]:
-        """Shortest path src -> a goal inside the component, without src itself."""
-        if src in goals:
+    def _bfs_path(self, src: int, goals: set[int] | None, inside: set[int],
+                  goal_step: Callable[[int, int], bool] | None = None) -> list[int]:
+        """Shortest path inside the component from src to a state of `goals` (or
+        through a step satisfying `goal_step`), without src itself."""
+        if goals is not None and src in goals:
             return []
         prev = {src: -1}
         dq = deque([src])
         while dq:
             v = dq.popleft()
             for w in self.g.succ(v):
-                if w in inside and w not in prev:
+                if w not in inside:
+                    continue
+                if (goals is not None and w in goals and w not in prev) or (goal_step and goal_step(v, w)):
+                    path = [w]
+                    u = v
+                    while u != src:
+                        path.append(u)
+                        u = prev[u]
+                    path.reverse()
+                    return path
+                if w not in prev:
                     prev[w] = v
-                    if w in goals:
-                        path = [w]
-                        while prev[path[-1]] != src:
-                            path.append(prev[path[-1]])
-                        path.reverse()
-                        return path
                     dq.append(w)
         raise TlaError("internal", "liveness: no path inside a strongly connected component")
 
