@@ -155,8 +155,8 @@ class TemporalCompiler:
     # ------------------------------------------------------------ leaves
     def _fair(self, e: A.Expr, scope: Scope, binds: dict) -> Fairness:
         if not isinstance(e, A.Fairness):
-            raise UnsupportedError("only WF_v(A), SF_v(A), their conjunctions and \\A over them are supported "
-                                   "as temporal conjuncts of a specification", e.loc)
+            raise UnsupportedError("this temporal conjunct of the specification is not supported: only "
+                                   "WF_v(A), SF_v(A), their conjunctions and \\A over them are", e.loc)
         step = A.StepAction(e.loc, e.action, e.sub, False)
         return Fairness(e.kind, self.pred(A.Unary(e.loc, "ENABLED", step), scope, binds),
                         self.pred(step, scope, binds), e.loc)
