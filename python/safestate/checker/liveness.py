@@ -104,7 +104,7 @@ class LivenessChecker:
         for v in tail:
             in_tail[v] = 1
         best: tuple[int, int, list[int], list] | None = None
-        for comp in strongly_connected(tail, self.g.succ, in_tail.__getitem__):
+        for comp in strongly_connected(tail, self.g.succ, in_tail.__getitem__, n):
             found = self._fair_part(comp, visit)
             if found is None:
                 continue
@@ -198,20 +198,18 @@ class LivenessChecker:
             if bad:
                 rest = [v for v in part if v not in bad]
                 keep = set(rest)
-                work.extend(strongly_connected(rest, self.g.succ, keep.__contains__))
+                work.extend(strongly_connected(rest, self.g.succ, keep.__contains__, self.g.n))
                 continue
             needs: list = []
             fair = True
             for fi, f in enumerate(self.fairness):
                 if f.kind == "WF":
-                    off = next((v for v in part if not self.enabled(fi, v)), None)
-                    if off is not None:
-                        needs.append(("state", [v for v in part if not self.enabled(fi, v)]))
-                    elif taken[fi] is not None:
-                        needs.append(("step", fi))
-                    else:
+                    # Met by a step taking A or a state where A is disabled.  Taking A is
+                    # checked first: it is cheaper than ENABLED.
+                    if taken[fi] is None and all(self.enabled(fi, v) for v in part):
                         fair = False
                         break
+                    needs.append(("wf", fi))
                 elif taken[fi] is not None and any(self.enabled(fi, v) for v in part):
                     needs.append(("step", fi))
             if not fair:
@@ -226,54 +224,79 @@ class LivenessChecker:
 
     def _cycle(self, entry: int, part: list[int], needs: list, visit: bytearray | None) -> list[int]:
         """States after `entry` on a cycle through `needs` inside `part`, ending just
-        before `entry` again; [] when stuttering in `entry` meets every need."""
+        before `entry` again; [] when stuttering in `entry` meets every need.  Greedy:
+        go to the nearest place that meets a need (the most needs among equals)."""
         inside = set(part)
+        open_needs = [nd for nd in needs if not self._meets(nd, None, entry)]
         cycle: list[int] = []
-        on_cycle = {entry}
         cur = entry
-        for kind, what in sorted(needs, key=lambda nd: nd[0] == "state"):
-            if kind == "state":
-                if on_cycle.intersection(what):
-                    continue
-                path = self._bfs_path(cur, set(what), inside)
-            else:
-                taken = self.fairness[what].taken
-                states = self.states
-                hops = list(zip([entry] + cycle, cycle))
-                if any(taken(states[u], states[w]) for u, w in hops):
-                    continue
-                path = self._bfs_path(cur, None, inside, lambda u, w: taken(states[u], states[w]))
+        while open_needs:
+            path = self._nearest(cur, inside, open_needs)
+            for w in path:
+                open_needs = [nd for nd in open_needs if not self._meets(nd, cur, w)]
+                cur = w
             cycle.extend(path)
-            on_cycle.update(path)
-            cur = cycle[-1] if cycle else cur
         if not cycle:
             return []
         full = cycle + self._bfs_path(cur, {entry}, inside)
         return full[:-1]  # it ends with `entry`, where the lasso loops back to
 
-    def _bfs_path(self, src: int, goals: set[int] | None, inside: set[int],
-                  goal_step: Callable[[int, int], bool] | None = None) -> list[int]:
-        """Shortest path inside the component from src to a state of `goals` (or
-        through a step satisfying `goal_step`), without src itself."""
-        if goals is not None and src in goals:
+    def _meets(self, need: tuple, u: int | None, w: int) -> bool:
+        """Does arriving in state w (by the step u -> w, unless u is None) meet `need`?"""
+        kind, what = need
+        if kind == "state":
+            return w in what
+        if kind == "wf" and not self.enabled(what, w):
+            return True
+        return u is not None and self.fairness[what].taken(self.states[u], self.states[w])
+
+    def _nearest(self, src: int, inside: set[int], needs: list) -> list[int]:
+        """The shortest path from src (without it) whose last state or step meets a
+        need; among the shortest, one that meets the most."""
+        prev = {src: -1}
+        level = [src]
+        while level:
+            best: tuple[int, int] | None = None
+            best_score = 0
+            nxt: list[int] = []
+            for v in level:
+                for w in self.g.succ(v):
+                    if w not in inside:
+                        continue
+                    score = sum(1 for nd in needs if self._meets(nd, v, w))
+                    if score > best_score:
+                        best, best_score = (v, w), score
+                    if w not in prev:
+                        prev[w] = v
+                        nxt.append(w)
+            if best is not None:
+                v, w = best
+                path = [w]
+                while v != src:
+                    path.append(v)
+                    v = prev[v]
+                path.reverse()
+                return path
+            level = nxt
+        raise TlaError("internal", "liveness: a need of a fair component is unreachable inside it")
+
+    def _bfs_path(self, src: int, goals: set[int], inside: set[int]) -> list[int]:
+        """Shortest path inside the component from src to a state of `goals`, without src."""
+        if src in goals:
             return []
         prev = {src: -1}
         dq = deque([src])
         while dq:
             v = dq.popleft()
             for w in self.g.succ(v):
-                if w not in inside:
-                    continue
-                if (goals is not None and w in goals and w not in prev) or (goal_step and goal_step(v, w)):
-                    path = [w]
-                    u = v
-                    while u != src:
-                        path.append(u)
-                        u = prev[u]
-                    path.reverse()
-                    return path
-                if w not in prev:
+                if w in inside and w not in prev:
                     prev[w] = v
+                    if w in goals:
+                        path = [w]
+                        while prev[path[-1]] != src:
+                            path.append(prev[path[-1]])
+                        path.reverse()
+                        return path
                     dq.append(w)
         raise TlaError("internal", "liveness: no path inside a strongly connected component")
 

@@ -8,22 +8,23 @@ from typing import Callable, Iterable
 
 
 def strongly_connected(nodes: Iterable[int], succ: Callable[[int], Iterable[int]],
-                       member: Callable[[int], bool]) -> list[list[int]]:
-    """The SCCs of the subgraph induced by `nodes` (`member(v)` tells whether v is one
-    of them), in Tarjan's order (a component before the components that reach it)."""
-    index: dict[int, int] = {}
-    low: dict[int, int] = {}
-    on_stack: set[int] = set()
+                       member: Callable[[int], bool], n: int) -> list[list[int]]:
+    """The SCCs of the subgraph induced by `nodes` (ids below `n`; `member(v)` tells
+    whether v is one of them), in Tarjan's order (a component before the components
+    that reach it)."""
+    index = array("q", [-1]) * n
+    low = array("q", [0]) * n
+    on_stack = bytearray(n)
     stack = array("q")
     out: list[list[int]] = []
     counter = 0
     for root in nodes:
-        if root in index:
+        if index[root] >= 0:
             continue
         index[root] = low[root] = counter
         counter += 1
         stack.append(root)
-        on_stack.add(root)
+        on_stack[root] = 1
         work = [(root, iter(succ(root)))]
         while work:
             v, it = work[-1]
@@ -31,15 +32,15 @@ def strongly_connected(nodes: Iterable[int], succ: Callable[[int], Iterable[int]
             for w in it:
                 if not member(w):
                     continue
-                if w not in index:
+                if index[w] < 0:
                     index[w] = low[w] = counter
                     counter += 1
                     stack.append(w)
-                    on_stack.add(w)
+                    on_stack[w] = 1
                     work.append((w, iter(succ(w))))
                     pushed = True
                     break
-                if w in on_stack and index[w] < low[v]:
+                if on_stack[w] and index[w] < low[v]:
                     low[v] = index[w]
             if pushed:
                 continue
@@ -52,7 +53,7 @@ def strongly_connected(nodes: Iterable[int], succ: Callable[[int], Iterable[int]
                 comp = []
                 while True:
                     w = stack.pop()
-                    on_stack.discard(w)
+                    on_stack[w] = 0
                     comp.append(w)
                     if w == v:
                         break
