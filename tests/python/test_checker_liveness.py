@@ -67,6 +67,9 @@ def test_liveness_verdict_counts_and_exit_code_match_tlc(name: str) -> None:
     model, r = _check(name)
     want = EXPECTED[name]
     for f in FIELDS:
+        # TLC prints no statistics after a violation in an initial state.
+        if want[f] is None and f != "violated":
+            continue
         assert getattr(r, f) == want[f], f"{f}: ours {getattr(r, f)!r}, TLC {want[f]!r}"
     assert exit_codes.BY_RESULT[r.result] == want["exit_code"]
     if "lasso" in want:
