@@ -199,3 +199,56 @@ def test_liveness_expected_results_are_tlcs(name: str) -> None:
     assert tlc.exit_code == want["exit_code"]
     # TLC's lasso itself varies between runs (MutexWF: 5 or 6 states); only its presence is stable.
     assert (tlc.lasso is None) == ("lasso" not in want)
+
+
+def _random_spec(seed: int) -> tuple[str, str]:
+    """A small random spec: x in 0..K-1 moved by random actions, a bit y toggled,
+    random WF/SF and one random liveness property."""
+    import random
+    r = random.Random(seed)
+    k = r.randint(3, 6)
+    names, acts = [], []
+    for i in range(r.randint(2, 5)):
+        moves = " \\/ ".join(f"(x = {r.randrange(k)} /\\ x' = {r.randrange(k)})" for _ in range(r.randint(1, 3)))
+        acts.append(f"A{i} == ({moves}) /\\ y' = {'1 - y' if r.random() < 0.3 else 'y'}")
+        names.append(f"A{i}")
+    if r.random() < 0.5:
+        acts.append("Tog == y' = 1 - y /\\ x' = x")
+        names.append("Tog")
+    fair = [f"{'WF' if c < 0.35 else 'SF'}_vars({n})" for n in names if (c := r.random()) < 0.6]
+    if r.random() < 0.2:
+        fair.append("WF_vars(Next)")
+    some = "{" + ", ".join(map(str, sorted(r.sample(range(k), r.randint(1, k - 1))))) + "}"
+    c, d = r.randrange(k), r.randrange(k)
+    prop = r.choice([f"<>(x = {c})", f"(x = {c}) ~> (x = {d})", f"[]<>(x \\in {some})", f"<>[](x \\in {some})",
+                     f"(y = 1) ~> (x \\in {some})", f"[]<>(y = 0 /\\ x = {c})"])
+    init = r.choice(["x = 0 /\\ y = 0", "x \\in {0, 1} /\\ y = 0", "x = 0 /\\ y \\in {0, 1}"])
+    nxt = " \\/ ".join(names)
+    spec = " /\\ ".join(["Init", "[][Next]_vars", *fair])
+    tla = "\n".join([f"---- MODULE R{seed} ----", "EXTENDS Naturals", "VARIABLES x, y", "vars == <<x, y>>",
+                     f"Init == {init}", *acts, f"Next == {nxt}", f"Spec == {spec}", f"Prop == {prop}", "===="])
+    return tla + "\n", "SPECIFICATION Spec\nPROPERTY Prop\nCHECK_DEADLOCK FALSE\n"
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_liveness_counterexamples_of_random_specs_are_fair_violating_behaviours(tla_dir, seed: int) -> None:
+    tla, cfg = _random_spec(seed)
+    model = load_model(str(tla_dir(f"R{seed}", tla, cfg)))
+    r = explore_states(model)
+    assert r.result in ("success", "liveness failure")
+    if r.result == "liveness failure":
+        _holds_on_lasso(model, r)
+
+
+@pytest.mark.skipif(not os.path.isfile(os.environ.get("TLA2TOOLS_JAR", "")), reason="TLA2TOOLS_JAR not set")
+@pytest.mark.parametrize("seed", range(40))
+def test_liveness_verdicts_on_random_specs_equal_tlcs(tla_dir, seed: int) -> None:
+    from safestate.checker.tlc import run_tlc
+    tla, cfg = _random_spec(seed)
+    path = tla_dir(f"R{seed}", tla, cfg)
+    r = explore_states(load_model(str(path)))
+    tlc = run_tlc(os.environ["TLA2TOOLS_JAR"], str(path), str(path.with_suffix(".cfg")))
+    for f in FIELDS:
+        assert getattr(r, f) == getattr(tlc, f), f
+    if tlc.lasso is not None:
+        assert r.trace is not None and len(r.trace) <= tlc.lasso["length"]

@@ -22,9 +22,10 @@ an untaken SF action is enabled are removed and the rest split again, as in
 Emerson-Lei's algorithm).  "Taken" means an ``<<A>>_v`` step between two states of
 the component.
 
-The counterexample is a lasso: the shortest prefix to the component (0-1 BFS over
-the product), then a cycle inside it through the steps and states fairness needs
-(or stuttering in one state when it needs none).
+The counterexample is a lasso: the shortest prefix to a fair component (0-1 BFS
+over the product), then a cycle inside it through the steps and states fairness
+needs (or stuttering in one state when it needs none); among the fair components
+the one giving the fewest states is taken.
 """
 
 from __future__ import annotations
@@ -103,20 +104,23 @@ class LivenessChecker:
         in_tail = bytearray(n)
         for v in tail:
             in_tail[v] = 1
-        best: tuple[int, int, list[int], list] | None = None
+        best: tuple[int, int, list[int]] | None = None
         for comp in strongly_connected(tail, self.g.succ, in_tail.__getitem__, n):
             found = self._fair_part(comp, visit)
             if found is None:
                 continue
             part, needs = found
             entry = min(part, key=lambda v: dist[2 * v + 1])
-            if best is None or dist[2 * entry + 1] < best[0]:
-                best = (dist[2 * entry + 1], entry, part, needs)
+            if best is not None and dist[2 * entry + 1] >= best[0]:
+                continue  # its lasso cannot be shorter
+            cycle = self._cycle(entry, part, needs)
+            length = dist[2 * entry + 1] + len(cycle)
+            if best is None or length < best[0]:
+                best = (length, entry, cycle)
         if best is None:
             return None
-        _, entry, part, needs = best
+        _, entry, cycle = best
         prefix = self._path_to(2 * entry + 1, parent)
-        cycle = self._cycle(entry, part, needs, visit)
         if not cycle:
             return Lasso(prefix, len(prefix) - 1, True)
         return Lasso(prefix + cycle, len(prefix) - 1, False)
@@ -222,7 +226,7 @@ class LivenessChecker:
             return part, needs
         return None
 
-    def _cycle(self, entry: int, part: list[int], needs: list, visit: bytearray | None) -> list[int]:
+    def _cycle(self, entry: int, part: list[int], needs: list) -> list[int]:
         """States after `entry` on a cycle through `needs` inside `part`, ending just
         before `entry` again; [] when stuttering in `entry` meets every need.  Greedy:
         go to the nearest place that meets a need (the most needs among equals)."""
