@@ -252,3 +252,16 @@ def test_liveness_verdicts_on_random_specs_equal_tlcs(tla_dir, seed: int) -> Non
         assert getattr(r, f) == getattr(tlc, f), f
     if tlc.lasso is not None:
         assert r.trace is not None and len(r.trace) <= tlc.lasso["length"]
+
+
+def test_liveness_enabled_evaluations_do_not_keep_their_frames() -> None:
+    # ENABLED stops at the first successor by raising one shared exception; its
+    # traceback must not grow with every evaluation (it kept all frames alive).
+    from safestate.tla import actions
+    model = load_model(str(LIVENESS / "MutexWF.tla"))
+    state = model.initial_states()[0]
+    for f in model.fairness:
+        for _ in range(3):
+            f.enabled(state)
+    assert any(f.enabled(model.successors(state)[0].state) for f in model.fairness)
+    assert actions._FOUND.__traceback__ is None

@@ -57,14 +57,21 @@ class StateGraph:
 
     def __init__(self, n: int, src: array, dst: array) -> None:
         self.n = n
-        pairs = sorted({s * n + d for s, d in zip(src, dst) if s != d})
-        self.offsets = array("q", [0] * (n + 1))
-        self.targets = array("i", [0] * len(pairs))
-        for i, key in enumerate(pairs):
-            self.offsets[key // n + 1] += 1
-            self.targets[i] = key % n
+        self.offsets = array("q", [0]) * (n + 1)
+        self.targets = array("i")
+        # The search expands states in order, so the steps come grouped by source.
+        i, m = 0, len(src)
         for v in range(n):
-            self.offsets[v + 1] += self.offsets[v]
+            row: set[int] = set()
+            while i < m and src[i] == v:
+                w = dst[i]
+                i += 1
+                if w != v and w not in row:
+                    row.add(w)
+                    self.targets.append(w)
+            self.offsets[v + 1] = len(self.targets)
+        if i != m:
+            raise TlaError("internal", "liveness: the steps of the state graph are not grouped by source")
 
     def succ(self, v: int) -> Iterable[int]:
         return self.targets[self.offsets[v]:self.offsets[v + 1]]
