@@ -79,7 +79,8 @@ class StateGraph:
 
 class LivenessChecker:
     def __init__(self, graph: StateGraph, states: list[tuple], initial: list[int],
-                 fairness: list[Fairness]) -> None:
+                 fairness: list[Fairness], check_memory: Callable[[], None]) -> None:
+        self.check_memory = check_memory
         self.g = graph
         self.states = states
         self.initial = initial
@@ -107,12 +108,15 @@ class LivenessChecker:
         n = self.g.n
         stay, start, visit = self._masks(ob)
         dist, parent = self._product_bfs(ob, stay, start)
+        self.check_memory()
         tail = [v for v in sorted(range(n), key=lambda v: dist[2 * v + 1]) if dist[2 * v + 1] >= 0]
         in_tail = bytearray(n)
         for v in tail:
             in_tail[v] = 1
         best: tuple[int, int, list[int]] | None = None
-        for comp in strongly_connected(tail, self.g.succ, in_tail.__getitem__, n):
+        comps = strongly_connected(tail, self.g.succ, in_tail.__getitem__, n)
+        self.check_memory()
+        for comp in comps:
             found = self._fair_part(comp, visit)
             if found is None:
                 continue
@@ -316,7 +320,7 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
                    obligations: list[Obligation],
                    check_memory: Callable[[], None]) -> tuple[Obligation, Lasso] | None:
     """The first liveness obligation (in .cfg order) with a fair counterexample."""
-    checker = LivenessChecker(graph, states, initial, fairness)
+    checker = LivenessChecker(graph, states, initial, fairness, check_memory)
     for ob in obligations:
         check_memory()
         lasso = checker.counterexample(ob)
