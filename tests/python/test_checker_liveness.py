@@ -58,7 +58,14 @@ def _holds_on_lasso(model: Model, r: CheckResult) -> None:
             return not any(p(s) for s in cycle)
         if ob.kind == "stable":
             return not all(p(s) for s in cycle)
-        return any(p(s) and not any(q(x) for x in states[i:] + cycle) for i, s in enumerate(states))
+        if ob.kind == "leadsto":
+            return any(p(s) and not any(q(x) for x in states[i:] + cycle) for i, s in enumerate(states))
+        never_taken = not any(ob.forbid(s, t) for s, t in steps)
+        if ob.kind == "wf":
+            return never_taken and all(p(s) for s in cycle)
+        if ob.kind == "sf":
+            return never_taken and any(p(s) for s in cycle)
+        return never_taken
     assert any(violated(ob) for ob in model.liveness if ob.name == r.violated)
 
 
@@ -73,6 +80,7 @@ def test_liveness_verdict_counts_and_exit_code_match_tlc(name: str) -> None:
         assert getattr(r, f) == want[f], f"{f}: ours {getattr(r, f)!r}, TLC {want[f]!r}"
     assert exit_codes.BY_RESULT[r.result] == want["exit_code"]
     if "lasso" in want:
+        assert r.violated_properties == want["violated_properties"]
         _holds_on_lasso(model, r)
         assert r.trace is not None and len(r.trace) <= want["lasso"]["length"]
 
@@ -107,6 +115,8 @@ def test_liveness_text_output_uses_tlc_words() -> None:
     assert "Back to state " in p.stdout and "Traceback" not in p.stderr
     p = run_safestate("check", str(LIVENESS / "MutexNoFair.tla"))
     assert p.returncode == 13 and "State 2: Stuttering" in p.stdout
+    p = run_safestate("check", str(LIVENESS / "MinuteClockStops.tla"))
+    assert "Error: Temporal properties HourSpec and TicksForever were violated." in p.stdout
     p = run_safestate("check", str(LIVENESS / "WrapAround.tla"))
     assert p.returncode == 13 and "Error: Action property Increasing is violated." in p.stdout
 
@@ -117,7 +127,7 @@ def test_liveness_json_and_itf_carry_the_lasso(tmp_path: Path) -> None:
     out = json.loads(p.stdout)
     assert p.returncode == 13 and out["result"] == "liveness failure"
     assert out["properties"] == {"names": ["InfinitelyOn", "EventuallyAlwaysOn"], "result": "violated",
-                                 "violated": "EventuallyAlwaysOn",
+                                 "violated": ["EventuallyAlwaysOn"],
                                  "lasso": {"length": 2, "loop": 0, "stuttering": False}}
     trace = json.loads(itf.read_text())
     assert trace["loop"] == 0 and [s["on"] for s in trace["states"]] == [False, True]
@@ -148,6 +158,8 @@ def test_liveness_parallel_merge_records_the_same_graph(monkeypatch: pytest.Monk
 
 UNSUPPORTED = {
     "nested": ("Live == [](x = 0 => <>[](x = 1))", "PROPERTY Live", 8, 9),
+    "exists": ("Live == \\E v \\in {0, 1} : <>(x = v)", "PROPERTY Live", 8, 9),
+    "action_box_diamond": ("Live == <>[][x' = x]_x", "PROPERTY Live", 8, 13),
     "spec_eventually": ("Live == TRUE", "PROPERTY Live", 6, 31),
 }
 
@@ -170,6 +182,13 @@ Spec == Init /\\ [][Next]_x{spec_tail}
     assert p.returncode == exit_codes.ERROR_CONFIG_PARSE
     assert f"U.tla:{line}:{col}: error:" in p.stderr and "not supported" in p.stderr
     assert "Traceback" not in p.stderr
+
+
+def test_liveness_fairness_and_step_formulas_as_properties() -> None:
+    kinds = [(ob.name, ob.kind) for ob in load_model(str(LIVENESS / "MinuteClock.tla")).liveness]
+    assert kinds == [("HourSpec", "wf"), ("TicksForever", "infinitely_step")]
+    kinds = [(ob.name, ob.kind) for ob in load_model(str(LIVENESS / "GrabNotStrong.tla")).liveness]
+    assert kinds == [("ReleaseWeaklyFair", "wf")] * 2 + [("GrabStronglyFair", "sf")] * 2
 
 
 def test_liveness_quantified_fairness_over_parameterised_actions_is_accepted() -> None:
@@ -199,6 +218,7 @@ def test_liveness_expected_results_are_tlcs(name: str) -> None:
     assert tlc.exit_code == want["exit_code"]
     # TLC's lasso itself varies between runs (MutexWF: 5 or 6 states); only its presence is stable.
     assert (tlc.lasso is None) == ("lasso" not in want)
+    assert tlc.violated_properties == want.get("violated_properties")
 
 
 def _random_spec(seed: int) -> tuple[str, str]:

@@ -164,8 +164,8 @@ def _property_summary(model: Model, r: CheckResult) -> dict[str, Any]:
     lasso = None
     if r.loop is not None and r.trace is not None:
         lasso = {"length": len(r.trace), "loop": r.loop, "stuttering": r.loop_step is None}
-    return {"names": list(model.properties), "result": verdict, "violated": r.violated if violated else None,
-            "lasso": lasso}
+    names = r.violated_properties or ([r.violated] if violated else [])
+    return {"names": list(model.properties), "result": verdict, "violated": names, "lasso": lasso}
 
 
 def _second_opinion(args: argparse.Namespace, summary: dict, code: int) -> int:

@@ -74,6 +74,8 @@ class CheckResult:
     # `loop_step` is None.
     loop: int | None = None
     loop_step: Step | None = None
+    # Every property the liveness counterexample violates, in .cfg order (TLC names them all).
+    violated_properties: list[str] | None = None
 
 
 class _Stop(Exception):

@@ -10,6 +10,10 @@ property       the tail starts at a state  every tail state       infinitely oft
 ``P ~> Q``     with P /\\ ~Q               satisfies ~Q           -
 ``[]<>P``      with ~P                     satisfies ~P           -
 ``<>[]P``      any                         any                    a state with ~P
+``[]<><<A>>_v``  any                       no <<A>>_v step        -
+``WF_v(A)``    with ENABLED <<A>>_v        ENABLED <<A>>_v,       -
+                                           no <<A>>_v step
+``SF_v(A)``    any                         no <<A>>_v step        ENABLED <<A>>_v
 =============  ==========================  =====================  ==================
 
 The behaviour graph is the product of the state graph with this two-phase
@@ -87,6 +91,20 @@ class LivenessChecker:
         self.fairness = fairness
         # ENABLED cache per fairness conjunct: 0 unknown, 1 disabled, 2 enabled.
         self._enabled = [bytearray(graph.n) for _ in fairness]
+        # The steps a tail may take: all, or those of the current property's `forbid`.
+        self._forbid: Callable[[tuple, tuple], bool] | None = None
+        self._rows: dict[int, list[int]] = {}
+
+    def tail_succ(self, v: int) -> Iterable[int]:
+        """Successors of v by steps a tail may take (stuttering is always allowed)."""
+        forbid = self._forbid
+        if forbid is None:
+            return self.g.succ(v)
+        row = self._rows.get(v)
+        if row is None:
+            s = self.states[v]
+            row = self._rows[v] = [w for w in self.g.succ(v) if not forbid(s, self.states[w])]
+        return row
 
     def enabled(self, fi: int, v: int) -> bool:
         c = self._enabled[fi]
@@ -98,7 +116,7 @@ class LivenessChecker:
         """A step of the component that is an <<A>>_v step of fairness conjunct fi."""
         taken = self.fairness[fi].taken
         for u in comp:
-            for w in self.g.succ(u):
+            for w in self.tail_succ(u):
                 if w in inside and taken(self.states[u], self.states[w]):
                     return u, w
         return None
@@ -106,6 +124,8 @@ class LivenessChecker:
     # ------------------------------------------------------------------ search
     def counterexample(self, ob: Obligation) -> Lasso | None:
         n = self.g.n
+        self._forbid = ob.forbid
+        self._rows = {}
         stay, start, visit = self._masks(ob)
         dist, parent = self._product_bfs(ob, stay, start)
         self.check_memory()
@@ -114,7 +134,7 @@ class LivenessChecker:
         for v in tail:
             in_tail[v] = 1
         best: tuple[int, int, list[int]] | None = None
-        comps = strongly_connected(tail, self.g.succ, in_tail.__getitem__, n)
+        comps = strongly_connected(tail, self.tail_succ, in_tail.__getitem__, n)
         self.check_memory()
         for comp in comps:
             found = self._fair_part(comp, visit)
@@ -144,8 +164,10 @@ class LivenessChecker:
         p, q, states = ob.p, ob.q, self.states
         for v in range(n):
             s = states[v]
-            if ob.kind == "stable":
+            if ob.kind in ("stable", "sf", "infinitely_step"):
                 stay[v] = start[v] = 1
+            elif ob.kind == "wf":
+                stay[v] = start[v] = p(s)
             elif ob.kind == "leadsto":
                 assert q is not None
                 stay[v] = not q(s)
@@ -154,6 +176,8 @@ class LivenessChecker:
                 stay[v] = start[v] = not p(s)
         if ob.kind == "stable":
             visit = bytearray(not p(states[v]) for v in range(n))
+        elif ob.kind == "sf":
+            visit = bytearray(p(states[v]) for v in range(n))
         return stay, start, visit
 
     def _product_bfs(self, ob: Obligation, stay: bytearray, start: bytearray) -> tuple[array, array]:
@@ -180,7 +204,7 @@ class LivenessChecker:
                 dist[node + 1] = dist[node]
                 parent[node + 1] = node
                 dq.appendleft(node + 1)
-            for w in self.g.succ(v):
+            for w in (self.tail_succ(v) if phase == 1 else self.g.succ(v)):
                 if phase == 1 and not stay[w]:
                     continue
                 nxt = 2 * w + phase
@@ -213,7 +237,7 @@ class LivenessChecker:
             if bad:
                 rest = [v for v in part if v not in bad]
                 keep = set(rest)
-                work.extend(strongly_connected(rest, self.g.succ, keep.__contains__, self.g.n))
+                work.extend(strongly_connected(rest, self.tail_succ, keep.__contains__, self.g.n))
                 continue
             needs: list = []
             fair = True
@@ -275,7 +299,7 @@ class LivenessChecker:
             best_score = 0
             nxt: list[int] = []
             for v in level:
-                for w in self.g.succ(v):
+                for w in self.tail_succ(v):
                     if w not in inside:
                         continue
                     score = sum(1 for nd in needs if self._meets(nd, v, w))
@@ -303,7 +327,7 @@ class LivenessChecker:
         dq = deque([src])
         while dq:
             v = dq.popleft()
-            for w in self.g.succ(v):
+            for w in self.tail_succ(v):
                 if w in inside and w not in prev:
                     prev[w] = v
                     if w in goals:
@@ -327,3 +351,30 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
         if lasso is not None:
             return ob, lasso
     return None
+
+
+def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) -> bool:
+    """Does the lasso (`states`, then back to states[loop], or stuttering in the last
+    state) violate the liveness obligation?  TLC names every property its
+    counterexample violates."""
+    cycle = states[loop:]
+    steps = [] if stutters else list(zip(cycle, cycle[1:] + cycle[:1]))
+    p, q = ob.p, ob.q
+    forbid = ob.forbid
+    if ob.kind == "eventually":
+        return not any(p(s) for s in states)
+    if ob.kind == "leadsto":
+        assert q is not None
+        later_q = any(q(s) for s in cycle)
+        return not later_q and any(p(s) and not any(q(x) for x in states[i:]) for i, s in enumerate(states))
+    if ob.kind == "infinitely":
+        return not any(p(s) for s in cycle)
+    if ob.kind == "stable":
+        return not all(p(s) for s in cycle)
+    assert forbid is not None
+    taken = any(forbid(s, t) for s, t in steps)
+    if ob.kind == "infinitely_step":
+        return not taken
+    if ob.kind == "wf":
+        return not taken and all(p(s) for s in cycle)
+    return not taken and any(p(s) for s in cycle)  # sf

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..tla.errors import TlaError
-from .liveness import Lasso, StateGraph, find_violation
+from .liveness import Lasso, StateGraph, find_violation, violated_on
 
 if TYPE_CHECKING:
     from .explore import CheckResult, Explorer
@@ -38,6 +38,13 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
     ob, lasso = found
     result.result = "liveness failure"
     result.violated = ob.name
+    lasso_states = [explorer.states[v] for v in lasso.nodes]
+    names: list[str] = []
+    for other in model.liveness:
+        if other.name not in names and (other is ob or violated_on(other, lasso_states, lasso.loop,
+                                                                    lasso.stuttering)):
+            names.append(other.name)
+    result.violated_properties = names
     steps = lasso_steps(model, explorer, lasso)
     result.loop = lasso.loop
     if not lasso.stuttering:

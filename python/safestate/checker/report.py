@@ -35,7 +35,12 @@ def write_lasso(out: TextIO, model: Model, r: CheckResult) -> None:
     """A liveness counterexample in TLC's words: the states, then "Back to state N"
     or "Stuttering"."""
     assert r.trace is not None and r.loop is not None
-    print(f"Error: Temporal property {r.violated} was violated.", file=out)
+    names = r.violated_properties or [r.violated]
+    if len(names) == 1:
+        print(f"Error: Temporal property {names[0]} was violated.", file=out)
+    else:
+        listed = " and ".join(names) if len(names) == 2 else ", ".join(names[:-1]) + ", and " + names[-1]
+        print(f"Error: Temporal properties {listed} were violated.", file=out)
     print(file=out)
     write_trace(out, model, r.trace, "Error: The following behavior constitutes a counter-example:\n")
     if r.loop_step is None:

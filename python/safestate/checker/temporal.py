@@ -62,15 +62,18 @@ class Obligation:
 
     kind: "init" (pred on initial states), "always" ([]pred), "action" ([][pred]_v,
     pred is the whole step predicate), or a liveness form "eventually" (<>p),
-    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p)."""
+    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p), "infinitely_step"
+    ([]<><<A>>_v), "wf" / "sf" (WF_v(A) / SF_v(A), p is ENABLED <<A>>_v)."""
 
     name: str
     kind: str
     p: Pred
     q: Pred | None = None
+    # For "wf", "sf" and "infinitely_step": <<A>>_v, a step the tail never takes.
+    forbid: Pred | None = None
 
 
-LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable")
+LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "infinitely_step", "wf", "sf")
 
 
 class TemporalCompiler:
@@ -169,7 +172,11 @@ class TemporalCompiler:
             if isinstance(arg, A.StepAction) and arg.stutter:
                 return Obligation(name, "action", self.pred(arg, scope, binds))
             if isinstance(arg, A.Unary) and arg.op == "<>" and not self.is_temporal(arg.arg, scope):
-                return Obligation(name, "infinitely", self._state(arg.arg, scope, binds))
+                inner = arg.arg
+                if isinstance(inner, A.StepAction) and not inner.stutter:
+                    return Obligation(name, "infinitely_step", self.pred(inner, scope, binds),
+                                      forbid=self.pred(inner, scope, binds))
+                return Obligation(name, "infinitely", self._state(inner, scope, binds))
             if not self.is_temporal(arg, scope):
                 return Obligation(name, "always", self._state(arg, scope, binds))
         if isinstance(e, A.Unary) and e.op == "<>":
@@ -178,13 +185,16 @@ class TemporalCompiler:
                 return Obligation(name, "stable", self._state(arg.arg, scope, binds))
             if not self.is_temporal(arg, scope):
                 return Obligation(name, "eventually", self._state(arg, scope, binds))
+        if isinstance(e, A.Fairness):
+            fair = self._fair(e, scope, binds)
+            return Obligation(name, e.kind.lower(), fair.enabled, forbid=fair.taken)
         if isinstance(e, A.Binary) and e.op == "~>":
             if not self.is_temporal(e.lhs, scope) and not self.is_temporal(e.rhs, scope):
                 return Obligation(name, "leadsto", self._state(e.lhs, scope, binds),
                                   self._state(e.rhs, scope, binds))
         raise UnsupportedError(f"the temporal formula in property {name} is not supported: only []P, <>P, "
-                               f"P ~> Q, []<>P, <>[]P (P, Q state predicates), [][A]_v, conjunctions and "
-                               f"\\A over them are checked", e.loc)
+                               f"P ~> Q, []<>P, <>[]P (P, Q state predicates), [][A]_v, []<><<A>>_v, WF_v(A), "
+                               f"SF_v(A), conjunctions and \\A over them are checked", e.loc)
 
     # ------------------------------------------------------------ compilation
     def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:
@@ -204,8 +214,9 @@ class TemporalCompiler:
     def _state(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:
         env, _ = self._env(scope, binds)
         if self.compiler.info(e, env).action:
-            raise UnsupportedError("an action-level formula where a state predicate is expected in a property",
-                                   e.loc)
+            raise UnsupportedError("an action-level or temporal formula is not supported here: this position "
+                                   "of a property takes a state predicate (temporal formulas reached through an "
+                                   "instance, M!Op, are not supported either)", e.loc)
         return self.pred(e, scope, binds)
 
     def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:

@@ -22,6 +22,8 @@ class TlcSummary:
     # A liveness counterexample: {"length": states printed, "loop": 0-based index the
     # last state goes back to, "stuttering": bool}.
     lasso: dict | None = None
+    # Every property TLC names as violated by its liveness counterexample.
+    violated_properties: list[str] | None = None
 
 
 def tlc_jar() -> str | None:
@@ -47,7 +49,7 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     stats = re.findall(r"^(\d+) states generated, (\d+) distinct states found", out, re.M)
     depth = re.findall(r"^The depth of the complete state graph search is (\d+)", out, re.M)
     viol = re.search(r"^Error: Invariant (\S+) is violated", out, re.M)
-    temporal = re.search(r"^Error: Temporal property (\S+) was violated", out, re.M)
+    temporal = re.search(r"^Error: Temporal propert(?:y|ies) (\w+)", out, re.M)
     action = re.search(r"^Error: Action property (\S+) is violated", out, re.M)
     initial = re.search(r"^Error: Property (\S+) is violated by the initial state", out, re.M)
     if "Model checking completed. No error has been found." in out:
@@ -65,7 +67,14 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     return TlcSummary(result,
                       int(stats[-1][1]) if stats else None, int(stats[-1][0]) if stats else None,
                       int(depth[-1]) if depth else None, viol.group(1) if viol else None, exit_code,
-                      _lasso(out) if temporal else None)
+                      _lasso(out) if temporal else None, _temporal_names(out) if temporal else None)
+
+
+def _temporal_names(out: str) -> list[str]:
+    m = re.search(r"^Error: Temporal propert(?:y (\w+) was|ies (.+) were) violated", out, re.M)
+    if m is None:
+        return []
+    return [m.group(1)] if m.group(1) else re.split(r",? and |, ", m.group(2))
 
 
 def _lasso(out: str) -> dict | None:
