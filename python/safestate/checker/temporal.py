@@ -4,13 +4,14 @@
 * the fairness conjuncts of the specification: ``WF_v(A)``, ``SF_v(A)``, their
   conjunctions and ``\\A p \\in S : ...`` over them, through definitions with or
   without parameters;
-* the conjuncts of each PROPERTY, with ``/\\``, definitions and bounded ``\\A``
-  expanded over their (constant) values:
+* the conjuncts of each PROPERTY, with ``/\\``, definitions (also ``M!Op`` of a
+  non-parameterised instance) and bounded ``\\A`` expanded over their (constant) values:
 
   - a state predicate ``P`` (checked on the initial states),
   - ``[]P`` (an implied invariant, reported as "Invariant X is violated"),
   - ``[][A]_v`` (an action property, checked on every transition),
-  - ``<>P``, ``P ~> Q``, ``[]<>P`` and ``<>[]P`` (liveness, see `liveness.py`),
+  - ``<>P``, ``P ~> Q``, ``[]<>P``, ``<>[]P``, ``[]<><<A>>_v``, ``WF_v(A)`` and
+    ``SF_v(A)`` (liveness, see `liveness.py`),
 
   where P and Q are state predicates.  Any other temporal formula is refused with
   an "unsupported" error at its position, never guessed at.
@@ -27,7 +28,7 @@ from ..tla import ast as A
 from ..tla.compiler import check_bool
 from ..tla.env import Env, Frame, SlotLocal
 from ..tla.errors import Loc, TlaError, UnsupportedError
-from ..tla.modules import DefSym, Scope
+from ..tla.modules import DefSym, InstanceSym, Scope
 from ..tla.values import Value, as_set
 
 
@@ -91,8 +92,8 @@ class TemporalCompiler:
             return True
         if isinstance(e, (A.Fairness, A.UnboundedQuant)) or (isinstance(e, A.Binary) and e.op in ("~>", "-+->")):
             return True
-        if isinstance(e, (A.Name, A.Apply)):
-            sym = scope.lookup(e.name)
+        if isinstance(e, (A.Name, A.Apply, A.Prefixed)):
+            sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
             if isinstance(sym, DefSym):
                 key = id(sym)
                 if key not in self._temporal_defs:
@@ -113,6 +114,16 @@ class TemporalCompiler:
                         return True
         return False
 
+    @staticmethod
+    def _instance_def(e: A.Prefixed, scope: Scope) -> object:
+        """The definition M!Op names; its scope carries the instance's substitutions."""
+        for step in e.path:
+            sym = scope.lookup(step.name)
+            if not isinstance(sym, InstanceSym):
+                return None
+            scope = sym.scope
+        return scope.lookup(e.name)
+
     # ------------------------------------------------------------ expansion
     def fairness(self, e: A.Expr) -> list[Fairness]:
         out: list[Fairness] = []
@@ -132,10 +143,13 @@ class TemporalCompiler:
             for item in e.items:
                 self._expand(item, scope, binds, leaf)
             return
-        if isinstance(e, (A.Name, A.Apply)) and e.name not in binds:
-            sym = scope.lookup(e.name)
+        if isinstance(e, (A.Name, A.Apply, A.Prefixed)) and e.name not in binds:
+            sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
             if isinstance(sym, DefSym) and self.is_temporal(e, scope):
-                args = e.args if isinstance(e, A.Apply) else []
+                if isinstance(e, A.Prefixed) and any(step.args for step in e.path):
+                    raise UnsupportedError("a temporal formula of a parameterised instance (M(p)!Op) is not "
+                                           "supported", e.loc)
+                args = e.args if isinstance(e, (A.Apply, A.Prefixed)) else []
                 if len(args) != len(sym.defn.params):
                     raise TlaError("semantic", f"{e.name} expects {len(sym.defn.params)} arguments", e.loc)
                 values = {p.name: self._constant(a, scope, binds) for p, a in zip(sym.defn.params, args)}
@@ -214,9 +228,8 @@ class TemporalCompiler:
     def _state(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:
         env, _ = self._env(scope, binds)
         if self.compiler.info(e, env).action:
-            raise UnsupportedError("an action-level or temporal formula is not supported here: this position "
-                                   "of a property takes a state predicate (temporal formulas reached through an "
-                                   "instance, M!Op, are not supported either)", e.loc)
+            raise UnsupportedError("an action-level formula is not supported here: this position of a "
+                                   "property takes a state predicate", e.loc)
         return self.pred(e, scope, binds)
 
     def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:
