@@ -79,6 +79,10 @@ def test_liveness_verdict_counts_and_exit_code_match_tlc(name: str) -> None:
             continue
         assert getattr(r, f) == want[f], f"{f}: ours {getattr(r, f)!r}, TLC {want[f]!r}"
     assert exit_codes.BY_RESULT[r.result] == want["exit_code"]
+    if "left_on_queue" in want:
+        assert r.left_on_queue == want["left_on_queue"]
+    if "trace_length" in want:
+        assert r.trace is not None and len(r.trace) == want["trace_length"]
     if "lasso" in want:
         assert r.violated_properties == want["violated_properties"]
         _holds_on_lasso(model, r)

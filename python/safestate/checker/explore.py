@@ -167,7 +167,7 @@ class Explorer:
             # As TLC's queue: the state being expanded (`self.head`) has been dequeued,
             # and a new successor violating an invariant is never enqueued.
             left -= 1
-            if result == "safety failure" and extra is None:
+            if result in ("safety failure", "action property failure") and extra is None:
                 left -= 1
         self.outcome = CheckResult(result, len(self.states), self.generated,
                                    self.max_level if self.generated else 0,
@@ -308,7 +308,7 @@ class Explorer:
                         lf = m.leaves[leaf]
                         self._finish("safety failure", inv.name, i, Step(st, lf.name, m.leaf_params(leaf, L)))
             if action_properties:
-                self._check_action_properties(i, cur, st, leaf, lambda: m.leaf_params(leaf, L))
+                self._check_action_properties(i, cur, st, idx if new else -1, leaf, lambda: m.leaf_params(leaf, L))
         try:
             m.run_next(cur, on_succ)
         except TlaError as e:
@@ -320,11 +320,14 @@ class Explorer:
         if self.generated == before and m.check_deadlock:
             self._finish("deadlock failure", None, i)
 
-    def _check_action_properties(self, i: int, cur: tuple, st: tuple, leaf: int,
+    def _check_action_properties(self, i: int, cur: tuple, st: tuple, added: int, leaf: int,
                                  params: Callable[[], dict]) -> None:
-        """TLC checks [][A]_v properties on every step, seen and constraint-violating ones too."""
+        """TLC checks [][A]_v properties on every step, seen and constraint-violating ones too.
+        `added` is the id of `st` if this step added it to the graph (it is not queued then)."""
         for prop in self.m.action_properties:
             if not self.m.holds(prop, cur, st):
+                if added >= 0:
+                    self._finish("action property failure", prop.name, added)
                 self._finish("action property failure", prop.name, i, Step(st, self.m.leaves[leaf].name, params()))
 
 

@@ -103,7 +103,8 @@ class ParallelExplorer(Explorer):
                         params = self._params_of(cur, leaf, st)
                         self._finish("safety failure", inv.name, i, Step(st, m.leaves[leaf].name, params))
             if m.action_properties:
-                self._check_action_properties(i, cur, st, leaf, lambda: self._params_of(cur, leaf, st))
+                self._check_action_properties(i, cur, st, idx if new else -1, leaf,
+                                              lambda: self._params_of(cur, leaf, st))
         if not successors and m.check_deadlock:
             self._finish("deadlock failure", None, i)
 
