@@ -91,6 +91,9 @@ class ParallelExplorer(Explorer):
                     idx = self._add(st, key, i, leaf, next_level)
                 else:
                     new = False
+            if self.live_edges and in_model:
+                self.edge_src.append(i)
+                self.edge_dst.append(idx)
             if new:
                 for inv in m.invariants:
                     if not m.holds(inv, st):
@@ -99,5 +102,8 @@ class ParallelExplorer(Explorer):
                         # A constraint-violating successor (not stored): recover its action parameters.
                         params = self._step_params(cur, leaf, st)
                         self._finish("safety failure", inv.name, i, Step(st, m.leaves[leaf].name, params))
+            if m.action_properties:
+                self._check_action_properties(i, cur, st, idx if new else -1, leaf,
+                                              lambda: self._step_params(cur, leaf, st))
         if not successors and m.check_deadlock:
             self._finish("deadlock failure", None, i)
