@@ -7,10 +7,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 SAFESTATE=.venv/bin/safestate
-MODELS=(SystemStateManager PLCopenAxis)
+MODELS=(SystemStateManager PLCopenAxis SafetyService)
 
 echo "== demo scenario (C++ SystemStateManager, one line per change)"
 build/cpp/safestate_demo
+
+echo "== demo scenario (C++ Safety service over UDP on the loopback, one line per change)"
+"$SAFESTATE" demo saf
 
 for m in "${MODELS[@]}"; do
   echo "== model check: models/$m.tla with models/$m.cfg"

@@ -194,15 +194,16 @@ CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_faul
   }
 
   Outbox& out = result.outbox;
-  if (obs_.out_request != OutRequest::None) {
-    add(out, Message::request_control(
-                 obs_.out_request == OutRequest::Release ? ControlAction::Release : ControlAction::Request,
-                 authority_, component_id_));
-  }
+  // Set Subsystem State first: setting OPERATIONAL needs the control the release gives up.
   if (obs_.out_set_state != OutSetState::None) {
     const bool emergency = obs_.out_set_state == OutSetState::Emergency;
     if (emergency) diag_.last_set_emergency_cycle = diag_.cycles;
     add(out, Message::set_subsystem_state(emergency ? SubsystemState::Emergency : SubsystemState::Operational));
+  }
+  if (obs_.out_request != OutRequest::None) {
+    add(out, Message::request_control(
+                 obs_.out_request == OutRequest::Release ? ControlAction::Release : ControlAction::Request,
+                 authority_, component_id_));
   }
   if (diag_.cycles % timing_.message_interval == 0) add(out, Message::query(MessageId::QueryHealthSummary));
   if (obs_.control != ControlStatus::Released && diag_.cycles % timing_.check_interval == 0) {
