@@ -53,13 +53,19 @@ def graph(tmp_path_factory: pytest.TempPathFactory) -> dict:
     return json.loads(path.read_text())
 
 
-def _replay(graph: dict, et: int, rdt: int, mi: int, stop_after: int) -> tuple[int, int, list[str]]:
-    """Replays every edge through C++ services built with these timers.
-    Returns (edges replayed, C++ states, the first `stop_after` mismatches)."""
+def _index(graph: dict) -> tuple[dict[int, dict], dict[int, list[dict]]]:
+    """The graph's states by id (plain values) and its edges by source."""
     states = {s["id"]: _plain(s["state"]) for s in graph["states"]}
     out_edges: dict[int, list[dict]] = {}
     for e in graph["edges"]:
         out_edges.setdefault(e["from"], []).append(e)
+    return states, out_edges
+
+
+def _replay(graph: dict, et: int, rdt: int, mi: int, stop_after: int) -> tuple[int, int, list[str]]:
+    """Replays every edge through C++ services built with these timers.
+    Returns (edges replayed, C++ states, the first `stop_after` mismatches)."""
+    states, out_edges = _index(graph)
     [init] = graph["initial"]
     root = _saf.SafetyService(et, rdt, mi, 3)
     # BFS over the graph: one C++ service per model state, reached by a tree path;
@@ -112,3 +118,39 @@ def test_saf_binding_rejects_bad_inbox_with_a_clear_error() -> None:
     with pytest.raises(ValueError, match="at least 1 cycle"):
         _saf.SafetyService(0, 3, 2)
     assert _saf.decode_error(b"\x01") == "TRUNCATED"
+
+
+# Lockstep random walks over the model's graph: the C++ service is driven along whole
+# paths (not from per-state copies), so hidden C++ state (cycle counter, periodic queries,
+# the re-send rule) accumulates as in a real run. 120 walks x 100 steps = 12,000 steps.
+WALKS, STEPS = 120, 100
+
+
+def test_saf_hypothesis_lockstep_walks(graph: dict) -> None:
+    from hypothesis import HealthCheck, given, settings
+    from hypothesis import strategies as st
+
+    states, out_edges = _index(graph)
+    et, rdt, mi = _constants()
+    [init] = graph["initial"]
+    steps_done = [0]
+
+    @settings(max_examples=WALKS, deadline=None, derandomize=True,
+              suppress_health_check=list(HealthCheck))
+    @given(st.lists(st.integers(min_value=0, max_value=10**6), min_size=STEPS, max_size=STEPS),
+           st.lists(st.sampled_from(GARBAGE), min_size=0, max_size=3))
+    def walk(choices: list[int], garbage: list[bytes]) -> None:
+        svc = _saf.SafetyService(et, rdt, mi, 3)
+        node = init
+        for i, c in enumerate(choices):
+            edges = out_edges[node]
+            e = edges[c % len(edges)]
+            inbox = _plain(e["params"]["in"])
+            extra = garbage if i % 10 == 0 else []
+            svc.cycle_raw(_saf.encode_inbox(inbox) + extra, inbox["hw_fault"])
+            node = e["to"]
+            assert svc.observe() == {k: states[node][k] for k in PROJECTED}, (i, inbox)
+            steps_done[0] += 1
+
+    walk()
+    assert steps_done[0] >= 10_000
