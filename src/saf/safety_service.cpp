@@ -34,9 +34,24 @@ SafetyService::SafetyService(const Config& config, std::uint32_t component_id) n
   if (config_error_ != ConfigError::None) obs_.state = SafState::Fault;
 }
 
+namespace {
+ConfigError check(const Timing& t) noexcept {
+  for (std::uint32_t c : {t.estop_timeout, t.report_data_timeout, t.message_interval, t.check_interval}) {
+    if (c == 0) return ConfigError::TimeInvalid;
+    if (c > kMaxTimerCycles) return ConfigError::TooManyCycles;
+  }
+  return ConfigError::None;
+}
+}  // namespace
+
 SafetyService::SafetyService(const Timing& timing, std::uint8_t authority_code,
                              std::uint32_t component_id) noexcept
-    : timing_(timing), authority_(authority_code), component_id_(component_id) {}
+    : timing_(check(timing) == ConfigError::None ? timing : kFaultTiming),
+      authority_(authority_code),
+      component_id_(component_id),
+      config_error_(check(timing)) {
+  if (config_error_ != ConfigError::None) obs_.state = SafState::Fault;
+}
 
 bool SafetyService::estop_timed_out() const noexcept {
   return obs_.estop != EstopView::None && obs_.estop_age > timing_.estop_timeout;

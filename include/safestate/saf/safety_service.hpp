@@ -22,7 +22,8 @@ class SafetyService {
   /// From the SAF-04 parameters. An invalid Config (validate() != None) constructs the
   /// service in FAULT: it still raises EMERGENCY (design §3).
   explicit SafetyService(const Config& config, std::uint32_t component_id = kSafetyComponentId) noexcept;
-  /// From timers already in cycles (the model's constants; the conformance harness).
+  /// From timers already in cycles (the model's constants; the conformance harness). A timer
+  /// of 0 or above kMaxTimerCycles constructs the service in FAULT, as an invalid Config.
   SafetyService(const Timing& timing, std::uint8_t authority_code,
                 std::uint32_t component_id = kSafetyComponentId) noexcept;
 

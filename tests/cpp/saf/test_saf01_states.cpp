@@ -64,5 +64,13 @@ TEST(SAF01_States, InvalidConfigConstructsInFault) {
   EXPECT_EQ(s.observe().control, ControlStatus::Requested);
 }
 
+TEST(SAF01_States, ZeroCycleTimerConstructsInFault) {
+  SafetyService s{Timing{2, 40, 0, 20}, 225};
+  EXPECT_EQ(s.config_error(), ConfigError::TimeInvalid);
+  EXPECT_EQ(s.observe().state, SafState::Fault);
+  for (int i = 0; i < 30; ++i) (void)run(s, {clear()});  // no division by a zero interval
+  EXPECT_EQ(s.observe().state, SafState::Fault);
+}
+
 }  // namespace
 }  // namespace safestate::saf::test
