@@ -4,7 +4,7 @@
 (* (docs/design/safety-service.md, "the page").  One step of this model is *)
 (* one call of SafetyService::cycle(): the intake of the cycle's messages  *)
 (* (page section 5), the state rows F01..M02 (section 6, transitions A-E)  *)
-(* and the control rows K01..K09 (section 7).                              *)
+(* and the control rows K01..K10 (section 7).                              *)
 (*                                                                         *)
 (* Environment.  The Safety Client, the Subsystem State service with its   *)
 (* access control and the channel between them and the service are        *)
@@ -125,7 +125,7 @@ StateStep(s, in) ==
     ELSE s
 
 -----------------------------------------------------------------------------
-(*********************** Control rows K01-K09 (page 7) *********************)
+(*********************** Control rows K01-K10 (page 7) *********************)
 ControlRow(s, in) ==
     IF s.control = "RELEASED" THEN "K01"
     ELSE IF s.control \in {"REQUESTED", "REFUSED"} /\ in.control = "ACCEPTED" THEN "K02"
@@ -140,8 +140,13 @@ ControlRow(s, in) ==
 Request(s) == [s EXCEPT !.out_request = "REQUEST", !.control = "REQUESTED",
                         !.control_age = 0]
 
+\* K10 (OPERATIONAL): a report that we still hold control (our release was
+\* lost, or a stale Confirm Control) is answered by releasing again.
 ControlStep(s, in) ==
-    IF s.state \notin RaisingStates THEN s ELSE
+    IF s.state \notin RaisingStates THEN
+        IF in.control = "ACCEPTED" /\ s.out_request = "NONE"
+        THEN [s EXCEPT !.out_request = "RELEASE"] ELSE s
+    ELSE
     LET row == ControlRow(s, in) IN
     IF row \in {"K01", "K04", "K05", "K06", "K08"} THEN Request(s)
     ELSE IF row = "K02" THEN [s EXCEPT !.control = "HELD", !.control_age = 0,

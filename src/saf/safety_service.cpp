@@ -130,6 +130,8 @@ bool SafetyService::control_guard(ControlGuard g, ControlEvent ev) const noexcep
     case ControlGuard::EventOther: return ev == ControlEvent::Other;
     case ControlGuard::AgeReportDataTimeout: return obs_.control_age >= timing_.report_data_timeout;
     case ControlGuard::AgeMessageInterval: return obs_.control_age >= timing_.message_interval;
+    case ControlGuard::EventAcceptedNoRelease:
+      return ev == ControlEvent::Accepted && obs_.out_request == OutRequest::None;
   }
   return false;
 }
@@ -166,6 +168,7 @@ void SafetyService::apply(ControlEffect e) noexcept {
       obs_.control_age = 0;
       break;
     case ControlEffect::Refresh: obs_.control_age = 0; break;
+    case ControlEffect::ReleaseAgain: obs_.out_request = OutRequest::Release; break;
     case ControlEffect::Tick: {
       const std::uint32_t max = timing_.report_data_timeout > timing_.message_interval
                                     ? timing_.report_data_timeout
@@ -193,13 +196,16 @@ CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_faul
     apply(row.effect);
     break;
   }
-  if (raises_emergency(obs_.state)) {
-    for (const ControlRow& row : kControlRows) {
-      if ((row.control & bit(obs_.control)) == 0 || !control_guard(row.guard, ev)) continue;
-      result.control_row = row.id;
-      apply(row.effect);
-      break;
+  for (const ControlRow& row : kControlRows) {
+    if ((row.states & bit(obs_.state)) == 0 || (row.control & bit(obs_.control)) == 0 ||
+        !control_guard(row.guard, ev)) {
+      continue;
     }
+    result.control_row = row.id;
+    apply(row.effect);
+    break;
+  }
+  if (raises_emergency(obs_.state)) {
     // C++ only (design §7): someone changed the subsystem state behind our back.
     const std::uint64_t since = diag_.cycles - diag_.last_set_emergency_cycle;
     if (resend_emergency_ && obs_.control == ControlStatus::Held &&
@@ -221,7 +227,7 @@ CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_faul
                  authority_, component_id_));
   }
   if (diag_.cycles % timing_.message_interval == 0) add(out, Message::query(MessageId::QueryHealthSummary));
-  if (obs_.control != ControlStatus::Released && diag_.cycles % timing_.check_interval == 0) {
+  if (diag_.cycles % timing_.check_interval == 0) {
     add(out, Message::query(MessageId::QueryControl));
   }
   ++diag_.cycles;

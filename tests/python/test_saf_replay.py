@@ -96,8 +96,9 @@ def _replay(graph: dict, et: int, rdt: int, mi: int, stop_after: int) -> tuple[i
 def test_saf_every_model_transition_replayed_through_the_cpp_codec_path(graph: dict) -> None:
     replayed, reached, mismatches = _replay(graph, *_constants(), stop_after=5)
     assert not mismatches, "\n".join(mismatches)
-    assert replayed == len(graph["edges"]) == 341376
-    assert reached == len(graph["states"]) == 3556
+    want = json.loads((REPO / "models" / "expected.json").read_text())["SafetyService"]
+    assert replayed == len(graph["edges"]) == want["states_generated"] - 1  # all but Init
+    assert reached == len(graph["states"]) == want["distinct_states"]
 
 
 def test_saf_replay_catches_a_wrong_estop_timeout(graph: dict) -> None:

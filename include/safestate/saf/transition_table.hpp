@@ -59,12 +59,14 @@ enum class ControlGuard : std::uint8_t {
   EventOther,
   AgeReportDataTimeout,  // control_age >= ReportDataTimeoutCycles
   AgeMessageInterval,    // control_age >= MessageIntervalCycles
+  EventAcceptedNoRelease,  // ev = ACCEPTED and no release sent yet this cycle
 };
 
-enum class ControlEffect : std::uint8_t { Request, Grant, Refuse, Refresh, Tick };
+enum class ControlEffect : std::uint8_t { Request, Grant, Refuse, Refresh, Tick, ReleaseAgain };
 
 struct ControlRow {
   std::string_view id;
+  Mask states;  // the (new) states the row applies in
   Mask control;
   ControlGuard guard;
   ControlEffect effect;
@@ -72,18 +74,21 @@ struct ControlRow {
 
 inline constexpr Mask kWaiting = static_cast<Mask>(bit(ControlStatus::Requested) | bit(ControlStatus::Refused));
 inline constexpr Mask kAnyControl = 0x0F;
+inline constexpr Mask kRaising = static_cast<Mask>(kAnyState & ~bit(SafState::Operational));
+inline constexpr Mask kOperational = bit(SafState::Operational);
 
-/// Design §7, first match wins; run only in PAIRING, EMERGENCY and FAULT.
-inline constexpr std::array<ControlRow, 9> kControlRows{{
-    {"K01", bit(ControlStatus::Released), ControlGuard::True, ControlEffect::Request},
-    {"K02", kWaiting, ControlGuard::EventAccepted, ControlEffect::Grant},
-    {"K03", bit(ControlStatus::Requested), ControlGuard::EventRefused, ControlEffect::Refuse},
-    {"K04", bit(ControlStatus::Requested), ControlGuard::AgeReportDataTimeout, ControlEffect::Request},
-    {"K05", bit(ControlStatus::Refused), ControlGuard::AgeMessageInterval, ControlEffect::Request},
-    {"K06", bit(ControlStatus::Held), ControlGuard::EventOther, ControlEffect::Request},
-    {"K07", bit(ControlStatus::Held), ControlGuard::EventAccepted, ControlEffect::Refresh},
-    {"K08", bit(ControlStatus::Held), ControlGuard::AgeReportDataTimeout, ControlEffect::Request},
-    {"K09", kAnyControl, ControlGuard::True, ControlEffect::Tick},
+/// Design §7, first match wins: K01-K09 in PAIRING, EMERGENCY and FAULT; K10 in OPERATIONAL.
+inline constexpr std::array<ControlRow, 10> kControlRows{{
+    {"K01", kRaising, bit(ControlStatus::Released), ControlGuard::True, ControlEffect::Request},
+    {"K02", kRaising, kWaiting, ControlGuard::EventAccepted, ControlEffect::Grant},
+    {"K03", kRaising, bit(ControlStatus::Requested), ControlGuard::EventRefused, ControlEffect::Refuse},
+    {"K04", kRaising, bit(ControlStatus::Requested), ControlGuard::AgeReportDataTimeout, ControlEffect::Request},
+    {"K05", kRaising, bit(ControlStatus::Refused), ControlGuard::AgeMessageInterval, ControlEffect::Request},
+    {"K06", kRaising, bit(ControlStatus::Held), ControlGuard::EventOther, ControlEffect::Request},
+    {"K07", kRaising, bit(ControlStatus::Held), ControlGuard::EventAccepted, ControlEffect::Refresh},
+    {"K08", kRaising, bit(ControlStatus::Held), ControlGuard::AgeReportDataTimeout, ControlEffect::Request},
+    {"K09", kRaising, kAnyControl, ControlGuard::True, ControlEffect::Tick},
+    {"K10", kOperational, bit(ControlStatus::Released), ControlGuard::EventAcceptedNoRelease, ControlEffect::ReleaseAgain},
 }};
 
 }  // namespace safestate::saf

@@ -105,6 +105,18 @@ TEST(SAF02_TransitionD, NotWhileHealthIsBad) {
   EXPECT_EQ(s.observe().state, SafState::Emergency);
 }
 
+TEST(SAF02_TransitionD, LostReleaseIsSentAgainWhenAReportSaysWeStillHoldControl) {
+  SafetyService s = operational();
+  CycleResult r = run(s, {clear(), Message::report_control(kSafetyComponentId, 225)});
+  EXPECT_EQ(r.control_row, "K10");
+  EXPECT_EQ(s.observe().state, SafState::Operational);
+  ASSERT_NE(find(r.outbox, MessageId::RequestControl), nullptr);
+  EXPECT_EQ(find(r.outbox, MessageId::RequestControl)->action, ControlAction::Release);
+  r = run(s, {clear(), taken_by_other()});
+  EXPECT_EQ(r.control_row, "");
+  EXPECT_EQ(find(r.outbox, MessageId::RequestControl), nullptr);
+}
+
 TEST(SAF02_TransitionE, HardwareFaultWinsOverAClearMessage) {
   SafetyService s{kSmall, 225};
   (void)run(s, {pressed()});
