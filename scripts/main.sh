@@ -20,6 +20,9 @@ for m in "${MODELS[@]}"; do
   "$SAFESTATE" check "models/$m.tla" --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 done
 
+echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
+"$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
+
 for m in "${MODELS[@]}"; do
   echo "== proofs: models/$m.tla (every constant symbolic where its ASSUME allows)"
   "$SAFESTATE" prove "models/$m.tla" --quiet

@@ -1,7 +1,8 @@
 """The Safety service model (SAF-01..04, models/SafetyService.tla): every invariant's
-situation is reachable (non-vacuity witnesses), and every mutant declared in
+situation is reachable (non-vacuity witnesses), also the protocol's situations with the
+explicit peers (models/SafetyServicePeers.tla), and every mutant declared in
 models/mutants/SafetyService.toml is caught on its target invariant with TLC's
-counterexample length. (The model itself passing with TLC's counts is covered by
+counterexample length. (Both models passing with TLC's counts is covered by
 test_models.py through models/expected.json.)"""
 
 from __future__ import annotations
@@ -16,20 +17,25 @@ import pytest
 from conftest import REPO, run_safestate
 
 MODEL = REPO / "models" / "SafetyService.tla"
+PEERS = REPO / "models" / "SafetyServicePeers.tla"
 MUTANTS = tomllib.loads((REPO / "models" / "mutants" / "SafetyService.toml").read_text())["mutant"]
 WITNESSES = sorted(set(re.findall(r"^(Witness_\w+) ==", MODEL.read_text(), re.M)))
+PEER_WITNESSES = sorted(set(re.findall(r"^(Witness_\w+) ==", PEERS.read_text(), re.M)))
 
 
-def _cfg_with_only(invariant: str) -> str:
+def _cfg_with_only(model: Path, invariant: str) -> str:
     """The model's .cfg (constants, INIT, NEXT, VIEW) with one invariant listed."""
-    head = MODEL.with_suffix(".cfg").read_text().split("INVARIANTS")[0]
+    head = model.with_suffix(".cfg").read_text().split("INVARIANTS")[0]
     return f"{head}INVARIANTS\n    {invariant}\n"
 
 
-def _check(folder: Path, tla_text: str, invariant: str) -> dict:
+def _check(folder: Path, tla_text: str, invariant: str, model: Path = MODEL) -> dict:
+    """Checks `model` (with SafetyService.tla replaced by `tla_text`) in `folder`."""
     (folder / "SafetyService.tla").write_text(tla_text)
-    (folder / "SafetyService.cfg").write_text(_cfg_with_only(invariant))
-    proc = run_safestate("check", str(folder / "SafetyService.tla"), "--json")
+    if model != MODEL:
+        (folder / model.name).write_text(model.read_text())
+    (folder / model.with_suffix(".cfg").name).write_text(_cfg_with_only(model, invariant))
+    proc = run_safestate("check", str(folder / model.name), "--json")
     assert "Traceback" not in proc.stderr, proc.stderr
     return json.loads(proc.stdout)
 
@@ -45,6 +51,12 @@ def test_every_invariant_has_witnesses() -> None:
 @pytest.mark.parametrize("witness", WITNESSES)
 def test_saf_witness_situation_is_reachable(witness: str, tmp_path: Path) -> None:
     got = _check(tmp_path, MODEL.read_text(), witness)
+    assert got["result"] == "safety failure" and got["violated"] == witness
+
+
+@pytest.mark.parametrize("witness", PEER_WITNESSES)
+def test_saf_protocol_situation_with_explicit_peers_is_reachable(witness: str, tmp_path: Path) -> None:
+    got = _check(tmp_path, MODEL.read_text(), witness, PEERS)
     assert got["result"] == "safety failure" and got["violated"] == witness
 
 
