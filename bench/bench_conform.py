@@ -11,13 +11,10 @@ import time
 from pathlib import Path
 
 from safestate.checker.model import load_model
-from safestate.conform.binding import load_core
-from safestate.conform.events import CYCLE
-from safestate.conform.inputs import submit_args
-from safestate.conform.model_step import ModelStepper
-from safestate.conform.replay import Harness
+from safestate.conform.cli import make_harness
+from safestate.systems.registry import find
 
-MODEL = Path(__file__).resolve().parents[1] / "models" / "SystemStateManager.tla"
+REPO = Path(__file__).resolve().parents[1]
 
 
 def main() -> None:
@@ -25,8 +22,10 @@ def main() -> None:
     ap.add_argument("--steps", type=int, default=5000)
     ap.add_argument("--json", action="store_true")
     a = ap.parse_args()
-    model = load_model(str(MODEL))
-    h = Harness(ModelStepper(model), load_core())
+    system = find("SystemStateManager", REPO / "systems")
+    assert system is not None
+    model = load_model(str(system.model), str(system.ci_config))
+    h = make_harness(system, model)
     rng = random.Random(1)
     state = model.initial_states()[0]
     walk = []
@@ -36,14 +35,13 @@ def main() -> None:
         event, state = trs[rng.randrange(len(trs))]
         walk.append((event, state))
     model_s = time.perf_counter() - t0
-    m = h.core.Manager(h.config)
+    m = h.adapter.new_sut()
+    state = model.initial_states()[0]
     t0 = time.perf_counter()
-    for event, _ in walk:  # C++ alone, through the binding (inputs mapped, observe())
-        if event.action == CYCLE:
-            m.cycle(h.mapper.raw(event.record(), event.param()))
-        else:
-            m.submit(*submit_args(event.record()))
-        m.observe()
+    for event, nxt in walk:  # C++ alone, through the adapter (inputs mapped, observe())
+        h.adapter.apply(m, event, state)
+        h.adapter.observe(m)
+        state = nxt
     cpp_s = time.perf_counter() - t0
     ls = h.lockstep(model.initial_states()[0])
     t0 = time.perf_counter()

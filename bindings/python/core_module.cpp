@@ -7,9 +7,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
@@ -211,6 +214,41 @@ DhTable dh_from(const py::sequence& rows) {
 
 }  // namespace
 
+/// One step of a batch: a cycle's inputs, or a submitted command (kind, axis, direction,
+/// speed_mm_s) given as a tuple.
+using BatchStep = std::variant<ScanInputs, Command>;
+
+std::vector<BatchStep> batch_steps(const py::list& calls) {
+  std::vector<BatchStep> steps;
+  steps.reserve(calls.size());
+  for (const auto& c : calls) {
+    if (py::isinstance<py::dict>(c)) {
+      steps.emplace_back(scan_inputs(c.cast<py::dict>()));
+    } else {
+      const auto t = c.cast<py::tuple>();
+      if (t.size() != 4) throw py::value_error("a submit step is (kind, axis, direction, speed_mm_s)");
+      steps.emplace_back(Command{parse(t[0], kAllCommandKinds, "kind"), t[1].cast<std::int32_t>(),
+                                 t[2].cast<std::int32_t>(), t[3].cast<std::int32_t>()});
+    }
+  }
+  return steps;
+}
+
+void run_step(SystemStateManager& m, const BatchStep& s) {
+  if (const auto* in = std::get_if<ScanInputs>(&s)) {
+    (void)m.cycle(*in);
+  } else {
+    (void)m.submit(std::get<Command>(s));
+  }
+}
+
+py::dict rows_dict(const SystemStateManager& m) {
+  py::dict d;
+  d["cycle"] = row_id(m.last_rows().cycle);
+  d["command"] = row_id(m.last_rows().command);
+  return d;
+}
+
 PYBIND11_MODULE(_core, m) {
   m.doc() =
       "The C++ SystemStateManager of safestate (docs/design/system-state-manager.md), for the\n"
@@ -290,12 +328,7 @@ PYBIND11_MODULE(_core, m) {
            "commanded_speed_mm_s, axes.")
       .def(
           "last_rows",
-          [](const SystemStateManager& self) {
-            py::dict d;
-            d["cycle"] = row_id(self.last_rows().cycle);
-            d["command"] = row_id(self.last_rows().command);
-            return d;
-          },
+          [](const SystemStateManager& self) { return rows_dict(self); },
           "Rows fired by the last cycle: {'cycle': 'C17', 'command': 'K12' or None}\n"
           "(cycle is None before the first cycle).")
       .def(
@@ -309,6 +342,38 @@ PYBIND11_MODULE(_core, m) {
           "config_error", [](const SystemStateManager& self) { return str(to_string(self.config_error())); },
           "validate() of the Config given at construction.");
 
+  m.def(
+      "probe",
+      [](const Config& config, const py::list& prefix, const py::list& probes) {
+        const std::vector<BatchStep> steps = batch_steps(prefix);
+        py::list out;
+        for (const auto& p : probes) {
+          const ScanInputs in = scan_inputs(p.cast<py::dict>());
+          auto mgr = std::make_unique<SystemStateManager>(config);  // not movable: one per probe
+          for (const auto& s : steps) run_step(*mgr, s);
+          (void)mgr->cycle(in);
+          out.append(py::make_tuple(observe(*mgr), rows_dict(*mgr)));
+        }
+        return out;
+      },
+      py::arg("config"), py::arg("prefix"), py::arg("probes"),
+      "Input-complete conformance: for each probe (a cycle's inputs dict), a fresh Manager runs\n"
+      "the prefix (cycle inputs dicts and submit tuples (kind, axis, direction, speed_mm_s)),\n"
+      "then one cycle with the probe. Returns [(observe(), last_rows())] per probe.");
+  m.def(
+      "replay",
+      [](const Config& config, const py::list& calls) {
+        const std::vector<BatchStep> steps = batch_steps(calls);
+        SystemStateManager mgr(config);
+        py::list out;
+        for (const auto& s : steps) {
+          run_step(mgr, s);
+          out.append(py::make_tuple(observe(mgr), rows_dict(mgr)));
+        }
+        return out;
+      },
+      py::arg("config"), py::arg("calls"),
+      "Run the steps (as for probe) on a fresh Manager: [(observe(), last_rows())] after each.");
   m.def("transition_table", &transition_table_list,
         "The transition table, rows C01..C23 then K01..K35, as dicts: id, section, event, source,\n"
         "effective_source, guard, kind (ENTER|STAY|REJECT), targets, reason, stop_category,\n"

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from types import ModuleType
 
 from ..checker.model import Model
+from ..errors import UsageError
 from . import itf_io
 from .cover import Trace, bfs_tree, cover, tree_path
 from .graph import StateGraph
@@ -49,6 +50,22 @@ class Options:
     max_mismatches: int = 10          # stop after this many traces disagreed
     check_rows: bool = True           # compare fired rows with the model's, per transition
     progress: Callable[[str], None] | None = None
+
+
+def check_writable(out: str | None) -> None:
+    """Fail before any work when `--out DIR` cannot be created or written."""
+    if out is None:
+        return
+    if os.path.exists(out) and not os.path.isdir(out):
+        raise UsageError(f"{out}: --out must be a directory, this is a file")
+    try:
+        os.makedirs(out, exist_ok=True)
+        probe = os.path.join(out, f".safestate-write-test-{os.getpid()}")
+        with open(probe, "w", encoding="utf-8"):
+            pass
+        os.remove(probe)
+    except OSError as e:
+        raise UsageError(f"{out}: --out directory is not writable ({e.strerror or e})") from None
 
 
 def run(model: Model, core: ModuleType, graph: StateGraph, harness: Harness, opts: Options) -> ConformResult:

@@ -1,0 +1,112 @@
+"""The C++ mutant kill table: which realistic C++ mistakes (mutants.toml) conformance
+catches -- the trace replay of every reachable transition of the CI cfg, and the
+input-complete pass -- and which GoogleTest catches.
+
+    .venv/bin/python conformance/cpp_mutants/kill_table.py BUILD_DIR [--no-gtest]
+        [--only ID ...] [--json FILE]
+
+Builds every mutant (build.py, one CMake tree), then per mutant runs the trace replay
+(stopping at the first mismatch), the input-complete pass (likewise) and, unless
+--no-gtest, every GoogleTest executable built against the mutant.  Prints a Markdown
+table.  Takes long (a surviving mutant costs a full replay and a full input-complete
+pass); the test suite runs a subset (tests/python/test_conform_input_complete.py).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+from build import REPO, Mutant, build_all, load  # noqa: E402
+
+from safestate.checker.model import load_model  # noqa: E402
+from safestate.conform import conformance, graph as graph_mod  # noqa: E402
+from safestate.conform.cli import make_harness  # noqa: E402
+from safestate.conform.input_complete import run_input_complete  # noqa: E402
+from safestate.systems.registry import find  # noqa: E402
+
+
+def gtest_kills(build: Path, m: Mutant) -> tuple[bool, list[str]]:
+    failed = []
+    for exe in sorted((build / f"gtest_{m.id}").glob("test_*")):
+        r = subprocess.run([str(exe), "--gtest_brief=1"], capture_output=True, text=True, timeout=600)
+        if r.returncode != 0:
+            failed.append(exe.name)
+    return bool(failed), failed
+
+
+def measure(build: Path, mutants: list[Mutant], gtest: bool, log=print) -> list[dict]:  # type: ignore[no-untyped-def]
+    system = find("SystemStateManager", REPO / "systems")
+    assert system is not None
+    model = load_model(str(system.model), str(system.ci_config))
+    graph = graph_mod.cached_explore(model)
+    if str(build) not in sys.path:
+        sys.path.insert(0, str(build))
+    rows = []
+    for m in mutants:
+        h = make_harness(system, model, f"safestate_mut_{m.id}._core")
+        t0 = time.monotonic()
+        with tempfile.TemporaryDirectory() as tmp:
+            res = conformance.run(model, h.core, graph, h,
+                                  conformance.Options(reproducer_dir=tmp, max_mismatches=1))
+        replay_kill = bool(res.found)
+        t1 = time.monotonic()
+        ic = run_input_complete(make_harness(system, model, f"safestate_mut_{m.id}._core"), graph)
+        t2 = time.monotonic()
+        row = {"id": m.id, "kind": m.kind, "what": m.what, "replay": replay_kill,
+               "replay_steps": res.steps, "input_complete": ic.mismatch is not None,
+               "input_complete_probes": ic.probes, "replay_s": round(t1 - t0, 1), "input_complete_s": round(t2 - t1, 1),
+               "first_mismatch": (res.found[0].mismatch.render().splitlines()[0] if res.found
+                                  else (ic.mismatch or "").splitlines()[0] if ic.mismatch else None)}
+        if gtest:
+            row["gtest"], row["gtest_failed"] = gtest_kills(build, m)
+        rows.append(row)
+        log(json.dumps(row))
+    return rows
+
+
+def table(rows: list[dict]) -> str:
+    def yn(b: bool | None) -> str:
+        return "-" if b is None else "yes" if b else "no"
+    out = ["| mutant | kind | trace replay | input-complete | conformance | GoogleTest |",
+           "|---|---|---|---|---|---|"]
+    for r in rows:
+        out.append(f"| `{r['id']}` | {r['kind']} | {yn(r['replay'])} | {yn(r['input_complete'])} | "
+                   f"{yn(r['replay'] or r['input_complete'])} | {yn(r.get('gtest'))} |")
+    killed = sum(1 for r in rows if r["replay"] or r["input_complete"])
+    replay = sum(1 for r in rows if r["replay"])
+    out.append(f"\nconformance kills {killed}/{len(rows)} ({100 * killed / max(len(rows), 1):.0f}%); "
+               f"trace replay alone {replay}/{len(rows)}")
+    if any("gtest" in r for r in rows):
+        g = sum(1 for r in rows if r.get("gtest"))
+        out.append(f"GoogleTest kills {g}/{len(rows)}")
+    return "\n".join(out)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("build", type=Path)
+    ap.add_argument("--no-gtest", action="store_true")
+    ap.add_argument("--only", nargs="+", metavar="ID")
+    ap.add_argument("--json", type=Path)
+    ap.add_argument("-j", "--jobs", type=int, default=1)
+    a = ap.parse_args()
+    mutants = [m for m in load() if not a.only or m.id in a.only]
+    build = a.build.resolve()
+    build_all(build, mutants, gtest=not a.no_gtest, jobs=a.jobs)
+    rows = measure(build, mutants, not a.no_gtest, log=lambda s: print(s, file=sys.stderr, flush=True))
+    if a.json:
+        a.json.write_text(json.dumps(rows, indent=1) + "\n", encoding="utf-8")
+    print(table(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
