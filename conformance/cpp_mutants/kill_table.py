@@ -5,7 +5,7 @@ input-complete pass -- and which GoogleTest catches.
     .venv/bin/python conformance/cpp_mutants/kill_table.py BUILD_DIR [--no-gtest]
         [--only ID ...] [--json FILE]
 
-Builds every mutant (build.py, one CMake tree), then per mutant runs the trace replay
+Builds every mutant (mutate.py, one CMake tree), then per mutant runs the trace replay
 (stopping at the first mismatch), the input-complete pass (likewise) and, unless
 --no-gtest, every GoogleTest executable built against the mutant.  Prints a Markdown
 table.  Takes long (a surviving mutant costs a full replay and a full input-complete
@@ -24,7 +24,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from build import REPO, Mutant, build_all, load  # noqa: E402
+from mutate import REPO, Mutant, build_all, load  # noqa: E402
 
 from safestate.checker.model import load_model  # noqa: E402
 from safestate.conform import conformance, graph as graph_mod  # noqa: E402

@@ -167,6 +167,60 @@ class SystemStateManagerAdapter(Adapter):
         return [(obs, frozenset(r for r in (rows["cycle"], rows["command"]) if r is not None))
                 for obs, rows in out]
 
+    # ------------------------------------------------- fast replay (optional)
+    def fires_rows(self, event: Event) -> bool:
+        return event.action == CYCLE
+
+    def _call(self, event: Event) -> Any:
+        rec = event.record()
+        if event.action == CYCLE:
+            return self.raw(rec, event.param())
+        return (rec["kind"], rec["axis"], rec["direction"], rec["speed_mm_s"])
+
+    def _expected_key(self, state: tuple) -> str:
+        """The binding's observe_key line for the model's projection of `state`."""
+        d = self.project(state)
+        return "".join(("1" if v else "0") + "|" if isinstance(v, bool) else
+                       ",".join(v) + "|" if isinstance(v, list) else f"{v}|"
+                       for v in (d[k] for k in self._observe_keys))
+
+    def fast_replay(self, traces: list[Any], rows_at: list[int]) -> tuple[int, list[frozenset[str]]]:
+        """Replay whole traces in one binding call (`core.replay_compare`), compared in C++
+        against the projections' canonical lines; (index of the first disagreeing trace
+        or -1, the rows fired after each step of `rows_at`)."""
+        if not hasattr(self, "_observe_keys"):
+            self._observe_keys = list(self.new_sut().observe())
+            self._exp_ix: dict[tuple, int] = {}
+            self._exp: list[str] = []
+        calls: list[Any] = []
+        call_ix: dict[Event, int] = {}
+        steps: list[int] = []
+        exp_ids: list[int] = []
+        starts = [0]
+        full: list[int] = []
+        qix = self.index["queue"]
+        cap = self.queue_capacity
+        exp_ix, exp = self._exp_ix, self._exp
+        for ct in traces:
+            before = ct.initial
+            for st in ct.steps:
+                ev = st.event
+                ci = call_ix.get(ev)
+                if ci is None:
+                    ci = call_ix[ev] = len(calls)
+                    calls.append(self._call(ev))
+                steps.append(ci)
+                ei = exp_ix.get(st.state)
+                if ei is None:
+                    ei = exp_ix[st.state] = len(exp)
+                    exp.append(self._expected_key(st.state))
+                exp_ids.append(ei)
+                full.append(1 if ev.action == SUBMIT and len(before[qix]) >= cap else 0)  # type: ignore[arg-type]
+                before = st.state
+            starts.append(len(steps))
+        bad, _, rows = self.core.replay_compare(self.cfg, calls, steps, exp, exp_ids, starts, full, rows_at)
+        return bad, [frozenset(r for r in pair if r is not None) for pair in rows]
+
     # ------------------------------------------------------ Hypothesis rules
     def hypothesis_rules(self) -> type:
         return flagship_rules(int(self.constants["DiscrepancyCycles"]), self.queue_capacity,

@@ -20,12 +20,13 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from typing import Any
 
 from ..checker.model import Model, load_model
-from ..errors import run_guarded
+from ..errors import UsageError, run_guarded
 from ..systems.registry import System, resolve_system
 from . import audit as audit_mod
 from . import conformance, graph as graph_mod, itf_io
@@ -78,6 +79,14 @@ def make_harness(system: System, model: Model, core_module: str | None = None) -
 
 def _run(args: argparse.Namespace) -> int:
     start = time.monotonic()
+    for opt in ("max_len", "hypothesis_steps"):
+        v = getattr(args, opt)
+        if v is not None and v < (1 if opt == "max_len" else 0):
+            raise UsageError(f"--{opt.replace('_', '-')} must be {'positive' if opt == 'max_len' else '>= 0'}, got {v}")
+    for opt in ("graph", "replay", "config"):
+        v = getattr(args, opt)
+        if v is not None and not os.path.isfile(v):
+            raise UsageError(f"{v}: --{opt} file does not exist")
     system, model_path, cfg = resolve_system(args.model, args.config)
     conformance.check_writable(args.out)
     model = load_model(model_path, cfg)

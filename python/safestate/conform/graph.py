@@ -17,10 +17,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..checker.explore import explore_states
-from ..errors import SafestateError
 from ..checker.model import Model
+from ..errors import SafestateError
 from .cover import Graph
 from .events import Event
+from .json_input import load_json
 
 
 @dataclass
@@ -123,21 +124,29 @@ def cached_explore(model: Model, progress=None) -> StateGraph:  # type: ignore[n
 
 
 def load(model: Model, path: str) -> StateGraph:
-    with open(path, encoding="utf-8") as f:
-        doc = json.load(f)
+    doc = load_json(path, "state graph")
     if not isinstance(doc, dict) or not all(k in doc for k in ("vars", "states", "edges", "initial")):
         raise GraphFileError(f"{path}: not a state graph written by `safestate check --graph` "
                              f"(expected an object with vars, states, edges, initial)")
     if doc["vars"] != list(model.variables):
         raise GraphFileError(f"{path}: the graph's variables {doc['vars']} differ from the model's "
                              f"{list(model.variables)}")
-    states = [model.state_from_itf(s["state"]) for s in doc["states"]]
+    try:
+        states = [model.state_from_itf(s["state"]) for s in doc["states"]]
+    except (KeyError, TypeError, ValueError) as e:
+        raise GraphFileError(f"{path}: a state is not an ITF state of the model ({type(e).__name__}: {e})") from None
     cache: dict[str, Event] = {}
     raw = []
-    for e in doc["edges"]:
-        key = e["action"] + json.dumps(e["params"], sort_keys=True)
-        ev = cache.get(key)
-        if ev is None:
-            ev = cache[key] = Event.from_itf(e["action"], e["params"])
-        raw.append((e["from"], e["to"], ev))
+    for i, e in enumerate(doc["edges"]):
+        try:
+            key = e["action"] + json.dumps(e["params"], sort_keys=True)
+            ev = cache.get(key)
+            if ev is None:
+                ev = cache[key] = Event.from_itf(e["action"], e["params"])
+            src, dst = int(e["from"]), int(e["to"])
+        except (KeyError, TypeError, ValueError) as x:
+            raise GraphFileError(f"{path}: edge {i} is not {{from, to, action, params}} ({type(x).__name__}: {x})") from None
+        if not (0 <= src < len(states) and 0 <= dst < len(states)):
+            raise GraphFileError(f"{path}: edge {i} names a state outside 0..{len(states) - 1}")
+        raw.append((src, dst, ev))
     return _dedup(states, list(doc["initial"]), raw)
