@@ -203,20 +203,20 @@ class SystemStateManagerAdapter(Adapter):
         exp_ix, exp = self._exp_ix, self._exp
         for ct in traces:
             before = ct.initial
-            for st in ct.steps:
-                ev = st.event
+            for step in ct.steps:
+                ev = step.event
                 ci = call_ix.get(ev)
                 if ci is None:
                     ci = call_ix[ev] = len(calls)
                     calls.append(self._call(ev))
                 steps.append(ci)
-                ei = exp_ix.get(st.state)
+                ei = exp_ix.get(step.state)
                 if ei is None:
-                    ei = exp_ix[st.state] = len(exp)
-                    exp.append(self._expected_key(st.state))
+                    ei = exp_ix[step.state] = len(exp)
+                    exp.append(self._expected_key(step.state))
                 exp_ids.append(ei)
                 full.append(1 if ev.action == SUBMIT and len(before[qix]) >= cap else 0)  # type: ignore[arg-type]
-                before = st.state
+                before = step.state
             starts.append(len(steps))
         bad, _, rows = self.core.replay_compare(self.cfg, calls, steps, exp, exp_ids, starts, full, rows_at)
         return bad, [frozenset(r for r in pair if r is not None) for pair in rows]

@@ -164,6 +164,19 @@ class Adapter:
         then the probe's concrete input; (observe(), rows fired) per probe."""
         raise NotImplementedError(f"{type(self).__name__} defines no input alphabet")
 
+    def fires_rows(self, event: Event) -> bool:
+        """Whether `event` fires table rows (compared with `rows_operator`)."""
+        return self.rows_operator is not None
+
+    def fast_replay(self, traces: list[Any], rows_at: list[int]) -> tuple[int, list[frozenset[str]]]:
+        """Optional batched replay of whole traces (`ConcreteTrace`s), compared in the
+        binding: (index of the first disagreeing trace or -1, the rows fired after each
+        flat step index of `rows_at`).  `has_fast_replay()` says whether it is defined."""
+        raise NotImplementedError
+
+    def has_fast_replay(self) -> bool:
+        return type(self).fast_replay is not Adapter.fast_replay
+
     def hypothesis_rules(self) -> type | None:
         """A mixin class of Hypothesis `@rule`s (see lockstep.py for the helpers it may use)."""
         return None

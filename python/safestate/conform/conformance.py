@@ -14,7 +14,6 @@ from ..errors import UsageError
 from . import itf_io
 from .cover import Trace, bfs_tree, cover, tree_path
 from .graph import StateGraph
-from .model_step import ModelStepper
 from .events import Event
 from .replay import Harness, Mismatch
 from .traces import ConcreteTrace, Materializer
@@ -81,7 +80,7 @@ def run(model: Model, core: ModuleType, graph: StateGraph, harness: Harness, opt
     mat.set_tree(parent)
     res = ConformResult(transitions_total=len(graph.src), traces=len(plan))
     covered = bytearray(len(graph.src))
-    if opts.fast and not opts.out and hasattr(harness.adapter, "fast_replay"):
+    if opts.fast and not opts.out and harness.adapter.has_fast_replay():
         _run_fast(model, graph, harness, opts, plan, mat, parent, res, covered, start)
     else:
         _run_steps(model, graph, harness, opts, plan, mat, parent, res, covered, start)

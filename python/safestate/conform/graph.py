@@ -137,13 +137,13 @@ def load(model: Model, path: str) -> StateGraph:
         raise GraphFileError(f"{path}: a state is not an ITF state of the model ({type(e).__name__}: {e})") from None
     cache: dict[str, Event] = {}
     raw = []
-    for i, e in enumerate(doc["edges"]):
+    for i, edge in enumerate(doc["edges"]):
         try:
-            key = e["action"] + json.dumps(e["params"], sort_keys=True)
+            key = edge["action"] + json.dumps(edge["params"], sort_keys=True)
             ev = cache.get(key)
             if ev is None:
-                ev = cache[key] = Event.from_itf(e["action"], e["params"])
-            src, dst = int(e["from"]), int(e["to"])
+                ev = cache[key] = Event.from_itf(edge["action"], edge["params"])
+            src, dst = int(edge["from"]), int(edge["to"])
         except (KeyError, TypeError, ValueError) as x:
             raise GraphFileError(f"{path}: edge {i} is not {{from, to, action, params}} ({type(x).__name__}: {x})") from None
         if not (0 <= src < len(states) and 0 <= dst < len(states)):

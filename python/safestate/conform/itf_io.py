@@ -14,7 +14,7 @@ from .traces import ConcreteTrace, Step
 
 
 def to_itf(model: Model, trace: ConcreteTrace, description: str) -> dict:
-    rows = [(trace.initial, "Init", {})]
+    rows: list[tuple[tuple, str, dict]] = [(trace.initial, "Init", {})]
     rows += [(s.state, s.event.action, dict(s.event.params)) for s in trace.steps]
     return trace_to_itf(model.variables, rows, "safestate conform", description)
 
