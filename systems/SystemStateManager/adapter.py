@@ -193,7 +193,8 @@ class SystemStateManagerAdapter(Adapter):
             self._exp_ix: dict[tuple, int] = {}
             self._exp: list[str] = []
         calls: list[Any] = []
-        call_ix: dict[Event, int] = {}
+        call_ix: dict[int, tuple[Event, int]] = {}    # id(event) -> (event kept alive, index)
+        call_val: dict[Event, int] = {}
         steps: list[int] = []
         exp_ids: list[int] = []
         starts = [0]
@@ -201,22 +202,33 @@ class SystemStateManagerAdapter(Adapter):
         qix = self.index["queue"]
         cap = self.queue_capacity
         exp_ix, exp = self._exp_ix, self._exp
+        by_id: dict[int, tuple[tuple, int]] = {}     # id(state) -> (state kept alive, index)
         for ct in traces:
             before = ct.initial
             for step in ct.steps:
                 ev = step.event
-                ci = call_ix.get(ev)
-                if ci is None:
-                    ci = call_ix[ev] = len(calls)
-                    calls.append(self._call(ev))
-                steps.append(ci)
-                ei = exp_ix.get(step.state)
-                if ei is None:
-                    ei = exp_ix[step.state] = len(exp)
-                    exp.append(self._expected_key(step.state))
-                exp_ids.append(ei)
-                full.append(1 if ev.action == SUBMIT and len(before[qix]) >= cap else 0)  # type: ignore[arg-type]
-                before = step.state
+                hit = call_ix.get(id(ev))
+                if hit is None:
+                    ci = call_val.get(ev)
+                    if ci is None:
+                        ci = call_val[ev] = len(calls)
+                        calls.append(self._call(ev))
+                    hit = call_ix[id(ev)] = (ev, ci)
+                steps.append(hit[1])
+                state = step.state
+                seen = by_id.get(id(state))
+                if seen is None:
+                    ei = exp_ix.get(state)
+                    if ei is None:
+                        ei = exp_ix[state] = len(exp)
+                        exp.append(self._expected_key(state))
+                    seen = by_id[id(state)] = (state, ei)
+                exp_ids.append(seen[1])
+                if ev.action == SUBMIT:
+                    full.append(1 if len(before[qix]) >= cap else 0)  # type: ignore[arg-type]
+                else:
+                    full.append(0)
+                before = state
             starts.append(len(steps))
         bad, _, rows = self.core.replay_compare(self.cfg, calls, steps, exp, exp_ids, starts, full, rows_at)
         return bad, [frozenset(r for r in pair if r is not None) for pair in rows]
