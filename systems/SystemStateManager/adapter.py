@@ -184,6 +184,9 @@ class SystemStateManagerAdapter(Adapter):
                        ",".join(v) + "|" if isinstance(v, list) else f"{v}|"
                        for v in (d[k] for k in self._observe_keys))
 
+    def has_fast_replay(self) -> bool:
+        return hasattr(self.core, "replay_compare")  # a binding built before it lacks it
+
     def fast_replay(self, traces: list[Any], rows_at: list[int]) -> tuple[int, list[frozenset[str]]]:
         """Replay whole traces in one binding call (`core.replay_compare`), compared in C++
         against the projections' canonical lines; (index of the first disagreeing trace

@@ -16,7 +16,6 @@ from collections import Counter
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..tla.values import fmt
 from .adapter import Adapter, differing
 from .diff import report
 from .events import Event
@@ -99,7 +98,3 @@ class Lockstep:
         if note or differing(model, cpp):
             return Mismatch(self.index, event, model, cpp, note)
         return None
-
-
-def describe(event: Event) -> str:
-    return f"{event.action}({', '.join(f'{k}={fmt(v)}' for k, v in event.params)})"
