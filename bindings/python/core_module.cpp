@@ -281,7 +281,7 @@ PYBIND11_MODULE(_core, m) {
       "upper-case string of the design page.";
 
   // module_local: the conformance suite loads a deliberately wrong build of this module
-  // (conformance/wrong_variant/) beside this one; global registration would clash.
+  // (conform/wrong_variant/) beside this one; global registration would clash.
   py::class_<Config>(m, "Config", "Parameters of the manager (design §9). Every field is read/write.",
                      py::module_local())
       .def(py::init<>(), "The defaults of design §9.")

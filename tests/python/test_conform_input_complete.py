@@ -5,7 +5,7 @@ C++ agrees.  C++ mutants that the CI cfg's restricted alphabet cannot see are ca
 
 The test probes every 16th state of the BFS order (the full pass is
 `safestate conform SystemStateManager --input-complete`, run by the main job); the
-full mutant kill table is `conformance/cpp_mutants/kill_table.py`.  The mutant
+full mutant kill table is `conform/cpp_mutants/kill_table.py`.  The mutant
 modules are built once under build/cpp_mutants (incremental afterwards).
 """
 
@@ -20,7 +20,7 @@ from safestate.conform.input_complete import run_input_complete
 from safestate.systems.registry import find
 
 REPO = Path(__file__).resolve().parents[2]
-MUTANTS_DIR = REPO / "conformance" / "cpp_mutants"
+MUTANTS_DIR = REPO / "conform" / "cpp_mutants"
 # Mistakes invisible to the CI cfg's alphabet (channel pairs {both closed, A closed/B
 # open}, abstract speed classes), one per kind of gap.
 SUBSET = ("estop_1oo2_as_xor", "t1_limit_inclusive", "tcp_speed_in_m_per_s", "selector_several_contacts_first_wins")

@@ -54,7 +54,7 @@ def full_run(system, model, graph, tmp_path_factory):
 @pytest.fixture(scope="module")
 def wrong_core(tmp_path_factory):
     build = tmp_path_factory.mktemp("wrong")
-    subprocess.run([str(REPO / "conformance" / "wrong_variant" / "build.sh"), "wrong", str(build)],
+    subprocess.run([str(REPO / "conform" / "wrong_variant" / "build.sh"), "wrong", str(build)],
                    check=True, capture_output=True)
     return load_core("safestate_wrong._core", str(build))
 

@@ -2,7 +2,7 @@
 catches -- the trace replay of every reachable transition of the CI cfg, and the
 input-complete pass -- and which GoogleTest catches.
 
-    .venv/bin/python conformance/cpp_mutants/kill_table.py BUILD_DIR [--no-gtest]
+    .venv/bin/python conform/cpp_mutants/kill_table.py BUILD_DIR [--no-gtest]
         [--only ID ...] [--json FILE]
 
 Builds every mutant (mutate.py, one CMake tree), then per mutant runs the trace replay

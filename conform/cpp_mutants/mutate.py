@@ -1,7 +1,7 @@
 """Build the C++ mutants of mutants.toml into throwaway binding modules (and, with
 --gtest, GoogleTest executables), all in ONE CMake tree:
 
-    python conformance/cpp_mutants/mutate.py BUILD_DIR [--gtest] [--only ID ...]
+    python conform/cpp_mutants/mutate.py BUILD_DIR [--gtest] [--only ID ...]
 
 Each mutation is applied to a copy of its file under BUILD_DIR/patched/<id>/ (the
 build fails when `original` does not occur exactly once: the mutation no longer
