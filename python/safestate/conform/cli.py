@@ -31,6 +31,7 @@ from ..systems.registry import System, resolve_system
 from . import audit as audit_mod
 from . import conformance, graph as graph_mod, itf_io
 from .adapter import Adapter
+from .binding import ENV as CORE_ENV
 from .binding import load_core
 from .model_step import ModelStepper
 from .replay import Harness
@@ -71,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
 def make_harness(system: System, model: Model, core_module: str | None = None) -> Harness:
     """The model stepper and the system's adapter over its binding (or `core_module`)."""
     assert system.conformance is not None
-    core = load_core(core_module or system.conformance.binding)
+    core = load_core(core_module or os.environ.get(CORE_ENV) or system.conformance.binding)
     stepper = ModelStepper(model)
     adapter: Adapter = system.load_adapter_class()(core, stepper)
     return Harness(stepper, adapter)
@@ -129,6 +130,8 @@ def _run(args: argparse.Namespace) -> int:
         "core_module": core.__name__,
         "system": system.name,
         "input_complete": complete.summary() if complete else None,
+        "replay_seconds": round(res.replay_seconds, 3),     # in batched binding calls
+        "model_seconds": round(res.model_seconds, 3),       # materialising the model's traces
         "seconds": round(time.monotonic() - start, 3),
     }
     complete_ok = res.transitions_covered == res.transitions_total and aud.ok
