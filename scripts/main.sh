@@ -17,10 +17,16 @@ echo "== systems"
 echo "== demo scenario (C++ SystemStateManager, one line per change)"
 build/cpp/safestate_demo
 
+echo "== demo scenario (C++ Safety service over UDP on the loopback, one line per change)"
+"$SAFESTATE" demo saf
+
 for m in "${MODELS[@]}"; do
   echo "== model check: system $m (its model with its CI cfg)"
   "$SAFESTATE" check "$m" --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 done
+
+echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
+"$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 
 for m in "${MODELS[@]}"; do
   echo "== proofs: system $m (every constant symbolic where its ASSUME allows)"
