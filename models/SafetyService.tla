@@ -157,6 +157,17 @@ ControlStep(s, in) ==
 
 AfterCycle(in) == ControlStep(StateStep(Intake(Svc, in), in), in)
 
+\* The rows one cycle fires (the C++ CycleResult's state_row and control_row, for
+\* the conformance row comparison): the state row on the intake's result, the
+\* control row on the state rows' result; in OPERATIONAL only K10, when it fires.
+RowsFiredBy(in) ==
+    LET s0 == Intake(Svc, in)
+        s1 == StateStep(s0, in)
+    IN {StateRow(s0, in)} \cup
+       IF s1.state \notin RaisingStates
+       THEN IF in.control = "ACCEPTED" /\ s1.out_request = "NONE" THEN {"K10"} ELSE {}
+       ELSE {ControlRow(s1, in)}
+
 -----------------------------------------------------------------------------
 SetSvc(s) ==
     /\ state' = s.state /\ estop' = s.estop /\ estop_age' = s.estop_age

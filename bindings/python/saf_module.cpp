@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "safestate/saf/safety_service.hpp"
+#include "safestate/saf/transition_table.hpp"
 
 namespace py = pybind11;
 using namespace safestate::saf;  // NOLINT
@@ -108,6 +109,19 @@ PYBIND11_MODULE(_saf, m) {
     for (const Encoded& e : encode_inbox(inbox)) out.append(to_bytes(e));
     return out;
   }, py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded.");
+
+  m.def("transition_table", [] {
+    py::list rows;
+    auto add = [&rows](std::string_view id, const char* table) {
+      py::dict d;
+      d["id"] = str(id);
+      d["table"] = table;
+      rows.append(d);
+    };
+    for (const StateRow& r : kStateRows) add(r.id, "state");
+    for (const ControlRow& r : kControlRows) add(r.id, "control");
+    return rows;
+  }, "Every row of design §6 (state) and §7 (control): [{id, table}], for the conformance audit.");
 
   m.def("decode_error", [](const py::bytes& b) {
     const std::string_view v = b;

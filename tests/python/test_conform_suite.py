@@ -1,5 +1,5 @@
 """`safestate conform` on the CI configuration, for every system of the registry with
-a conformance adapter (the flagship today): the C++ agrees with the model on every
+a conformance adapter (the flagship and the Safety service): the C++ agrees with the model on every
 reachable transition and under Hypothesis lockstep testing, every table row is
 taken, and a deliberately wrong C++ build is caught by both methods.
 
@@ -17,7 +17,9 @@ import pytest
 from safestate.checker.model import load_model
 from safestate.conform import audit as audit_mod
 from safestate.conform import conformance, graph as graph_mod, itf_io
+from safestate.conform.adapter import Adapter
 from safestate.conform.binding import load_core
+from safestate.conform.input_complete import run_input_complete
 from safestate.conform.cli import make_harness
 from safestate.conform.cover import cover
 from safestate.conform.lockstep import run_lockstep
@@ -51,16 +53,22 @@ def full_run(system, model, graph, tmp_path_factory):
     return res, h
 
 
-@pytest.fixture(scope="module")
-def wrong_core(tmp_path_factory):
+@pytest.fixture(scope="session")
+def wrong_build(tmp_path_factory):
+    """conform/wrong_variant/ built once: safestate_wrong._core and safestate_wrong._saf."""
     build = tmp_path_factory.mktemp("wrong")
     subprocess.run([str(REPO / "conform" / "wrong_variant" / "build.sh"), "wrong", str(build)],
                    check=True, capture_output=True)
-    return load_core("safestate_wrong._core", str(build))
+    return str(build)
 
 
-def test_registry_lists_the_flagship_with_a_conformance_adapter():
-    assert "SystemStateManager" in SYSTEMS
+@pytest.fixture(scope="module")
+def wrong_core(system, wrong_build):
+    return load_core(system.conformance.wrong_binding, wrong_build)
+
+
+def test_registry_lists_every_system_with_a_conformance_adapter():
+    assert {"SystemStateManager", "SafetyService"} <= set(SYSTEMS)
 
 
 def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition(full_run, graph):
@@ -87,19 +95,24 @@ def test_hypothesis_lockstep_agrees_for_at_least_10000_steps(system, model):
     assert steps >= STEPS
 
 
+def test_input_complete_pass_agrees_on_every_64th_state(system, model, graph):
+    """The full pass is `safestate conform <Name> --input-complete` (the main job)."""
+    h = make_harness(system, model)
+    if type(h.adapter).input_alphabet is Adapter.input_alphabet:
+        pytest.skip(f"{system.name} defines no input alphabet")
+    res = run_input_complete(h, graph, stride=64)
+    assert res.mismatch is None, res.mismatch
+    assert res.states == len(range(0, len(graph.states), 64))
+    assert res.probes > res.states
+
+
 def test_trace_cover_is_deterministic(graph):
     g = graph.as_cover_graph()
     assert cover(g) == cover(g)
 
 
-def _flagship_only(system):
-    if system.name != "SystemStateManager":
-        pytest.skip("the wrong variant is a build of the flagship's C++")
-
-
 def test_wrong_variant_is_caught_by_trace_replay(system, model, graph, wrong_core, tmp_path):
-    _flagship_only(system)
-    h = make_harness(system, model, "safestate_wrong._core")
+    h = make_harness(system, model, system.conformance.wrong_binding)
     res = conformance.run(model, wrong_core, graph, h,
                           conformance.Options(reproducer_dir=str(tmp_path), max_mismatches=1))
     assert len(res.found) == 1
@@ -116,8 +129,7 @@ def test_wrong_variant_is_caught_by_trace_replay(system, model, graph, wrong_cor
 
 
 def test_wrong_variant_is_caught_by_hypothesis(system, model, wrong_core):
-    _flagship_only(system)
-    h = make_harness(system, model, "safestate_wrong._core")
+    h = make_harness(system, model, system.conformance.wrong_binding)
     steps, failure = run_lockstep(h, model, 50 * STEPS)
     assert failure is not None, f"not caught in {steps} steps"
     print(failure)

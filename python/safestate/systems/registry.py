@@ -34,6 +34,12 @@ class Conformance:
     config: Path | None = None    # the cfg conformance runs against (default: the system's ci_config)
     hypothesis_steps: int = 0     # Hypothesis lockstep steps of the main job
 
+    @property
+    def wrong_binding(self) -> str:
+        """The binding module of the deliberately wrong build (conform/wrong_variant/):
+        the same module name in the package `safestate_wrong`."""
+        return "safestate_wrong." + self.binding.rsplit(".", 1)[-1]
+
 
 @dataclass
 class System:
