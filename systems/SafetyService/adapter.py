@@ -11,7 +11,7 @@
 * Input-complete alphabet: from each state, every model inbox, and the same abstract
   inboxes written differently on the wire: the other response codes and holders that
   mean the same control event, duplicated and superseded messages (the last of each
-  kind wins), the diagnostic Report Subsystem State, outgoing message types, and one
+  kind wins), Report Subsystem State(EMERGENCY), outgoing message types, and one
   datagram of every reject reason (design §5, §10).  WARNING health is left out: the
   model's alphabet has no WARNING (it behaves as NORMAL in every row, but `observe()`
   reports it as WARNING; GoogleTest covers it).
@@ -53,9 +53,10 @@ GARBAGE: dict[str, bytes] = {
     "FIELD_RANGE": datagram(SET_ESTOP, b"\x07"),
     "NOT_INCOMING": datagram(QUERY_CONTROL, b""),
 }
-# Accepted messages that change nothing the model sees: diagnostics and outgoing types.
-INERT: dict[str, bytes] = {f"Report Subsystem State {s}": datagram(REPORT_SUBSYSTEM_STATE, bytes([s]))
-                           for s in range(4)}
+# Accepted messages that change nothing the model sees.  Only Report Subsystem State
+# (EMERGENCY): any other value makes the C++ re-send Set Subsystem State(EMERGENCY) while
+# it holds control, a C++-only rule outside the model's alphabet (design §7).
+INERT: dict[str, bytes] = {"Report Subsystem State(EMERGENCY)": datagram(REPORT_SUBSYSTEM_STATE, b"\x02")}
 OUTGOING = [datagram(QUERY_HEALTH, b""), datagram(QUERY_CONTROL, b""), datagram(REQUEST_CONTROL, bytes(6)),
             datagram(SET_SUBSYSTEM_STATE, b"\x02")]
 # An earlier message of the same kind that the last one of the cycle overrides.
@@ -159,7 +160,7 @@ class SafetyServiceAdapter(Adapter):
         for label, d in self._control_alternatives.get(str(rec["control"]), ()):
             probes.append(Probe(event, kept + [d], f"{name}: {label}"))
         # An earlier message of each kind that the last one overrides, every message
-        # twice, and the diagnostic Report Subsystem State: <= 13 datagrams.
+        # twice, and Report Subsystem State(EMERGENCY): <= 10 datagrams.
         first = [d for k in ("estop", "health", "control") for d in SUPERSEDED[k].get(str(rec[k]), ())]
         probes.append(Probe(event, first + valid + valid + list(INERT.values()),
                             f"{name}: superseded messages first, every message twice, Report Subsystem State"))
