@@ -128,7 +128,9 @@ PYBIND11_MODULE(_saf, m) {
     return str(to_string(decode(reinterpret_cast<const std::uint8_t*>(v.data()), v.size()).error));
   }, py::arg("datagram"), "NONE for a well-formed datagram, else the reject reason.");
 
-  py::class_<SafetyService>(m, "SafetyService")
+  // module_local: the wrong-variant build (conform/wrong_variant/) loads a second module
+  // with the same C++ type into the same process.
+  py::class_<SafetyService>(m, "SafetyService", py::module_local())
       .def(py::init([](std::uint32_t estop_timeout_cycles, std::uint32_t report_data_timeout_cycles,
                        std::uint32_t message_interval_cycles, std::uint32_t check_interval_cycles,
                        std::uint8_t authority_code) {
