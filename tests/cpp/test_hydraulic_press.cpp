@@ -113,3 +113,62 @@ TEST(HydraulicPress, SCH03_CoolingIsAParallelSubChainExitedWithTheMotor) {
 }
 
 }  // namespace
+
+// The counterexample `safestate check models/HydraulicPressFlat.tla --itf` wrote
+// (models/traces/HydraulicPressFlat_INV_PRESS.itf.json), replayed event by event.
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::vector<std::string> itf_events(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string s = text.str();
+  std::vector<std::string> events;
+  const std::regex event_re("\"event\": \"(\\w+)\"");
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), event_re); it != std::sregex_iterator(); ++it) {
+    if ((*it)[1] != "init") events.push_back((*it)[1]);
+  }
+  return events;
+}
+
+// The model's input event -> one scan's PressInputs (design page §7); `continuous` is a level.
+sc::PressInputs inputs_of(const std::string& e, bool& continuous) {
+  sc::PressInputs i;
+  if (e == "continuous_on") continuous = true;
+  if (e == "continuous_off") continuous = false;
+  i.continuous = continuous;
+  i.motor_on = e == "motor_on";
+  i.motor_off = e == "motor_off";
+  i.start = e == "start";
+  i.ret = e == "ret";
+  i.step_done = e == "step_done";
+  i.temp_high = e == "temp_high";
+  i.temp_ok = e == "temp_ok";
+  if (e.rfind("mode", 0) == 0) i.mode = static_cast<std::uint8_t>(e.back() - '0');
+  return i;
+}
+
+TEST(HydraulicPressAccidentReplay, INV_PRESS_CheckerCounterexampleEnergisesTheFlatPressNotTheChain) {
+  const auto events = itf_events(std::string(SAFESTATE_SOURCE_DIR) + "/models/traces/HydraulicPressFlat_INV_PRESS.itf.json");
+  ASSERT_EQ(events, (std::vector<std::string>{"motor_on", "start", "motor_off", "motor_on"}));
+  sc::PressFlat flat;
+  sc::HydraulicPress chain;
+  bool flat_cont = false, chain_cont = false;
+  sc::PressOutputs flat_out, chain_out;
+  for (const std::string& e : events) {
+    flat_out = flat.cycle(inputs_of(e, flat_cont));
+    chain_out = chain.cycle(inputs_of(e, chain_cont));
+  }
+  EXPECT_TRUE(flat_out.on(sc::Output::motor) && flat_out.on(sc::Output::feed_valve));
+  EXPECT_TRUE(chain_out.on(sc::Output::motor));
+  EXPECT_FALSE(chain_out.any_stroke_output());
+  EXPECT_EQ(chain.observe().step, sc::PressStep::ready);
+}
+
+}  // namespace
