@@ -64,6 +64,7 @@ Spec == Init /\ [][Next]_vars
 
 TypeOK ==
     /\ MoToOut \in BOOLEAN /\ cur \in 0..8 /\ FangShi \in 1..3 /\ continuous \in BOOLEAN
+    /\ outputs \subseteq {"motor"} \cup StrokeOutputs
     /\ restarted \in BOOLEAN /\ event \in Inputs \cup {"init"}
 
 \* SCH-05 INV-PRESS (same text as HydraulicPress.tla): violated here.
