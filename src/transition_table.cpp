@@ -117,6 +117,25 @@ bool jog_arguments_invalid(const StepContext& c) noexcept {
 
 bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }
 
+// C24: the fieldbus (EtherCAT) or the cycle watchdog reports a loss.
+bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
+
+// C25: power on, no motion commanded (every axis Disabled/StandStill), measured motion.
+bool moving_at_standstill(const StepContext& c) noexcept {
+  return c.in.axes_at_rest && c.in.speed != SpeedLevel::Zero;
+}
+
+// K36: the Reset was queued before the E-stop release (C07 counted it as stale).
+bool reset_submitted_before_release(const StepContext& c) noexcept { return c.reset.stale_commands > 0; }
+
+// K37: not both E-stop channels seen open since the last accepted Reset.
+bool estop_channels_not_both_tested(const StepContext& c) noexcept {
+  return !(c.reset.estop_tested_a && c.reset.estop_tested_b);
+}
+
+// K38: IDLE only since this cycle's §5 row (C05, C11, C18): power was never seen off.
+bool not_idle_at_cycle_start(const StepContext& c) noexcept { return c.cycle_start_state != StateId::Idle; }
+
 }  // namespace guards
 
 namespace actions {
@@ -133,16 +152,33 @@ void lockout_arming_timeout(StepContext& c) noexcept {
   c.state = states::ErrorLockout{FaultCode::ArmingTimeout};
 }
 void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
+void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::FieldbusLoss}; }
+void lockout_standstill_violation(StepContext& c) noexcept {
+  c.state = states::ErrorLockout{FaultCode::StandstillViolation};
+}
 
 void enter_estop_active(StepContext& c) noexcept { c.state = states::EstopActive{}; }
-void enter_estop_reset_needed(StepContext& c) noexcept { c.state = states::EstopResetNeeded{}; }
+// C07: every command queued now was submitted before the release (K36).
+void enter_estop_reset_needed(StepContext& c) noexcept {
+  c.state = states::EstopResetNeeded{};
+  c.reset.stale_commands = static_cast<std::uint32_t>(c.queued_commands);
+}
 
 // Entering IDLE sets t2_confirmed FALSE (§4).
 void enter_idle(StepContext& c) noexcept { c.state = states::Idle{false}; }
 
-// Cat 1: ramp down with power kept; no resume target, no jog (§4).
+// K05: the accepted Reset starts a new channel test (K37).
+void reset_to_idle(StepContext& c) noexcept {
+  enter_idle(c);
+  c.reset.estop_tested_a = false;
+  c.reset.estop_tested_b = false;
+}
+
+// Cat 1: ramp down with power kept; no resume target, no jog (§4). Escalating a stop in
+// progress (STOPPING CAT2) keeps its timer: the watchdog runs from the first trigger.
 void enter_stopping_cat1(StepContext& c) noexcept {
-  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, 0, ResumeTarget::None, JogSetpoint{}};
+  const std::uint32_t kept = state_id(c.state) == StateId::Stopping ? state_cycles(c.state) : 0U;
+  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, kept, ResumeTarget::None, JogSetpoint{}};
 }
 
 // K20 Pause: Cat 2, remembers the motion state; a paused jog keeps its setpoint.
