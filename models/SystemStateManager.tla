@@ -296,8 +296,11 @@ DiscrepancyCode(m) ==
 -----------------------------------------------------------------------------
 (************ §5 Safety evaluation: one guard and one effect per row ********)
 (* `m` is the manager after §3 (its state is the state before the row).  *)
-StopCat1Free(m) ==        \* "powered, not (STOPPING with CAT1)" (C12-C14)
-    m.state \in Powered /\ ~(m.state = "STOPPING" /\ m.stop_category = "CAT1")
+\* "powered, not (STOPPING with CAT1 or with its timer expired)" (C12-C14):
+\* an expired stop timer is C20's (Cat 0), not an escalation.
+StopCat1Free(m) ==
+    /\ m.state \in Powered
+    /\ ~(m.state = "STOPPING" /\ (m.stop_category = "CAT1" \/ m.state_cycles = MaxStopCycles))
 
 C01_Guard(m, in) == m.state = "ERROR_LOCKOUT"                   \* RSM-04
 C02_Guard(m, in) == m.state = "BOOT" /\ ~in.self_test_ok        \* RSM-12
@@ -347,9 +350,10 @@ C10(m, in) == Lockout(m, "T1_OVERSPEED")
 C25(m, in) == Lockout(m, "STANDSTILL_VIOLATION")
 C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
 \* A Cat 1 stop; escalating a stop in progress (STOPPING CAT2) keeps its
-\* timer: the stop watchdog runs from the first trigger of the episode.
+\* timer and counts the cycle (as C21): the stop watchdog runs from the
+\* first trigger of the episode.
 StopCat1(m) == [WithCat(Enter(m, "STOPPING"), "CAT1")
-                  EXCEPT !.state_cycles = IF m.state = "STOPPING" THEN m.state_cycles
+                  EXCEPT !.state_cycles = IF m.state = "STOPPING" THEN m.state_cycles + 1
                                                                   ELSE 0]
 C12(m, in) == StopCat1(m)
 C13(m, in) == StopCat1(m)

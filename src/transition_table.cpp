@@ -11,8 +11,11 @@ namespace safestate {
 
 namespace {
 
-bool stopping_cat1(const MachineState& s) noexcept {
-  return stopping_category(s) == StopCategory::Cat1;
+// C12-C14 do not fire in STOPPING with CAT1 (already the stop asked for) nor with the stop
+// timer expired (C20 cuts power: Cat 0 beats an escalation to Cat 1).
+bool stopping_cat1(const StepContext& c) noexcept {
+  return stopping_category(c.state) == StopCategory::Cat1 ||
+         (state_id(c.state) == StateId::Stopping && state_cycles(c.state) == c.config.max_stop_cycles);
 }
 
 }  // namespace
@@ -43,19 +46,19 @@ bool manual_session_panic(const StepContext& c) noexcept {
   return is_manual(session_mode(c.state)) && c.in.enable_panic;
 }
 
-// C12: not (STOPPING with CAT1) ∧ selector ≠ session_mode (a change, or INVALID).
+// C12: not (STOPPING with CAT1 or timer expired) ∧ selector ≠ session_mode (a change, or INVALID).
 bool selector_differs_from_session_unless_cat1_stopping(const StepContext& c) noexcept {
-  return !stopping_cat1(c.state) && !selector_matches(c.in.selector, session_mode(c.state));
+  return !stopping_cat1(c) && !selector_matches(c.in.selector, session_mode(c.state));
 }
 
-// C13: not (STOPPING with CAT1) ∧ session_mode = AUTO ∧ gate_open.
+// C13: not (STOPPING with CAT1 or timer expired) ∧ session_mode = AUTO ∧ gate_open.
 bool auto_session_gate_open_unless_cat1_stopping(const StepContext& c) noexcept {
-  return !stopping_cat1(c.state) && session_mode(c.state) == OperatingMode::Auto && c.in.gate_open;
+  return !stopping_cat1(c) && session_mode(c.state) == OperatingMode::Auto && c.in.gate_open;
 }
 
-// C14: not (STOPPING with CAT1) ∧ manual ∧ ¬enable_middle.
+// C14: not (STOPPING with CAT1 or timer expired) ∧ manual ∧ ¬enable_middle.
 bool manual_session_enable_not_middle_unless_cat1_stopping(const StepContext& c) noexcept {
-  return !stopping_cat1(c.state) && is_manual(session_mode(c.state)) && !c.in.enable_middle;
+  return !stopping_cat1(c) && is_manual(session_mode(c.state)) && !c.in.enable_middle;
 }
 
 bool servo_ready(const StepContext& c) noexcept { return c.in.servo_ready; }
@@ -175,9 +178,10 @@ void reset_to_idle(StepContext& c) noexcept {
 }
 
 // Cat 1: ramp down with power kept; no resume target, no jog (§4). Escalating a stop in
-// progress (STOPPING CAT2) keeps its timer: the watchdog runs from the first trigger.
+// progress (STOPPING CAT2) keeps its timer and counts the cycle (as C21): the watchdog
+// runs from the first trigger (C12-C14 never fire with the timer expired).
 void enter_stopping_cat1(StepContext& c) noexcept {
-  const std::uint32_t kept = state_id(c.state) == StateId::Stopping ? state_cycles(c.state) : 0U;
+  const std::uint32_t kept = state_id(c.state) == StateId::Stopping ? state_cycles(c.state) + 1U : 0U;
   c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, kept, ResumeTarget::None, JogSetpoint{}};
 }
 

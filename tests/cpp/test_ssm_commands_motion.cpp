@@ -477,7 +477,7 @@ TEST(RSM11_Stopping, Cat2StopEscalatesToCat1AndKeepsTheStopTimer) {
   r.cycle();
   EXPECT_EQ(r.state(), StateId::Stopping);
   EXPECT_EQ(r.st().stop_category, StopCategory::Cat1);
-  EXPECT_EQ(r.st().state_cycles, 5U);
+  EXPECT_EQ(r.st().state_cycles, 6U);  // kept, and this cycle counted
   r.in.qd = kRest;
   r.cycle();
   EXPECT_EQ(r.state(), StateId::Idle);  // Cat 1 ends unpowered, not in HOLD
