@@ -160,7 +160,8 @@ VARIABLES inputs, event
 (*                    (pairs) or read an invalid selector, capped at D+1.  *)
 (*   obs_locked    -- RSM-04: a fault code was ever output.               *)
 (*   obs_ramp      -- RSM-11: consecutive cycles ending with the          *)
-(*                    ramp-down request output on (capped).               *)
+(*                    ramp-down request output on while the arm was       *)
+(*                    measured moving (not yet at standstill; capped).    *)
 (*   last_accepted -- the kind of command the last cycle accepted, "NONE".*)
 (*   jog_in_auto   -- RSM-08: the last cycle popped JOG_START/JOG_STOP    *)
 (*                    with selector AUTO or session AUTO.                 *)
@@ -296,11 +297,14 @@ DiscrepancyCode(m) ==
 -----------------------------------------------------------------------------
 (************ §5 Safety evaluation: one guard and one effect per row ********)
 (* `m` is the manager after §3 (its state is the state before the row).  *)
-\* "powered, not (STOPPING with CAT1 or with its timer expired)" (C12-C14):
-\* an expired stop timer is C20's (Cat 0), not an escalation.
-StopCat1Free(m) ==
+\* "powered, not (STOPPING with CAT1, or with its timer expired and the arm
+\* still moving)" (C12-C14): an expired stop timer is C20's (Cat 0), not an
+\* escalation.
+StopCat1Free(m, in) ==
     /\ m.state \in Powered
-    /\ ~(m.state = "STOPPING" /\ (m.stop_category = "CAT1" \/ m.state_cycles = MaxStopCycles))
+    /\ ~(/\ m.state = "STOPPING"
+         /\ \/ m.stop_category = "CAT1"
+            \/ m.state_cycles = MaxStopCycles /\ in.speed # "ZERO")
 
 C01_Guard(m, in) == m.state = "ERROR_LOCKOUT"                   \* RSM-04
 C02_Guard(m, in) == m.state = "BOOT" /\ ~in.self_test_ok        \* RSM-12
@@ -320,9 +324,9 @@ C25_Guard(m, in) == /\ m.state \in {"ARMING", "AUTO_IDLE", "MANUAL_IDLE", "HOLD"
                     /\ \A i \in Axes : m.axes[i] \in {"Disabled", "StandStill"}
                     /\ in.speed # "ZERO"                          \* RSM-11, RSM-03
 C11_Guard(m, in) == m.state \in Powered /\ Manual(m) /\ EnablePanic(in)  \* RSM-09
-C12_Guard(m, in) == StopCat1Free(m) /\ in.selector # m.session_mode      \* RSM-02
-C13_Guard(m, in) == StopCat1Free(m) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
-C14_Guard(m, in) == StopCat1Free(m) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
+C12_Guard(m, in) == StopCat1Free(m, in) /\ in.selector # m.session_mode      \* RSM-02
+C13_Guard(m, in) == StopCat1Free(m, in) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
+C14_Guard(m, in) == StopCat1Free(m, in) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
 C15_Guard(m, in) == m.state = "ARMING" /\ in.servo_ready                 \* RSM-07
 C16_Guard(m, in) == m.state = "ARMING" /\ m.state_cycles = ArmingTimeoutCycles
 C17_Guard(m, in) == m.state = "ARMING"                                   \* RSM-07
@@ -350,11 +354,12 @@ C10(m, in) == Lockout(m, "T1_OVERSPEED")
 C25(m, in) == Lockout(m, "STANDSTILL_VIOLATION")
 C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
 \* A Cat 1 stop; escalating a stop in progress (STOPPING CAT2) keeps its
-\* timer and counts the cycle (as C21): the stop watchdog runs from the
-\* first trigger of the episode.
+\* timer and counts the cycle (as C21, at most up to the limit): the stop
+\* watchdog runs from the first trigger of the episode.
 StopCat1(m) == [WithCat(Enter(m, "STOPPING"), "CAT1")
-                  EXCEPT !.state_cycles = IF m.state = "STOPPING" THEN m.state_cycles + 1
-                                                                  ELSE 0]
+                  EXCEPT !.state_cycles = IF m.state = "STOPPING"
+                                          THEN Min(m.state_cycles + 1, MaxStopCycles)
+                                          ELSE 0]
 C12(m, in) == StopCat1(m)
 C13(m, in) == StopCat1(m)
 C14(m, in) == StopCat1(m)
@@ -428,9 +433,11 @@ CommandRow(m, c, in) ==
         ELSE IF ~(m.estop_tested_a /\ m.estop_tested_b) THEN "K37"  \* channel test
         ELSE "K05"
    [] c.kind = "SERVO_ON" ->                                          \* RSM-06
-        \* K06: IDLE before and after §5: a Servo-on popped in the cycle whose
-        \* §5 row removed power (C11, C18) would keep the contactor closed.
-        IF      m.state # "IDLE" \/ state # "IDLE"                THEN "K06"
+        \* K38: IDLE before §5 too (`state` is the state at the cycle start): a
+        \* Servo-on popped in the cycle whose §5 row removed power (C11, C18)
+        \* would keep the contactor closed across the stop.
+        IF      m.state # "IDLE"                                  THEN "K06"
+        ELSE IF state # "IDLE"                                    THEN "K38"
         ELSE IF in.drive_fault                                    THEN "K07"
         ELSE IF m.selector = "INVALID"                            THEN "K08"
         ELSE IF m.selector = "AUTO" /\ GateOpen(in)               THEN "K09"
@@ -470,7 +477,7 @@ CommandRow(m, c, in) ==
 RejectReason ==
     [K01 |-> "LOCKED_OUT",    K02 |-> "ESTOP_PRESSED",    K03 |-> "WRONG_STATE",
      K04 |-> "DRIVE_FAULT",   K36 |-> "ESTOP_PRESSED",    K37 |-> "CHANNEL_TEST_PENDING",
-     K06 |-> "WRONG_STATE",      K07 |-> "DRIVE_FAULT",
+     K06 |-> "WRONG_STATE",   K38 |-> "WRONG_STATE",      K07 |-> "DRIVE_FAULT",
      K08 |-> "SELECTOR_INVALID", K09 |-> "SAFEGUARD_OPEN",
      K10 |-> "ENABLE_NOT_MIDDLE", K11 |-> "T2_NOT_CONFIRMED",
      K13 |-> "WRONG_STATE",   K15 |-> "WRONG_MODE",       K16 |-> "WRONG_STATE",
@@ -610,7 +617,8 @@ Cycle(in) ==
              enable   |-> n(obs_disagree.enable, in.enable_a # in.enable_b),
              selector |-> n(obs_disagree.selector, in.selector \notin Modes)]
        /\ obs_locked' = (obs_locked \/ m.fault_code # "NONE")
-       /\ obs_ramp' = IF RampDownOut(m) THEN Min(obs_ramp + 1, MaxStopCycles + 2) ELSE 0
+       /\ obs_ramp' = IF RampDownOut(m) /\ in.speed # "ZERO"
+                      THEN Min(obs_ramp + 1, MaxStopCycles + 2) ELSE 0
        /\ last_accepted' = acc
        /\ jog_in_auto' = /\ Popped \in {"JOG_START", "JOG_STOP"}
                          /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
@@ -864,9 +872,9 @@ INV_ENABLE ==
         /\ inputs.enable_a # "PANIC" /\ inputs.enable_b # "PANIC"
         /\ (inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE") \/ Cat1Ramp
 
-\* RSM-11: every stop reaches standstill (the ramp-down request ends) within
-\* MaxStopCycles of its FIRST trigger: the ramp-down output is on for at
-\* most MaxStopCycles + 1 consecutive cycles (the trigger cycle, then
+\* RSM-11: every stop reaches standstill within MaxStopCycles of its FIRST
+\* trigger: the ramp-down output is on with the arm moving for at most
+\* MaxStopCycles + 1 consecutive cycles (the trigger cycle, then
 \* MaxStopCycles full cycles), escalation from Cat 2 to Cat 1 included.
 RSM11_STOP_BUDGET == obs_ramp <= MaxStopCycles + 1
 

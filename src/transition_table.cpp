@@ -12,10 +12,11 @@ namespace safestate {
 namespace {
 
 // C12-C14 do not fire in STOPPING with CAT1 (already the stop asked for) nor with the stop
-// timer expired (C20 cuts power: Cat 0 beats an escalation to Cat 1).
+// timer expired and the arm still moving (C20 cuts power: Cat 0 beats an escalation).
 bool stopping_cat1(const StepContext& c) noexcept {
   return stopping_category(c.state) == StopCategory::Cat1 ||
-         (state_id(c.state) == StateId::Stopping && state_cycles(c.state) == c.config.max_stop_cycles);
+         (state_id(c.state) == StateId::Stopping && state_cycles(c.state) == c.config.max_stop_cycles &&
+          c.in.speed != SpeedLevel::Zero);
 }
 
 }  // namespace
@@ -181,7 +182,8 @@ void reset_to_idle(StepContext& c) noexcept {
 // progress (STOPPING CAT2) keeps its timer and counts the cycle (as C21): the watchdog
 // runs from the first trigger (C12-C14 never fire with the timer expired).
 void enter_stopping_cat1(StepContext& c) noexcept {
-  const std::uint32_t kept = state_id(c.state) == StateId::Stopping ? state_cycles(c.state) + 1U : 0U;
+  const std::uint32_t kept =
+      state_id(c.state) == StateId::Stopping ? std::min(state_cycles(c.state) + 1U, c.config.max_stop_cycles) : 0U;
   c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, kept, ResumeTarget::None, JogSetpoint{}};
 }
 

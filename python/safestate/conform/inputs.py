@@ -64,6 +64,8 @@ class InputMapper:
             "selector_auto": sel == "AUTO", "selector_t1": sel == "T1", "selector_t2": sel == "T2",
             "self_test_ok": rec["self_test_ok"], "servo_ready": rec["servo_ready"],
             "drive_fault": rec["drive_fault"],
+            # issue 17 (C24): the fieldbus/cycle watchdog input of ScanInputs.
+            "fieldbus_ok": rec["fieldbus_ok"],
             "q": POSE, "qd": self.speeds[rec["speed"]],  # type: ignore[index]
         }
         if key is not None:

@@ -3,8 +3,8 @@
 The status record (design §7) is the model variable of the same name, `jog` is split
 into jog_axis / jog_direction / jog_speed_mm_s, and the outputs are the model's own
 output operators (contactor_closed, ..., commanded_speed_mm_s, queue_length),
-evaluated by the checker.  History and environment variables (inputs, event,
-reset_since_trip, ...) are not observable and are left out.
+evaluated by the checker.  History and environment variables (inputs, event, the
+requirement observers obs_*, ...) are not observable and are left out.
 """
 
 from __future__ import annotations
@@ -17,7 +17,9 @@ from .model_step import ModelStepper
 # observe() keys taken from a model variable of the same name.
 STATUS_VARS = ("state", "selector", "session_mode", "stop_category", "fault_code", "last_reject_reason",
                "command_result", "estop_mismatch", "safeguard_mismatch", "enabling_mismatch",
-               "selector_invalid", "state_cycles", "t2_confirmed", "resume_to")
+               "selector_invalid", "state_cycles", "t2_confirmed", "resume_to",
+               # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
+               "stale_commands", "estop_tested_a", "estop_tested_b")
 # observe() keys computed by a model operator of the same name (§7 outputs).
 OUTPUT_OPS = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request", "reset_lamp",
               "commanded_speed_mm_s", "queue_length")
