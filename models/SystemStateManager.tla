@@ -787,7 +787,8 @@ TypeOK ==
     /\ estop_tested_a \in BOOLEAN /\ estop_tested_b \in BOOLEAN
     /\ obs_estop \in {"CLEAR", "DEMANDED", "RELEASED", "RESET_ISSUED"}
     /\ obs_open_a \in BOOLEAN /\ obs_open_b \in BOOLEAN
-    /\ obs_disagree \in [{"estop", "gate", "enable", "selector"} -> 0..(D + 1)]
+    /\ obs_disagree \in [estop: 0..(D + 1), gate: 0..(D + 1), enable: 0..(D + 1),
+                         selector: 0..(D + 1)]
     /\ obs_locked \in BOOLEAN /\ obs_ramp \in 0..(MaxStopCycles + 2)
     /\ last_accepted \in CommandKinds \cup {"NONE"}
     /\ jog_in_auto \in BOOLEAN /\ obs_guard_fault \in BOOLEAN
