@@ -36,7 +36,7 @@ Strengthen_RESET ==
     /\ state \in Powered \cup {"IDLE", "BOOT"} => obs_estop = "CLEAR"
     /\ obs_estop = "DEMANDED" => state \in {"ESTOP_ACTIVE", "ERROR_LOCKOUT"}
     /\ obs_estop \in {"RELEASED", "RESET_ISSUED"} => state \in {"ESTOP_RESET_NEEDED", "ERROR_LOCKOUT"}
-    /\ obs_estop = "RELEASED" =>
+    /\ obs_estop = "RELEASED" /\ state = "ESTOP_RESET_NEEDED" =>
            \A i \in 1..Len(queue) : queue[i].kind = "RESET" => i <= stale_commands
     /\ stale_commands <= Len(queue)
     /\ last_accepted = "RESET" => state = "IDLE"
