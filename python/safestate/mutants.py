@@ -12,7 +12,7 @@ which file and what was looked for.
     requirement = "RSM-03"
     invariant = "RSM03_ESTOP_CAT0"
     expect = "violated"        # or "holds": the invariant is a witness the mutant loses
-    trace_length = 6           # TLC's, for "violated"
+    trace_length = 6           # TLC's, for "violated" (optional: not yet recorded)
     distinct_states = 1234     # TLC's distinct states at the violation (or in all, "holds")
     why = "..."
     [[mutant.patch]]
@@ -52,8 +52,8 @@ class Mutant:
     requirement: str
     invariant: str
     expect: str             # "violated" or "holds"
-    trace_length: int | None
-    distinct_states: int
+    trace_length: int | None     # TLC's; None: not recorded yet (the kill is still checked)
+    distinct_states: int | None  # likewise
     why: str
     patches: tuple[Patch, ...]
 
@@ -78,7 +78,7 @@ def load(path: Path) -> list[Mutant]:
             if expect not in ("violated", "holds"):
                 raise MutationError(f"{where}: expect must be 'violated' or 'holds', not {expect!r}")
             out.append(Mutant(model, m["name"], m["requirement"], m["invariant"], expect,
-                              m.get("trace_length"), m["distinct_states"], m.get("why", ""), patches))
+                              m.get("trace_length"), m.get("distinct_states"), m.get("why", ""), patches))
         except KeyError as e:
             raise MutationError(f"{where}: missing key {e}") from e
     names = [m.name for m in out]
