@@ -73,11 +73,15 @@ def load(path: Path) -> list[Mutant]:
     for i, m in enumerate(data.get("mutant", [])):
         where = f"{path}: mutant #{i + 1}"
         try:
-            patches = tuple(Patch(p["file"], p["original"], p["replacement"]) for p in m["patch"])
+            if "patch" in m:
+                patches = tuple(Patch(p["file"], p["original"], p["replacement"]) for p in m["patch"])
+            else:  # the flat form of models/mutants/SafetyService.toml: one patch, `target`
+                patches = (Patch(Path(m["file"]).name, m["original"], m["replacement"]),)
             expect = m.get("expect", "violated")
             if expect not in ("violated", "holds"):
                 raise MutationError(f"{where}: expect must be 'violated' or 'holds', not {expect!r}")
-            out.append(Mutant(model, m["name"], m["requirement"], m["invariant"], expect,
+            invariant = m["invariant"] if "invariant" in m else m["target"]
+            out.append(Mutant(model, m["name"], m.get("requirement", ""), invariant, expect,
                               m.get("trace_length"), m.get("distinct_states"), m.get("why", ""), patches))
         except KeyError as e:
             raise MutationError(f"{where}: missing key {e}") from e
