@@ -960,8 +960,7 @@ INV_1OO2 ==
 (* Witnesses (vacuity): each is the negation of an invariant's antecedent; *)
 (* the checker must find a state violating it, i.e. reach the antecedent.  *)
 (***************************************************************************)
-Witness_INV_RESET            == ~(contactor_closed /\ obs_booted /\ obs_estop = "CLEAR"
-                                  /\ obs_open_a /\ obs_open_b)
+Witness_INV_RESET            == ~(contactor_closed \/ drive_enable \/ brake_release)
 Witness_RSM05_RESET_ACCEPTED == ~(last_accepted = "RESET")
 Witness_RSM04_CHANNEL_TEST   == ~(last_accepted = "RESET")
 Witness_RSM03_ESTOP_CAT0     == ~((~inputs.estop_a \/ ~inputs.estop_b) /\ obs_booted)
