@@ -184,9 +184,9 @@ INV_SUP_SHUTDOWN_SAFE ==
 (* violated by tests/python/test_pro_model.py.                             *)
 Witness_Run ==              \* INV_SUP_RUN_GATES, Run with all five AOs dispatched
     ~(sup_state = "RUN" /\ Len(dispatched) = 5)
-Witness_Recovered ==        \* INV_SUP_RUN_GATES, recovery after a fatal fault
-    ~(sup_state = "RUN" /\ init_ticks = 0 /\ Len(dispatched) = 5 /\ stop_step = 0
-      /\ \E u \in Units : u = "comms")
+Witness_DegradedFatal ==    \* INV_SUP_RUN_GATES, Degraded by a fatal fault alone
+    ~(sup_state = "DEGRADED" /\ fatal_fault /\ watchdog_ok
+      /\ \A u \in Units : status[u] = "READY")
 Witness_InitTimeout ==      \* INV_SUP_INIT_TIMEOUT, Degraded by the timeout
     ~(sup_state = "DEGRADED" /\ ~fatal_fault /\ watchdog_ok
       /\ \A u \in Units : status[u] # "FAILED")

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 SAFESTATE=.venv/bin/safestate
-MODELS=(SystemStateManager PLCopenAxis SafetyService)
+MODELS=(SystemStateManager PLCopenAxis SafetyService Protection RuntimeSupervisor)
 
 echo "== demo scenario (C++ SystemStateManager, one line per change)"
 build/cpp/safestate_demo
