@@ -93,7 +93,18 @@ Dispatchable(s, st, a) ==
     /\ \/ s = "RUN"
        \/ s \in {"DEGRADED", "SHUTTING_DOWN"} /\ a \in Critical
 
-Dispatch(s, st) == SelectSeq(Order, LAMBDA a : Dispatchable(s, st, a))
+\* Order filtered by Dispatchable, as five slots padded with "none".
+\* (SelectSeq(Order, LAMBDA ...) says the same, but `safestate prove` does
+\* not translate LAMBDA nor an empty sequence literal, so the dispatched
+\* sequence is a fixed-length tuple.)
+NoDispatch == <<"none", "none", "none", "none", "none">>
+Dispatch(s, st) ==
+    LET Keep(acc, i) ==
+            IF Dispatchable(s, st, Order[i])
+            THEN [slots |-> [acc.slots EXCEPT ![acc.n + 1] = Order[i]], n |-> acc.n + 1]
+            ELSE acc
+        start == [slots |-> NoDispatch, n |-> 0]
+    IN Keep(Keep(Keep(Keep(Keep(start, 1), 2), 3), 4), 5).slots
 
 Tick(ev) ==
     LET st == StatusAfter(ev)
@@ -122,7 +133,7 @@ Init ==
     /\ fatal_fault = FALSE /\ watchdog_ok = TRUE
     /\ sup_state = "INIT" /\ init_ticks = 0
     /\ stop_step = 0 /\ outputs_safe = FALSE
-    /\ dispatched = <<>>
+    /\ dispatched = NoDispatch
 
 Next == \E ev \in Events : Tick(ev)
 
@@ -137,7 +148,7 @@ TypeOK ==
     /\ init_ticks \in 0..InitTimeoutTicks
     /\ stop_step \in 0..Len(StopOrder)
     /\ outputs_safe \in BOOLEAN
-    /\ dispatched \in Seq(AOs) /\ Len(dispatched) <= Len(Order)
+    /\ dispatched \in [1..5 -> AOs \cup {"none"}]
 
 \* The order of PRO-05, spelled out here (not Order), so that a mutant of
 \* the dispatcher's table cannot change what the invariant demands.
@@ -164,14 +175,16 @@ INV_SUP_INIT_TIMEOUT ==
 \* dispatched; in INIT and STOPPED nothing is.
 INV_SUP_DEGRADED_RESTRICTED ==
     /\ sup_state \in {"DEGRADED", "SHUTTING_DOWN"} =>
-           \A i \in 1..Len(dispatched) : dispatched[i] \in Critical
-    /\ sup_state \in {"INIT", "STOPPED"} => dispatched = <<>>
-    /\ \A i \in 1..Len(dispatched) : status[dispatched[i]] = "READY"
+           \A i \in 1..5 : dispatched[i] \in Critical \cup {"none"}
+    /\ sup_state \in {"INIT", "STOPPED"} => dispatched = NoDispatch
+    /\ \A i \in 1..5 : dispatched[i] # "none" => status[dispatched[i]] = "READY"
 
 \* PRO-05: the fixed dispatch order monitoring, control, safety,
 \* diagnostics, communications.
 INV_SUP_DISPATCH_ORDER ==
-    \A i, j \in 1..Len(dispatched) : i < j => Rank(dispatched[i]) < Rank(dispatched[j])
+    \A i, j \in 1..5 :
+        i < j => IF dispatched[j] = "none" THEN TRUE
+                 ELSE dispatched[i] # "none" /\ Rank(dispatched[i]) < Rank(dispatched[j])
 
 \* PRO-05: controlled shutdown - protection (the safety unit) stops only
 \* after the outputs are safe, and STOPPED means every unit has stopped.
@@ -183,7 +196,7 @@ INV_SUP_SHUTDOWN_SAFE ==
 (* Reachability witnesses (non-vacuity), checked one by one and expected  *)
 (* violated by tests/python/test_pro_model.py.                             *)
 Witness_Run ==              \* INV_SUP_RUN_GATES, Run with all five AOs dispatched
-    ~(sup_state = "RUN" /\ Len(dispatched) = 5)
+    ~(sup_state = "RUN" /\ dispatched[5] # "none")
 Witness_DegradedFatal ==    \* INV_SUP_RUN_GATES, Degraded by a fatal fault alone
     ~(sup_state = "DEGRADED" /\ fatal_fault /\ watchdog_ok
       /\ \A u \in Units : status[u] = "READY")
@@ -191,9 +204,9 @@ Witness_InitTimeout ==      \* INV_SUP_INIT_TIMEOUT, Degraded by the timeout
     ~(sup_state = "DEGRADED" /\ ~fatal_fault /\ watchdog_ok
       /\ \A u \in Units : status[u] # "FAILED")
 Witness_DegradedDispatch == \* INV_SUP_DEGRADED_RESTRICTED, comms ready but skipped
-    ~(sup_state = "DEGRADED" /\ status["comms"] = "READY" /\ Len(dispatched) = 4)
+    ~(sup_state = "DEGRADED" /\ status["comms"] = "READY" /\ dispatched[4] # "none" /\ dispatched[5] = "none")
 Witness_Order ==            \* INV_SUP_DISPATCH_ORDER, a gap in the order
-    ~(dispatched = <<"monitoring", "safety", "diagnostics">>)
+    ~(dispatched = <<"monitoring", "safety", "diagnostics", "none", "none">>)
 Witness_SafetyStopped ==    \* INV_SUP_SHUTDOWN_SAFE, protection ended in shutdown
     ~(sup_state = "SHUTTING_DOWN" /\ status["safety"] = "STOPPED")
 Witness_AllStopped ==       \* INV_SUP_SHUTDOWN_SAFE, shutdown complete
