@@ -2,12 +2,17 @@
 # Sets up (scripts/setup.sh) and runs the main job: the demo scenario, then the
 # evidence chain for every model: model check (safestate check), unbounded proofs
 # (safestate prove) and conformance of the C++ against the flagship model
-# (safestate conform). Exits non-zero as soon as one step fails.
+# (safestate conform), for every system of the registry (systems/*/system.toml).
+# Exits non-zero as soon as one step fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 SAFESTATE=.venv/bin/safestate
-MODELS=(SystemStateManager PLCopenAxis SafetyService Protection RuntimeSupervisor)
+mapfile -t MODELS < <("$SAFESTATE" systems --names)
+mapfile -t CONFORM < <("$SAFESTATE" systems --names --with-conformance)
+
+echo "== systems"
+"$SAFESTATE" systems
 
 echo "== demo scenario (C++ SystemStateManager, one line per change)"
 build/cpp/safestate_demo
@@ -16,18 +21,20 @@ echo "== demo scenario (C++ Safety service over UDP on the loopback, one line pe
 "$SAFESTATE" demo saf
 
 for m in "${MODELS[@]}"; do
-  echo "== model check: models/$m.tla with models/$m.cfg"
-  "$SAFESTATE" check "models/$m.tla" --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
+  echo "== model check: system $m (its model with its CI cfg)"
+  "$SAFESTATE" check "$m" --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 done
 
 echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
 "$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 
 for m in "${MODELS[@]}"; do
-  echo "== proofs: models/$m.tla (every constant symbolic where its ASSUME allows)"
-  "$SAFESTATE" prove "models/$m.tla" --quiet
+  echo "== proofs: system $m (every constant symbolic where its ASSUME allows)"
+  "$SAFESTATE" prove "$m" --quiet
 done
 
-echo "== conformance: C++ against models/SystemStateManager.tla (trace replay of every transition + Hypothesis lockstep)"
-"$SAFESTATE" conform models/SystemStateManager.tla --hypothesis-steps 10000
+for m in "${CONFORM[@]}"; do
+  echo "== conformance: system $m, C++ against the model (trace replay of every transition, Hypothesis lockstep, input-complete pass)"
+  "$SAFESTATE" conform "$m" --input-complete
+done
 echo "== main job: all steps passed"

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Sets up (scripts/setup.sh) and runs every test: GoogleTest through ctest, then pytest
-# (unit tests of the Python tools, model checks, proofs and conformance as tests).
+# Sets up (scripts/setup.sh) and runs every test: the Python lint and type check (ruff,
+# mypy, configured in pyproject.toml), GoogleTest through ctest, then pytest (unit tests
+# of the Python tools, model checks, proofs and conformance as tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+echo "== lint and types (ruff, mypy)"
+.venv/bin/ruff check
+.venv/bin/mypy
 echo "== C++ unit tests (ctest)"
 ctest --test-dir build/cpp --output-on-failure -j"$(nproc)"
 echo "== Python tests (pytest)"

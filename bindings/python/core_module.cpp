@@ -7,9 +7,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
@@ -211,6 +214,66 @@ DhTable dh_from(const py::sequence& rows) {
 
 }  // namespace
 
+/// One step of a batch: a cycle's inputs, or a submitted command (kind, axis, direction,
+/// speed_mm_s) given as a tuple.
+using BatchStep = std::variant<ScanInputs, Command>;
+
+std::vector<BatchStep> batch_steps(const py::list& calls) {
+  std::vector<BatchStep> steps;
+  steps.reserve(calls.size());
+  for (const auto& c : calls) {
+    if (py::isinstance<py::dict>(c)) {
+      steps.emplace_back(scan_inputs(c.cast<py::dict>()));
+    } else {
+      const auto t = c.cast<py::tuple>();
+      if (t.size() != 4) throw py::value_error("a submit step is (kind, axis, direction, speed_mm_s)");
+      steps.emplace_back(Command{parse(t[0], kAllCommandKinds, "kind"), t[1].cast<std::int32_t>(),
+                                 t[2].cast<std::int32_t>(), t[3].cast<std::int32_t>()});
+    }
+  }
+  return steps;
+}
+
+void run_step(SystemStateManager& m, const BatchStep& s) {
+  if (const auto* in = std::get_if<ScanInputs>(&s)) {
+    (void)m.cycle(*in);
+  } else {
+    (void)m.submit(std::get<Command>(s));
+  }
+}
+
+py::dict rows_dict(const SystemStateManager& m) {
+  py::dict d;
+  d["cycle"] = row_id(m.last_rows().cycle);
+  d["command"] = row_id(m.last_rows().command);
+  return d;
+}
+
+/// The observable state as one canonical text line, for comparing in bulk without Python
+/// objects: observe()'s values in observe()'s key order, each followed by '|'; bools as
+/// 1/0, axes joined by ','.  conform's fast replay builds the same line from the model.
+void observe_key(const SystemStateManager& m, std::string& k) {
+  const StatusRecord s = m.status();
+  const ScanOutputs o = m.outputs();
+  k.clear();
+  const auto add = [&k](std::string_view v) { k.append(v.data(), v.size()); k.push_back('|'); };
+  const auto num = [&k](long long v) { k.append(std::to_string(v)); k.push_back('|'); };
+  add(to_string(s.state)); add(to_string(s.selector)); add(to_string(s.session_mode));
+  add(to_string(s.stop_category)); add(to_string(s.fault_code)); add(to_string(s.last_reject_reason));
+  add(to_string(s.command_result));
+  num(s.estop_mismatch); num(s.safeguard_mismatch); num(s.enabling_mismatch); num(s.selector_invalid);
+  num(s.state_cycles); num(s.t2_confirmed ? 1 : 0); add(to_string(s.resume_to));
+  num(s.jog_axis); num(s.jog_direction); num(s.jog_speed_mm_s); num(static_cast<long long>(s.queue_length));
+  num(o.contactor_closed ? 1 : 0); num(o.drive_enable ? 1 : 0); num(o.brake_release ? 1 : 0);
+  num(o.ramp_down_request ? 1 : 0); num(o.reset_lamp ? 1 : 0); num(o.commanded_speed_mm_s);
+  for (std::size_t i = 0; i < o.axes.size(); ++i) {
+    if (i > 0) k.push_back(',');
+    const std::string_view a = to_string(o.axes[i]);
+    k.append(a.data(), a.size());
+  }
+  k.push_back('|');
+}
+
 PYBIND11_MODULE(_core, m) {
   m.doc() =
       "The C++ SystemStateManager of safestate (docs/design/system-state-manager.md), for the\n"
@@ -218,7 +281,7 @@ PYBIND11_MODULE(_core, m) {
       "upper-case string of the design page.";
 
   // module_local: the conformance suite loads a deliberately wrong build of this module
-  // (conformance/wrong_variant/) beside this one; global registration would clash.
+  // (conform/wrong_variant/) beside this one; global registration would clash.
   py::class_<Config>(m, "Config", "Parameters of the manager (design §9). Every field is read/write.",
                      py::module_local())
       .def(py::init<>(), "The defaults of design §9.")
@@ -290,12 +353,7 @@ PYBIND11_MODULE(_core, m) {
            "commanded_speed_mm_s, axes.")
       .def(
           "last_rows",
-          [](const SystemStateManager& self) {
-            py::dict d;
-            d["cycle"] = row_id(self.last_rows().cycle);
-            d["command"] = row_id(self.last_rows().command);
-            return d;
-          },
+          [](const SystemStateManager& self) { return rows_dict(self); },
           "Rows fired by the last cycle: {'cycle': 'C17', 'command': 'K12' or None}\n"
           "(cycle is None before the first cycle).")
       .def(
@@ -309,6 +367,80 @@ PYBIND11_MODULE(_core, m) {
           "config_error", [](const SystemStateManager& self) { return str(to_string(self.config_error())); },
           "validate() of the Config given at construction.");
 
+  m.def(
+      "probe",
+      [](const Config& config, const py::list& prefix, const py::list& probes) {
+        const std::vector<BatchStep> steps = batch_steps(prefix);
+        py::list out;
+        for (const auto& p : probes) {
+          const ScanInputs in = scan_inputs(p.cast<py::dict>());
+          auto mgr = std::make_unique<SystemStateManager>(config);  // not movable: one per probe
+          for (const auto& s : steps) run_step(*mgr, s);
+          (void)mgr->cycle(in);
+          out.append(py::make_tuple(observe(*mgr), rows_dict(*mgr)));
+        }
+        return out;
+      },
+      py::arg("config"), py::arg("prefix"), py::arg("probes"),
+      "Input-complete conformance: for each probe (a cycle's inputs dict), a fresh Manager runs\n"
+      "the prefix (cycle inputs dicts and submit tuples (kind, axis, direction, speed_mm_s)),\n"
+      "then one cycle with the probe. Returns [(observe(), last_rows())] per probe.");
+  m.def(
+      "replay",
+      [](const Config& config, const py::list& calls) {
+        const std::vector<BatchStep> steps = batch_steps(calls);
+        SystemStateManager mgr(config);
+        py::list out;
+        for (const auto& s : steps) {
+          run_step(mgr, s);
+          out.append(py::make_tuple(observe(mgr), rows_dict(mgr)));
+        }
+        return out;
+      },
+      py::arg("config"), py::arg("calls"),
+      "Run the steps (as for probe) on a fresh Manager: [(observe(), last_rows())] after each.");
+  m.def(
+      "replay_compare",
+      [](const Config& config, const py::list& calls, const std::vector<std::int32_t>& steps,
+         const std::vector<std::string>& expected, const std::vector<std::int32_t>& expected_ids,
+         const std::vector<std::int64_t>& starts, const std::vector<std::int8_t>& submit_full,
+         const std::vector<std::int64_t>& rows_at) {
+        const std::vector<BatchStep> table = batch_steps(calls);
+        py::list rows;
+        std::string key;
+        std::size_t next_row = 0;
+        for (std::size_t t = 0; t + 1 < starts.size(); ++t) {
+          auto mgr = std::make_unique<SystemStateManager>(config);
+          for (auto i = starts[t]; i < starts[t + 1]; ++i) {
+            const BatchStep& s = table.at(static_cast<std::size_t>(steps.at(static_cast<std::size_t>(i))));
+            bool ok = true;
+            if (const auto* in = std::get_if<ScanInputs>(&s)) {
+              (void)mgr->cycle(*in);
+            } else {
+              const bool full = mgr->submit(std::get<Command>(s)) == SubmitResult::queue_full;
+              ok = full == (submit_full.at(static_cast<std::size_t>(i)) != 0);
+            }
+            observe_key(*mgr, key);
+            ok = ok && key == expected.at(static_cast<std::size_t>(expected_ids.at(static_cast<std::size_t>(i))));
+            if (next_row < rows_at.size() && rows_at[next_row] == i) {
+              rows.append(py::make_tuple(row_id(mgr->last_rows().cycle), row_id(mgr->last_rows().command)));
+              ++next_row;
+            }
+            if (!ok) return py::tuple(py::make_tuple(static_cast<std::int64_t>(t), static_cast<std::int64_t>(i), rows));
+          }
+        }
+        return py::tuple(py::make_tuple(std::int64_t{-1}, std::int64_t{-1}, rows));
+      },
+      py::arg("config"), py::arg("calls"), py::arg("steps"), py::arg("expected"), py::arg("expected_ids"),
+      py::arg("starts"), py::arg("submit_full"), py::arg("rows_at"),
+      "Fast trace replay, compared in C++: traces t run steps[starts[t]:starts[t+1]] (indices into\n"
+      "calls, as for probe) each on a fresh Manager; after step i the observe_key line must equal\n"
+      "expected[expected_ids[i]] and a submit must answer QUEUE_FULL exactly when submit_full[i].\n"
+      "Returns (trace, step) of the first disagreement or (-1, -1), and (cycle row, command row)\n"
+      "after each step listed in rows_at (sorted).");
+  m.def("observe_key",
+        [](const SystemStateManager& self) { std::string k; observe_key(self, k); return k; },
+        "The canonical observable line that replay_compare compares (see there).");
   m.def("transition_table", &transition_table_list,
         "The transition table, rows C01..C23 then K01..K35, as dicts: id, section, event, source,\n"
         "effective_source, guard, kind (ENTER|STAY|REJECT), targets, reason, stop_category,\n"

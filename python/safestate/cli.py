@@ -1,33 +1,85 @@
 """The ``safestate`` console script.
 
 Each subcommand lives in its own module exposing ``add_arguments(parser)`` and
-``run(args) -> int``; register it in `SUBCOMMANDS`.
+``run(args) -> int``; register it in `SUBCOMMANDS`.  Wherever a subcommand takes a
+model path, a system name from the registry (`safestate systems`) works too.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
+
+from . import __version__
 
 # name -> (module, one-line help).
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
+    "systems": ("safestate.systems.cli", "list the registered systems (systems/*/system.toml) and their parts"),
     "check": ("safestate.checker.cli", "model-check a TLA+ specification (TLC-equivalent)"),
     "prove": ("safestate.prove.cli", "prove invariants with z3 (BMC, k-induction, PDR)"),
     "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
 }
 
+DESCRIPTION = """\
+safestate: formally verified safety state machines.  The pipeline, per system
+(systems/<Name>/system.toml): model (TLA+) -> check -> prove -> conform (C++).
+
+  safestate systems                       the registered systems and their parts
+  safestate check   SYSTEM|MODEL.tla      model checking, TLC's verdicts and counts
+  safestate prove   SYSTEM|MODEL.tla      unbounded proofs of every invariant (z3)
+  safestate conform SYSTEM|MODEL.tla      the C++ against the model (replay, Hypothesis)
+"""
+
+EXIT_CODES = """\
+exit codes (every subcommand):
+  0     success: no error found / every invariant proved / conformant
+  1     check --tlc: TLC disagrees; prove: an invariant neither proved nor violated
+  2     usage or input error (bad argument, missing or malformed file, unknown system
+        or binding module, unwritable output path): one line on stderr, no traceback
+  12    an invariant is violated (check: TLC's code; prove: a counterexample)
+  10/11/13/14  check: assumption / deadlock / liveness / Assert failure (TLC's codes)
+  20    conform: the C++ disagrees with the model (a mismatch)
+  21    conform: no mismatch, but the evidence is incomplete (a transition not covered,
+        a table row never taken or a declared-unreachable row fired)
+  75/76 check: evaluation error in the next-state relation / an invariant
+  150/151  check: TLA+ module / .cfg error (file:line:col on stderr)
+  153   check: memory limit reached
+  130   interrupted
+  255   check: internal error
+"""
+
+
+def _resolve_system_names(args: argparse.Namespace) -> None:
+    """A registered system name in place of MODEL.tla: its model and CI cfg."""
+    model = getattr(args, "model", None)
+    if args.command in ("check", "prove") and model and not os.path.exists(model) and not model.endswith(".tla"):
+        from .systems.registry import find
+
+        system = find(model)
+        if system is not None:
+            args.model = str(system.model)
+            if getattr(args, "config", None) is None:
+                args.config = str(system.ci_config)
+            if args.command == "prove" and getattr(args, "proofs", None) is None and system.proofs:
+                args.proofs = str(system.proofs)
+
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="safestate", description=__doc__.splitlines()[0])
-    sub = parser.add_subparsers(dest="command", required=True)
+    parser = argparse.ArgumentParser(prog="safestate", description=DESCRIPTION, epilog=EXIT_CODES,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"safestate {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, (module_name, help_text) in SUBCOMMANDS.items():
         module = importlib.import_module(module_name)
-        p = sub.add_parser(name, help=help_text)
+        p = sub.add_parser(name, help=help_text, description=module.__doc__, epilog=EXIT_CODES,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
         module.add_arguments(p)
         p.set_defaults(run=module.run)
     args = parser.parse_args(argv)
+    _resolve_system_names(args)
     return int(args.run(args))
 
 

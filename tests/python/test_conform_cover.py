@@ -50,14 +50,41 @@ def test_unreachable_edges_are_an_error():
         cover(g)
 
 
-def test_speed_vectors_classify_as_the_model_levels():
-    from safestate import _core as core
-    from safestate.conform.inputs import POSE, speed_vectors
+def _flagship_adapter_module():
+    from pathlib import Path
 
+    from safestate.systems.registry import _load_module, find
+
+    system = find("SystemStateManager", Path(__file__).resolve().parents[2] / "systems")
+    return _load_module("flagship_adapter_for_test", system.conformance.adapter)
+
+
+def test_speed_vectors_and_threshold_probes_classify_as_the_model_levels():
+    from safestate import _core as core
+
+    mod = _flagship_adapter_module()
     for limit in (250, 100):
         cfg = core.Config(t1_speed_limit_mm_s=limit)
-        for level, qd in speed_vectors(core, cfg).items():
-            assert core.speed_level(POSE, qd, cfg) == level
+        vectors = mod.speed_vectors(core, cfg)
+        for level in ("ZERO", "MOVING", "OVER_T1"):
+            assert core.speed_level(mod.POSE, vectors[level][0], cfg) == level
+        for label, level, qd in vectors["probes"]:
+            assert core.speed_level(mod.POSE, qd, cfg) == level, label
+        at = [qd for label, _, qd in vectors["probes"] if label == "TCP exactly at the T1 limit"][0]
+        assert core.tcp_speed_mm_s(mod.POSE, at, cfg) == limit
+
+
+def test_reference_kinematics_agrees_with_the_cpp_tcp_speed():
+    from safestate import _core as core
+
+    mod = _flagship_adapter_module()
+    cfg = core.Config()
+    dh = [tuple(r) for r in cfg.dh]
+    for joint in range(6):
+        qd = [0.0] * 6
+        qd[joint] = 1.0
+        ref = mod.tcp_speed_per_rad_s(dh, mod.POSE, joint)
+        assert abs(core.tcp_speed_mm_s(mod.POSE, qd, cfg) - ref) <= 1e-9 * max(ref, 1.0)
 
 
 def test_diff_marks_the_differing_fields():

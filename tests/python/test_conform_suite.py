@@ -1,10 +1,11 @@
-"""`safestate conform` on the CI configuration: the C++ agrees with the model on every
+"""`safestate conform` on the CI configuration, for every system of the registry with
+a conformance adapter (the flagship today): the C++ agrees with the model on every
 reachable transition and under Hypothesis lockstep testing, every table row is
 taken, and a deliberately wrong C++ build is caught by both methods.
 
-Slow (the model's state graph is explored once per session, ~1.5 min; the full
-replay takes a few minutes).  Hypothesis: SAFESTATE_CONFORM_STEPS (default 10000)
-and SAFESTATE_CONFORM_PROFILE=long for long runs.
+Slow (the model's state graph is explored once, then cached under
+$SAFESTATE_CACHE_DIR; the full replay takes a few minutes).  Hypothesis:
+SAFESTATE_CONFORM_STEPS (default 10000) and SAFESTATE_CONFORM_PROFILE=long.
 """
 
 import os
@@ -17,62 +18,71 @@ from safestate.checker.model import load_model
 from safestate.conform import audit as audit_mod
 from safestate.conform import conformance, graph as graph_mod, itf_io
 from safestate.conform.binding import load_core
+from safestate.conform.cli import make_harness
 from safestate.conform.cover import cover
 from safestate.conform.lockstep import run_lockstep
-from safestate.conform.model_step import ModelStepper
-from safestate.conform.replay import Harness
+from safestate.systems.registry import find, load_all
 
 REPO = Path(__file__).resolve().parents[2]
-MODEL = str(REPO / "models" / "SystemStateManager.tla")
 STEPS = int(os.environ.get("SAFESTATE_CONFORM_STEPS", "10000"))
+SYSTEMS = [s.name for s in load_all(REPO / "systems") if s.conformance is not None]
+
+
+@pytest.fixture(scope="module", params=SYSTEMS)
+def system(request):
+    return find(request.param, REPO / "systems")
 
 
 @pytest.fixture(scope="module")
-def model():
-    return load_model(MODEL)
+def model(system):
+    return load_model(str(system.model), str(system.ci_config))
 
 
 @pytest.fixture(scope="module")
 def graph(model):
-    return graph_mod.explore(model)
+    return graph_mod.cached_explore(model)
 
 
 @pytest.fixture(scope="module")
-def full_run(model, graph, tmp_path_factory):
-    core = load_core("safestate._core")
-    h = Harness(ModelStepper(model), core)
+def full_run(system, model, graph, tmp_path_factory):
+    h = make_harness(system, model)
     out = tmp_path_factory.mktemp("conform")
-    res = conformance.run(model, core, graph, h, conformance.Options(reproducer_dir=str(out)))
-    return res, h, core
+    res = conformance.run(model, h.core, graph, h, conformance.Options(reproducer_dir=str(out)))
+    return res, h
 
 
 @pytest.fixture(scope="module")
 def wrong_core(tmp_path_factory):
     build = tmp_path_factory.mktemp("wrong")
-    subprocess.run([str(REPO / "conformance" / "wrong_variant" / "build.sh"), "wrong", str(build)],
+    subprocess.run([str(REPO / "conform" / "wrong_variant" / "build.sh"), "wrong", str(build)],
                    check=True, capture_output=True)
     return load_core("safestate_wrong._core", str(build))
 
 
-def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition(full_run):
-    res, h, _ = full_run
+def test_registry_lists_the_flagship_with_a_conformance_adapter():
+    assert "SystemStateManager" in SYSTEMS
+
+
+def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition(full_run, graph):
+    res, h = full_run
     assert [f.mismatch.render() for f in res.found] == []
     assert res.transitions_covered == res.transitions_total > 0
-    assert h.stats.row_checks >= res.transitions_total - h.stats.submits  # every Cycle transition's rows compared
+    firing = sum(1 for ev in graph.events if h.adapter.fires_rows(ev))
+    assert h.stats.row_checks >= firing > 0  # every row-firing transition's rows compared
 
 
 def test_table_audit_every_row_taken_except_the_declared_unreachable(full_run):
-    res, h, core = full_run
-    a = audit_mod.audit(core, h.stats.rows)
+    res, h = full_run
+    a = audit_mod.audit(h.adapter, h.stats.rows)
     assert a.rows_missing == []
     assert a.unreachable_fired == [] and a.unknown_fired == []
-    assert a.rows_unreachable == list(audit_mod.UNREACHABLE_BY_CONSTRUCTION)
-    assert len(a.rows_taken) == a.rows_total - 4
+    assert a.rows_unreachable == list(h.adapter.unreachable_rows)
+    assert len(a.rows_taken) == a.rows_total - len(h.adapter.unreachable_rows)
 
 
-def test_hypothesis_lockstep_agrees_for_at_least_10000_steps(model):
-    h = Harness(ModelStepper(model), load_core("safestate._core"))
-    steps, failure = run_lockstep(h, model, STEPS)
+def test_hypothesis_lockstep_agrees_for_at_least_10000_steps(system, model):
+    h = make_harness(system, model)
+    steps, failure = run_lockstep(h, model, STEPS, seed=0)
     assert failure is None
     assert steps >= STEPS
 
@@ -82,8 +92,14 @@ def test_trace_cover_is_deterministic(graph):
     assert cover(g) == cover(g)
 
 
-def test_wrong_variant_is_caught_by_trace_replay(model, graph, wrong_core, tmp_path):
-    h = Harness(ModelStepper(model), wrong_core)
+def _flagship_only(system):
+    if system.name != "SystemStateManager":
+        pytest.skip("the wrong variant is a build of the flagship's C++")
+
+
+def test_wrong_variant_is_caught_by_trace_replay(system, model, graph, wrong_core, tmp_path):
+    _flagship_only(system)
+    h = make_harness(system, model, "safestate_wrong._core")
     res = conformance.run(model, wrong_core, graph, h,
                           conformance.Options(reproducer_dir=str(tmp_path), max_mismatches=1))
     assert len(res.found) == 1
@@ -95,12 +111,13 @@ def test_wrong_variant_is_caught_by_trace_replay(model, graph, wrong_core, tmp_p
     ct = itf_io.read(f.reproducer, model)
     mm, n = conformance.replay_trace(h, ct)
     assert mm is not None and n == len(ct.steps) == f.reproducer_steps
-    ok, _ = conformance.replay_trace(Harness(ModelStepper(model), load_core("safestate._core")), ct)
+    ok, _ = conformance.replay_trace(make_harness(system, model), ct)
     assert ok is None
 
 
-def test_wrong_variant_is_caught_by_hypothesis(model, wrong_core):
-    h = Harness(ModelStepper(model), wrong_core)
+def test_wrong_variant_is_caught_by_hypothesis(system, model, wrong_core):
+    _flagship_only(system)
+    h = make_harness(system, model, "safestate_wrong._core")
     steps, failure = run_lockstep(h, model, 50 * STEPS)
     assert failure is not None, f"not caught in {steps} steps"
     print(failure)

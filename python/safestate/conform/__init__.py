@@ -1,7 +1,10 @@
-"""`safestate conform`: evidence that the C++ SystemStateManager does what the TLA+
-model says (docs/design/system-state-manager.md).
+"""`safestate conform`: evidence that a system's C++ does what its TLA+ model says.
 
-Trace cover of the model's reachable state graph (`cover`, `traces`), replay of each
-trace step through the pybind11 binding (`replay`), Hypothesis lockstep testing
-(`lockstep`), the transition-table audit (`audit`) and the CLI (`cli`).
+Generic over the systems of the registry (`safestate.systems`): each system's adapter
+(`adapter.Adapter`, systems/<Name>/adapter.py) maps model events to C++ calls and
+model states to what the C++ observes.  Trace cover of the model's reachable state
+graph (`cover`, `traces`, `graph` with its on-disk cache), replay of each trace step
+through the binding (`replay`), Hypothesis lockstep testing (`lockstep`), the
+input-complete pass (`input_complete`), the transition-table audit (`audit`) and the
+CLI (`cli`).
 """

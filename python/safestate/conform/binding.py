@@ -8,6 +8,8 @@ import os
 import sys
 from types import ModuleType
 
+from ..errors import UsageError
+
 DEFAULT = "safestate._core"
 ENV = "SAFESTATE_CORE_MODULE"      # e.g. safestate_cov._core
 PATH_ENV = "SAFESTATE_CORE_PATH"   # a directory to put on sys.path first
@@ -17,4 +19,8 @@ def load_core(name: str | None = None, path: str | None = None) -> ModuleType:
     path = path or os.environ.get(PATH_ENV)
     if path and path not in sys.path:
         sys.path.insert(0, path)
-    return importlib.import_module(name or os.environ.get(ENV) or DEFAULT)
+    module = name or os.environ.get(ENV) or DEFAULT
+    try:
+        return importlib.import_module(module)
+    except ImportError as e:
+        raise UsageError(f"binding module {module} cannot be imported ({e})") from None

@@ -1,41 +1,63 @@
-"""``safestate conform MODEL.tla [--config CFG] [--json] [--out DIR]
-[--hypothesis-steps N] [--replay FILE] [--graph FILE] [--core-module NAME]``.
+"""``safestate conform SYSTEM|MODEL.tla [--config CFG] [--json] [--out DIR]
+[--hypothesis-steps N] [--input-complete] [--replay FILE] [--graph FILE] [--core-module NAME]``.
 
-Explores the model (or reads `--graph` from `safestate check --graph`), covers every
-reachable transition with traces from the initial states, replays each step through
-the C++ binding and compares after every step; then Hypothesis lockstep testing for
-`--hypothesis-steps` steps, and the transition-table audit.  Exit 0 only with zero
-mismatches, full transition coverage and no missing row.  `--replay FILE` replays
-one ITF trace (e.g. a reproducer written on a mismatch) instead.
+SYSTEM is a name from the registry (`safestate systems`); a MODEL.tla path is looked
+up in the registry by its model.  The system's adapter (systems/<Name>/adapter.py)
+maps the model onto its C++ binding.  Explores the model (or reads `--graph` from
+`safestate check --graph`), covers every reachable transition with traces from the
+initial states, replays each step through the C++ and compares after every step; then
+Hypothesis lockstep testing for `--hypothesis-steps` steps, optionally the
+input-complete pass, and the transition-table audit.  `--replay FILE` replays one ITF
+trace (e.g. a reproducer written on a mismatch) instead.
+
+Exit codes: 0 conformant (zero mismatches, every transition covered, no table row
+missing); 20 the C++ disagrees with the model; 21 no disagreement but the evidence is
+incomplete (a transition not covered, a row never taken or a declared-unreachable row
+fired); 2 a usage or input error (one line on stderr, no traceback).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from typing import Any
 
-from ..checker.model import load_model
+from ..checker.model import Model, load_model
+from ..errors import UsageError, run_guarded
+from ..systems.registry import System, resolve_system
 from . import audit as audit_mod
 from . import conformance, graph as graph_mod, itf_io
+from .adapter import Adapter
+from .binding import ENV as CORE_ENV
 from .binding import load_core
 from .model_step import ModelStepper
 from .replay import Harness
 
+OK = 0
+USAGE = 2
+MISMATCH = 20
+INCOMPLETE = 21
+
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("model", help="the .tla module (models/SystemStateManager.tla)")
+    p.add_argument("model", metavar="SYSTEM|MODEL.tla",
+                   help="a registered system (safestate systems) or its .tla module")
     p.add_argument("--config", help="the .cfg file (default: MODEL.cfg beside the module)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.add_argument("--out", metavar="DIR", help="write every trace as ITF under DIR/traces/ and reproducers in DIR")
-    p.add_argument("--hypothesis-steps", type=int, default=0, metavar="N",
-                   help="also run Hypothesis lockstep testing for at least N steps (default 0)")
+    p.add_argument("--hypothesis-steps", type=int, metavar="N",
+                   help="Hypothesis lockstep testing for at least N steps (default: the system's "
+                        "hypothesis_steps in its manifest; 0 skips)")
+    p.add_argument("--seed", type=int, help="seed of the Hypothesis run (default: random)")
     p.add_argument("--replay", metavar="FILE", help="replay this ITF trace instead of the whole suite")
     p.add_argument("--graph", metavar="FILE", help="read the state graph written by `safestate check --graph`")
     p.add_argument("--max-len", type=int, default=1000, help="longest trace, in steps (default 1000)")
-    p.add_argument("--core-module", help="binding module to drive (default safestate._core; "
+    p.add_argument("--input-complete", action="store_true",
+                   help="also apply every input vector of the adapter's full alphabet from every reachable state")
+    p.add_argument("--core-module", help="binding module to drive (default: the system's binding; "
                    "or $SAFESTATE_CORE_MODULE)")
 
 
@@ -44,23 +66,52 @@ def _progress(msg: str) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    return run_guarded(lambda: _run(args), args.model, USAGE)
+
+
+def make_harness(system: System, model: Model, core_module: str | None = None) -> Harness:
+    """The model stepper and the system's adapter over its binding (or `core_module`)."""
+    assert system.conformance is not None
+    core = load_core(core_module or os.environ.get(CORE_ENV) or system.conformance.binding)
+    stepper = ModelStepper(model)
+    adapter: Adapter = system.load_adapter_class()(core, stepper)
+    return Harness(stepper, adapter)
+
+
+def _run(args: argparse.Namespace) -> int:
     start = time.monotonic()
-    model = load_model(args.model, args.config)
-    core = load_core(args.core_module)
-    harness = Harness(ModelStepper(model), core)
+    for opt in ("max_len", "hypothesis_steps"):
+        v = getattr(args, opt)
+        if v is not None and v < (1 if opt == "max_len" else 0):
+            raise UsageError(f"--{opt.replace('_', '-')} must be {'positive' if opt == 'max_len' else '>= 0'}, got {v}")
+    for opt in ("graph", "replay", "config"):
+        v = getattr(args, opt)
+        if v is not None and not os.path.isfile(v):
+            raise UsageError(f"{v}: --{opt} file does not exist")
+    system, model_path, cfg = resolve_system(args.model, args.config)
+    conformance.check_writable(args.out)
+    model = load_model(model_path, cfg)
+    harness = make_harness(system, model, args.core_module)
+    core = harness.core
     if args.replay:
         return _replay_file(args, model, harness)
     _progress("conform: exploring the model" if not args.graph else f"conform: reading {args.graph}")
-    g = graph_mod.load(model, args.graph) if args.graph else graph_mod.explore(model, progress=_progress)
+    g = graph_mod.load(model, args.graph) if args.graph else graph_mod.cached_explore(model, progress=_progress)
     opts = conformance.Options(out=args.out, reproducer_dir=args.out or ".", max_len=args.max_len,
                                progress=_progress)
     res = conformance.run(model, core, g, harness, opts)
     hyp_steps, hyp_failure = 0, None
-    if args.hypothesis_steps > 0:
+    want_steps = args.hypothesis_steps if args.hypothesis_steps is not None else \
+        (system.conformance.hypothesis_steps if system.conformance else 0)
+    if want_steps > 0:
         from .lockstep import run_lockstep
-        hyp_steps, hyp_failure = run_lockstep(harness, model, args.hypothesis_steps, progress=_progress)
-    aud = audit_mod.audit(core, harness.stats.rows)
-    mismatches = len(res.found) + (1 if hyp_failure else 0)
+        hyp_steps, hyp_failure = run_lockstep(harness, model, want_steps, progress=_progress, seed=args.seed)
+    complete = None
+    if args.input_complete:
+        from .input_complete import run_input_complete
+        complete = run_input_complete(harness, g, progress=_progress)
+    aud = audit_mod.audit(harness.adapter, harness.stats.rows)
+    mismatches = len(res.found) + (1 if hyp_failure else 0) + (1 if complete and complete.mismatch else 0)
     summary: dict[str, Any] = {
         "transitions_total": res.transitions_total,
         "transitions_covered": res.transitions_covered,
@@ -77,14 +128,20 @@ def run(args: argparse.Namespace) -> int:
         "first_mismatch": res.found[0].mismatch.render() if res.found else hyp_failure,
         "traces_written": res.traces_written,
         "core_module": core.__name__,
+        "system": system.name,
+        "input_complete": complete.summary() if complete else None,
+        "replay_seconds": round(res.replay_seconds, 3),     # in batched binding calls
+        "model_seconds": round(res.model_seconds, 3),       # materialising the model's traces
         "seconds": round(time.monotonic() - start, 3),
     }
-    ok = mismatches == 0 and res.transitions_covered == res.transitions_total and aud.ok
+    complete_ok = res.transitions_covered == res.transitions_total and aud.ok
     if args.json:
         print(json.dumps(summary))
     else:
         _print_text(summary, res, hyp_failure)
-    return 0 if ok else 1
+        if complete:
+            print(complete.render())
+    return MISMATCH if mismatches else OK if complete_ok else INCOMPLETE
 
 
 def _print_text(s: dict[str, Any], res: conformance.ConformResult, hyp_failure: str | None) -> None:
@@ -126,4 +183,4 @@ def _replay_file(args: argparse.Namespace, model: Any, harness: Harness) -> int:
         print(f"replayed {n}/{len(ct.steps)} steps of {args.replay}: {'MISMATCH' if mm else 'no mismatch'}")
         if differs:
             print(f"note: {differs} recorded state(s) differ from the model's successors")
-    return 1 if mm else 0
+    return MISMATCH if mm else OK

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .projection import differing
+from .adapter import differing
 
 
 def side_by_side(model: dict[str, Any], cpp: dict[str, Any]) -> str:

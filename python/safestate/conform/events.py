@@ -13,10 +13,6 @@ from typing import Any
 from ..checker.itf import value_from_itf, value_to_itf
 from ..tla.values import FnValue, Value, fmt
 
-CYCLE = "Cycle"
-SUBMIT = "Submit"
-
-
 @dataclass(frozen=True)
 class Event:
     action: str
@@ -31,7 +27,7 @@ class Event:
         return Event.of(action, {k: value_from_itf(v) for k, v in params.items()})
 
     def param(self) -> Value:
-        """The single parameter of Cycle(in) / Submit(c)."""
+        """The single parameter of an action such as Cycle(in) / Submit(c)."""
         if len(self.params) != 1:
             raise ValueError(f"{self.action} has {len(self.params)} parameters, expected 1")
         return self.params[0][1]

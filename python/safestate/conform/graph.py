@@ -9,13 +9,19 @@ would not be deterministic per event).
 
 from __future__ import annotations
 
+import hashlib
 import json
+import os
+import pickle
 from dataclasses import dataclass
+from pathlib import Path
 
 from ..checker.explore import explore_states
 from ..checker.model import Model
+from ..errors import SafestateError
 from .cover import Graph
 from .events import Event
+from .json_input import load_json
 
 
 @dataclass
@@ -30,8 +36,12 @@ class StateGraph:
         return Graph(len(self.states), self.initial, self.src, self.dst)
 
 
-class NondeterministicEvent(Exception):
+class NondeterministicEvent(SafestateError):
     pass
+
+
+class GraphFileError(SafestateError):
+    """A --graph file that is not a state graph of this model."""
 
 
 def _dedup(states: list[tuple], initial: list[int], raw: list[tuple[int, int, Event]]) -> StateGraph:
@@ -53,25 +63,90 @@ def _dedup(states: list[tuple], initial: list[int], raw: list[tuple[int, int, Ev
 def explore(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
     res = explore_states(model, workers=1, graph=True, progress=progress)
     if res.result != "success":
-        raise RuntimeError(f"model checking did not succeed: {res.result} {res.violated or ''} "
+        raise SafestateError(f"model checking did not succeed: {res.result} {res.violated or ''} "
                            f"{res.error.message if res.error else ''}".strip())
     assert res.states is not None and res.edges is not None and res.initial is not None
     raw = [(e.src, e.dst, Event.of(e.action, e.params)) for e in res.edges]
     return _dedup(res.states, list(res.initial), raw)
 
 
+CACHE_ENV = "SAFESTATE_CACHE_DIR"
+CHECKER_SOURCES = ("checker", "tla", "conform/graph.py", "conform/events.py")
+
+
+def cache_dir() -> Path:
+    env = os.environ.get(CACHE_ENV)
+    if env:
+        return Path(env)
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "safestate" / "graphs"
+
+
+def graph_key(model: Model) -> str:
+    """A hash of the model (every .tla and .cfg beside its module), its cfg file and the
+    checker's own sources (its 'version'): a change to any gives a new key."""
+    h = hashlib.sha256()
+    folder = Path(model.module.file).resolve().parent
+    for f in sorted(list(folder.glob("*.tla")) + list(folder.glob("*.cfg"))):
+        h.update(f.name.encode() + b"\0" + f.read_bytes() + b"\0")
+    cfg = Path(model.config.file)
+    h.update(str(cfg.resolve()).encode() + b"\0" + cfg.read_bytes())
+    pkg = Path(__file__).resolve().parents[1]
+    for name in CHECKER_SOURCES:
+        p = pkg / name
+        for f in sorted(p.rglob("*.py")) if p.is_dir() else [p]:
+            h.update(str(f.relative_to(pkg)).encode() + b"\0" + f.read_bytes())
+    return h.hexdigest()[:32]
+
+
+def cached_explore(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
+    """`explore`, reusing the graph of an earlier run with the same `graph_key`."""
+    path = cache_dir() / f"{Path(model.module.file).stem}-{graph_key(model)}.pickle"
+    try:
+        with open(path, "rb") as f:
+            g = pickle.load(f)
+        if isinstance(g, StateGraph):
+            if progress:
+                progress(f"conform: state graph from the cache {path}")
+            return g
+    except (OSError, pickle.UnpicklingError, EOFError, AttributeError):
+        pass
+    g = explore(model, progress=progress)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        with open(tmp, "wb") as f:
+            pickle.dump(g, f, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(tmp, path)
+    except OSError:
+        pass  # a read-only cache only costs time
+    return g
+
+
 def load(model: Model, path: str) -> StateGraph:
-    with open(path, encoding="utf-8") as f:
-        doc = json.load(f)
+    doc = load_json(path, "state graph")
+    if not isinstance(doc, dict) or not all(k in doc for k in ("vars", "states", "edges", "initial")):
+        raise GraphFileError(f"{path}: not a state graph written by `safestate check --graph` "
+                             f"(expected an object with vars, states, edges, initial)")
     if doc["vars"] != list(model.variables):
-        raise ValueError(f"{path}: the graph's variables differ from the model's")
-    states = [model.state_from_itf(s["state"]) for s in doc["states"]]
+        raise GraphFileError(f"{path}: the graph's variables {doc['vars']} differ from the model's "
+                             f"{list(model.variables)}")
+    try:
+        states = [model.state_from_itf(s["state"]) for s in doc["states"]]
+    except (KeyError, TypeError, ValueError) as e:
+        raise GraphFileError(f"{path}: a state is not an ITF state of the model ({type(e).__name__}: {e})") from None
     cache: dict[str, Event] = {}
     raw = []
-    for e in doc["edges"]:
-        key = e["action"] + json.dumps(e["params"], sort_keys=True)
-        ev = cache.get(key)
-        if ev is None:
-            ev = cache[key] = Event.from_itf(e["action"], e["params"])
-        raw.append((e["from"], e["to"], ev))
+    for i, edge in enumerate(doc["edges"]):
+        try:
+            key = edge["action"] + json.dumps(edge["params"], sort_keys=True)
+            ev = cache.get(key)
+            if ev is None:
+                ev = cache[key] = Event.from_itf(edge["action"], edge["params"])
+            src, dst = int(edge["from"]), int(edge["to"])
+        except (KeyError, TypeError, ValueError) as x:
+            raise GraphFileError(f"{path}: edge {i} is not {{from, to, action, params}} ({type(x).__name__}: {x})") from None
+        if not (0 <= src < len(states) and 0 <= dst < len(states)):
+            raise GraphFileError(f"{path}: edge {i} names a state outside 0..{len(states) - 1}")
+        raw.append((src, dst, ev))
     return _dedup(states, list(doc["initial"]), raw)

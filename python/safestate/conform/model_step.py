@@ -16,7 +16,7 @@ from ..tla import ast as A
 from ..tla.actions import ActionCompiler
 from ..tla.env import UNSET, Env, Frame, SlotLocal
 from ..tla.parser import parse_text
-from ..tla.values import Value, fmt
+from ..tla.values import Value
 from .events import Event
 
 
@@ -95,7 +95,7 @@ class ModelStepper:
         fn = self._defs.get(name)
         if fn is None:
             ev = self.model.compiler.evaluator(A.Name(self.model.module_loc(), name), self.model.scope)
-            fn = self._defs[name] = lambda s, ev=ev: ev(s, None)
+            fn = self._defs[name] = lambda s, ev=ev: ev(s, None)  # type: ignore[misc]
         return fn
 
     def applied(self, op: str) -> Callable[[tuple, Value], Value]:

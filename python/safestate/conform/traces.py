@@ -12,7 +12,6 @@ tree paths are the same for every trace, so they are computed once per node.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from dataclasses import dataclass
 
 from .cover import Trace
@@ -74,7 +73,3 @@ class Materializer:
             steps.append(Step(ev, nxt, e))
             cur = nxt
         return ConcreteTrace(g.states[t.start], steps)
-
-    def all(self, traces: list[Trace]) -> Iterator[ConcreteTrace]:
-        for t in traces:
-            yield self.trace(t)

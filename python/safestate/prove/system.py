@@ -248,6 +248,8 @@ def _all_modules(loader: ModuleLoader) -> list[A.Module]:
 
 def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = None,
           type_invariant: str = "TypeOK", cfg_constants: set[str] | None = None, log=lambda s: None) -> System:
+    """The z3 transition system of a model: parse, constants (from the .cfg, or symbolic
+    where an ASSUME gives their range), variable domains (from TypeOK), Init and Next."""
     module = load_module(model_path)
     if cfg_path is None:
         cand = os.path.splitext(model_path)[0] + ".cfg"
@@ -256,7 +258,6 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
     modules = _all_modules(loader)
-    extra: A.Module | None = None
     if proofs_module:
         extra = load_module(proofs_module)
         _merge_proofs_module(scope, extra, module, loader)
@@ -264,77 +265,120 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
     _TAG[0] += 1
     strings = Strings(_strings_of(modules, config), str(_TAG[0]))
 
-    # ---- constants: the .cfg values first (ASSUME sets may mention other constants)
     declared = {n: s for n, s in scope.names.items() if isinstance(s, ConstSym)}
-    constants: dict[str, Any] = {}
-    overrides: dict[str, Any] = {}
-    if config is not None:
-        for name, (value, loc) in config.constants.items():
-            if name in declared:
-                constants[name] = _from_cfg(value, strings, loc)
-            elif scope.lookup(name) is not None:
-                overrides[name] = _from_cfg(value, strings, loc)
-        for name, (target, loc) in config.substitutions.items():
-            tsym = scope.lookup(target)
-            if tsym is None:
-                raise TlaError("config", f"{target} (substituted for {name}) is not defined", loc)
-            overrides[name] = tsym
+    constants, overrides = _cfg_values(config, scope, declared, strings)
     tr = Translator(strings, constants, overrides, {}, None)
     tr.root_scope = scope
     tr.const_upper = {}
     ctx = Ctx(scope, {}, False)
     assumes = [c for m in modules for a in m.assumes for c in _conjuncts(a.expr)]
-
-    params: dict[str, Any] = {}
-    defining: set[int] = set()  # ASSUME conjuncts that define a symbolic constant's range
-    report: dict[str, Any] = {}
     fixed = set(declared) if cfg_constants is not None and not cfg_constants else (cfg_constants or set())
     if fixed - set(declared):
         raise TlaError("config", f"--cfg-constants names no constant {', '.join(sorted(fixed - set(declared)))}",
                        None)
-    if True:  # symbolic constants from the ASSUME conjuncts C \\in S and C \\subseteq S
-        for c in assumes:
-            if not (isinstance(c, A.Binary) and c.op in ("\\in", "\\subseteq") and isinstance(c.lhs, A.Name)
-                    and c.lhs.name in declared and c.lhs.name not in params and c.lhs.name not in fixed):
-                continue
-            name = c.lhs.name
-            try:
-                s = tr.val(c.rhs, ctx)
-            except TlaError:
-                continue
-            if c.op == "\\in" and isinstance(s, SetV) and not (isinstance(s, PredSet) and "seq_elem" in s.extra):
-                try:
-                    v = s.fresh(name, c.loc)
-                except TlaError:
-                    continue
-                if isinstance(s, PredSet) and s.upper is not None:
-                    tr.const_upper[name] = s.upper
-                if isinstance(s, EnumSet):
-                    ints = [concrete(x, strings) for _, x in s.items]
-                    if ints and all(isinstance(i, int) for i in ints):
-                        tr.const_upper[name] = max(ints)  # type: ignore[type-var]
-                params[name] = v
-                defining.add(id(c))
-            elif c.op == "\\subseteq" and isinstance(s, EnumSet) and len(s.items) <= 64 and \
-                    all(z3.is_true(g) for g, _ in s.items):
-                params[name] = EnumSet([(z3.Bool(f"{name}!has{i}"), x) for i, (_, x) in enumerate(s.items)],
-                                       s.items[0][1] if s.items else None)
-                defining.add(id(c))
-            elif c.op == "\\subseteq" and isinstance(s, PredSet) and "seq_elem" not in s.extra:
-                try:
-                    proto = s.fresh(name + "!elem", c.loc)
-                except TlaError:
-                    continue
-                sorts = [x.sort() for x in leaves(proto)]
-                if not sorts:
-                    continue
-                # any subset of an infinite set: membership is an uninterpreted predicate
-                has = z3.Function(f"{name}!has", *sorts, z3.BoolSort())
-                params[name] = _uf_subset(name, s, has)
-                defining.add(id(c))
+    params, defining = _symbolic_params(tr, ctx, assumes, declared, fixed, strings)
     for n, v in params.items():
         constants[n] = v
         overrides.pop(n, None)
+    constraints = _assume_constraints(tr, ctx, assumes, params, defining, log)
+    report = _constant_report(declared, params, constants, overrides, assumes, config, strings)
+    tr._memo.clear()
+
+    var_names = [v.name for v in var_syms]
+    cur, nxt, tracked, untracked, domain_parts = _variables(tr, scope, type_invariant, var_names, model_path)
+    if untracked:
+        log(f"not typed by {type_invariant}, not tracked: {', '.join(untracked)}")
+    tr.cur, tr.nxt = cur, nxt
+
+    # ---- Init and Next
+    init_name = config.init.name if config and config.init else "Init"
+    next_name = config.next.name if config and config.next else "Next"
+    if config and config.specification and not config.init:
+        init_name, next_name = _split_spec(scope, config.specification.name)
+    init = tr.act(_def_body(scope, init_name, model_path), ctx)
+    init_aux, tr.skolems = tr.skolems, []
+    trans = tr.act(_def_body(scope, next_name, model_path), ctx)
+    trans_aux, tr.skolems = tr.skolems, []
+    sys_ = System(module, scope, strings, tr, tracked, untracked, cur, nxt, params,
+                  report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux)
+    sys_.cur_leaves = [x for v in tracked for x in leaves(cur[v])]
+    sys_.nxt_leaves = [x for v in tracked for x in leaves(nxt[v])]
+    sys_.param_leaves = [x for v in params.values() for x in _param_leaves(v)]
+    return sys_
+
+
+def _cfg_values(config: Config | None, scope: Any, declared: dict[str, Any],
+                strings: Strings) -> tuple[dict[str, Any], dict[str, Any]]:
+    """The .cfg's constant values and overrides (ASSUME sets may mention other constants,
+    so these come first)."""
+    constants: dict[str, Any] = {}
+    overrides: dict[str, Any] = {}
+    if config is None:
+        return constants, overrides
+    for name, (value, loc) in config.constants.items():
+        if name in declared:
+            constants[name] = _from_cfg(value, strings, loc)
+        elif scope.lookup(name) is not None:
+            overrides[name] = _from_cfg(value, strings, loc)
+    for name, (target, loc) in config.substitutions.items():
+        tsym = scope.lookup(target)
+        if tsym is None:
+            raise TlaError("config", f"{target} (substituted for {name}) is not defined", loc)
+        overrides[name] = tsym
+    return constants, overrides
+
+
+def _symbolic_params(tr: Translator, ctx: Ctx, assumes: list[A.Expr], declared: dict[str, Any],
+                     fixed: set[str], strings: Strings) -> tuple[dict[str, Any], set[int]]:
+    """Symbolic constants from the ASSUME conjuncts C \\in S and C \\subseteq S, and the
+    ids of the conjuncts that define their ranges."""
+    params: dict[str, Any] = {}
+    defining: set[int] = set()
+    for c in assumes:
+        if not (isinstance(c, A.Binary) and c.op in ("\\in", "\\subseteq") and isinstance(c.lhs, A.Name)
+                and c.lhs.name in declared and c.lhs.name not in params and c.lhs.name not in fixed):
+            continue
+        name = c.lhs.name
+        try:
+            s = tr.val(c.rhs, ctx)
+        except TlaError:
+            continue
+        if c.op == "\\in" and isinstance(s, SetV) and not (isinstance(s, PredSet) and "seq_elem" in s.extra):
+            try:
+                v = s.fresh(name, c.loc)
+            except TlaError:
+                continue
+            if isinstance(s, PredSet) and s.upper is not None:
+                tr.const_upper[name] = s.upper
+            if isinstance(s, EnumSet):
+                ints = [concrete(x, strings) for _, x in s.items]
+                if ints and all(isinstance(i, int) for i in ints):
+                    tr.const_upper[name] = max(ints)  # type: ignore[type-var]
+            params[name] = v
+            defining.add(id(c))
+        elif c.op == "\\subseteq" and isinstance(s, EnumSet) and len(s.items) <= 64 and \
+                all(z3.is_true(g) for g, _ in s.items):
+            params[name] = EnumSet([(z3.Bool(f"{name}!has{i}"), x) for i, (_, x) in enumerate(s.items)],
+                                   s.items[0][1] if s.items else None)
+            defining.add(id(c))
+        elif c.op == "\\subseteq" and isinstance(s, PredSet) and "seq_elem" not in s.extra:
+            try:
+                proto = s.fresh(name + "!elem", c.loc)
+            except TlaError:
+                continue
+            sorts = [x.sort() for x in leaves(proto)]
+            if not sorts:
+                continue
+            # any subset of an infinite set: membership is an uninterpreted predicate
+            has = z3.Function(f"{name}!has", *sorts, z3.BoolSort())
+            params[name] = _uf_subset(name, s, has)
+            defining.add(id(c))
+    return params, defining
+
+
+def _assume_constraints(tr: Translator, ctx: Ctx, assumes: list[A.Expr], params: dict[str, Any],
+                        defining: set[int], log: Any) -> list[Any]:
+    """The ASSUME conjuncts that constrain the symbolic constants, as z3 formulas."""
     constraints = []
     for c in assumes:
         names = _names_in(c)
@@ -347,6 +391,15 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
             constraints.append(tr.boolean(c, ctx))
         except TlaError as e:
             log(f"warning: ASSUME at {c.loc} not translated ({e.message}); the proof covers more constant values")
+    return constraints
+
+
+def _constant_report(declared: dict[str, Any], params: dict[str, Any], constants: dict[str, Any],
+                     overrides: dict[str, Any], assumes: list[A.Expr], config: Config | None,
+                     strings: Strings) -> dict[str, Any]:
+    """How each constant is taken (symbolic, with its ASSUMEs, or its .cfg value); a
+    constant with neither is an error."""
+    report: dict[str, Any] = {}
     for n in declared:
         if n in params:
             rel = [f"ASSUME {_show(c)}" for c in assumes if n in _names_in(c)]
@@ -358,16 +411,19 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
         else:
             raise TlaError("config", f"the constant {n} has no value: give it in the .cfg or constrain it "
                                      f"with ASSUME {n} \\in S", declared[n].loc)
-    tr._memo.clear()
+    return report
 
-    # ---- variable domains from TypeOK
+
+def _variables(tr: Translator, scope: Any, type_invariant: str, var_names: list[str],
+               model_path: str) -> tuple[dict[str, Any], dict[str, Any], list[str], list[str], list[Any]]:
+    """Current and next-state z3 variables, typed by the domains TypeOK gives; the
+    variables TypeOK does not type are not tracked."""
     tsym = scope.lookup(type_invariant)
     if not isinstance(tsym, DefSym):
         raise TlaError("config", f"the model defines no {type_invariant}: the proof takes variable domains "
                                  f"from it", Loc(model_path, 1, 1))
     domains: dict[str, tuple[SetV, A.Expr]] = {}
     bounds: dict[str, tuple[A.Expr, Ctx]] = {}
-    var_names = [v.name for v in var_syms]
     for c, cscope in _typing_conjuncts(tsym.defn.body, scope):
         cctx = Ctx(cscope, {}, False)
         if not isinstance(c, A.Binary):
@@ -396,25 +452,7 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
         nxt[v] = _fresh_var(tr, s, v + "'", bounds.get(v), c)
         domain_parts.append(s.member(cur[v], c.loc))
     tracked = [v for v in var_names if v not in untracked]
-    if untracked:
-        log(f"not typed by {type_invariant}, not tracked: {', '.join(untracked)}")
-    tr.cur, tr.nxt = cur, nxt
-
-    # ---- Init and Next
-    init_name = config.init.name if config and config.init else "Init"
-    next_name = config.next.name if config and config.next else "Next"
-    if config and config.specification and not config.init:
-        init_name, next_name = _split_spec(scope, config.specification.name)
-    init = tr.act(_def_body(scope, init_name, model_path), ctx)
-    init_aux, tr.skolems = tr.skolems, []
-    trans = tr.act(_def_body(scope, next_name, model_path), ctx)
-    trans_aux, tr.skolems = tr.skolems, []
-    sys_ = System(module if extra is None else module, scope, strings, tr, tracked, untracked, cur, nxt, params,
-                  report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux)
-    sys_.cur_leaves = [x for v in tracked for x in leaves(cur[v])]
-    sys_.nxt_leaves = [x for v in tracked for x in leaves(nxt[v])]
-    sys_.param_leaves = [x for v in params.values() for x in _param_leaves(v)]
-    return sys_
+    return cur, nxt, tracked, untracked, domain_parts
 
 
 def _uf_subset(name: str, s: PredSet, has: z3.FuncDeclRef) -> PredSet:

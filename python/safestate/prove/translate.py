@@ -446,7 +446,7 @@ class Translator:
         out_keys, vals = [], {}
         for combo in itertools.product(*[d[2] for d in domains]):
             binds: dict[str, Any] = {}
-            for (b, n, _), (k, x) in zip(domains, combo):
+            for (b, n, _), (_k, x) in zip(domains, combo):
                 binds.update(self._pattern(b, x) if b.tuple else {n: x})
             key = combo[0][0] if len(combo) == 1 else tuple(c[0] for c in combo)
             if key in vals:

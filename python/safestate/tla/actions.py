@@ -22,7 +22,7 @@ from typing import Any, Callable
 
 from . import ast as A
 from .compiler import Compiler, _enum_checked, _prefix, check_bool
-from .env import UNSET, Code, Env, SlotLocal
+from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
@@ -123,8 +123,24 @@ class ActionCompiler:
                 i, rhs, loc = run[0]
                 k = self._assign(i, rhs, k, loc)
             if items:
-                k = self.action(items.pop(), env, k)
+                item = items.pop()
+                act = self.action(item, env, k)
+                # TLC (Tool.getNextStatesAllAssigned, getInitStates): once every variable
+                # has a value, the remaining conjuncts are evaluated as booleans, so a
+                # disjunction or \E among them yields one successor, not one per branch.
+                k = act if not items or _plain_guard(act) else self._all_assigned_guard(item, env, act, k)
         return k
+
+    def _all_assigned_guard(self, e: A.Expr, env: Env, act: Code, k: Cont) -> Code:
+        test = self.guard(e, env, k)
+
+        def conjunct(s: Any, t: Any, L: list) -> None:
+            for v in t:
+                if v is UNSET:
+                    act(s, t, L)
+                    return
+            test(s, t, L)
+        return conjunct
 
     def _plain_assignments(self, e: A.Expr, env: Env) -> list[tuple[int, Code, Loc]] | None:
         """``x' = e`` or ``UNCHANGED <<x, y>>`` as (variable, value code, loc) triples."""
@@ -144,11 +160,47 @@ class ActionCompiler:
 
     def a_Quant(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
         if e.kind != "\\E":
-            if self.c.info(e.body, env).action:
-                raise UnsupportedError("\\A over an action (a conjunction of actions) is not supported", e.loc)
-            return None
+            return self._forall(e, env, k)
         inner, binds = self.c.bind_bounds(e.bounds, env)
         return _exists(binds, self.action(e.body, inner, k))
+
+    def _forall(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
+        """``\\A x \\in S : A`` in an action is the conjunction of A for each x, as in
+        TLC (Tool.getNextStates, OPCODE_bf): A with the first binding, then the others
+        as pending conjuncts, which TLC's list takes last-first (x1, xn, ..., x2);
+        pending ones are booleans once every variable is assigned."""
+        inner, binds = self.c.bind_bounds(e.bounds, env)
+        slot = env.frame.alloc()
+
+        def after(s: Any, t: Any, L: list) -> None:
+            order, pos = L[slot]
+            if pos + 1 >= len(order):
+                k(s, t, L)
+                return
+            L[slot] = (order, pos + 1)
+            _bind_combo(L, binds, order[pos + 1])
+            if UNSET in t:
+                body(s, t, L)
+            else:
+                test(s, t, L)
+            L[slot] = (order, pos)
+            _bind_combo(L, binds, order[pos])
+        body = self.action(e.body, inner, after)
+        if _plain_guard(body):
+            return None  # a plain boolean \A: the same successors, evaluated once
+        test = self.guard(e.body, inner, after)
+
+        def forall(s: Any, t: Any, L: list) -> None:
+            combos = _combos(binds, s, t, L)
+            if not combos:
+                k(s, t, L)
+                return
+            saved = L[slot]
+            L[slot] = ([combos[0]] + combos[:0:-1], 0)
+            _bind_combo(L, binds, combos[0])
+            body(s, t, L)
+            L[slot] = saved
+        return forall
 
     def a_If(self, e: A.If, env: Env, k: Cont) -> Code | None:
         c = self.c.expr(e.cond, env)
@@ -196,14 +248,19 @@ class ActionCompiler:
     def _call(self, e: A.Name | A.Apply, args: list[A.Expr], env: Env, k: Cont) -> Code | None:
         local = env.locals.get(e.name)
         if local is not None:
-            from .env import ByNameLocal
+            from .env import ByNameLocal, LetOpLocal
             if isinstance(local, ByNameLocal) and not args:
                 return self.action(local.expr, local.env, k)
+            if isinstance(local, LetOpLocal) and not self.c._mentions(local.defn.body, e.name):
+                # Like a user operator: descend into its body (TLC does).
+                pre, code = self.c.inline_let_op(e.name, local, args, env, e.loc,
+                                                 lambda b, benv: self.action(b, benv, k))
+                return _prefix_act(pre, code)
             return None
         sym = env.scope.lookup(e.name)
         if isinstance(sym, SubstSym) and not args:
             inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
-            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode), k)
+            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode, env.primed), k)
         # TLC evaluates every user-defined operator in action position by descending
         # into its body (so a disjunction inside it branches), except recursive ones.
         if not isinstance(sym, DefSym) or sym.defn.fn_bounds is not None or sym.recursive:
@@ -257,22 +314,50 @@ class ActionCompiler:
         return self._assign_in(i, self.c.expr(e.rhs, env), k, e.rhs.loc)
 
     # ---------------------------------------------------------------- assignments
-    def _target_var(self, lhs: A.Expr, env: Env) -> tuple[int, str] | None:
-        """The variable assigned by ``lhs = ...``: ``x'`` in actions, ``x`` in Init."""
+    def _target_var(self, lhs: A.Expr, env: Env, depth: int = 0) -> tuple[int, str] | None:
+        """The variable assigned by ``lhs = ...``: ``x'`` in actions, ``x`` in Init.
+        As TLC (`Tool.getPrimedVar`), names of arguments and definitions without
+        parameters are followed: ``q' = e`` assigns ``a'`` when ``q`` stands for ``a``,
+        and ``P = e`` assigns ``a'`` when ``P == a'``."""
         if env.init_mode:
             return self._var_of(lhs, env)
         if isinstance(lhs, A.Prime):
             return self._var_of(lhs.arg, env)
+        named = self._named_expr(lhs, env)
+        if named is not None and depth < 20:
+            return self._target_var(named[0], named[1], depth + 1)
         return None
 
-    def _var_of(self, e: A.Expr, env: Env) -> tuple[int, str] | None:
-        if not isinstance(e, A.Name) or e.name in env.locals:
+    def _var_of(self, e: A.Expr, env: Env, depth: int = 0) -> tuple[int, str] | None:
+        """The state variable `e` stands for (`Tool.getVar`), if any."""
+        if isinstance(e, A.Name) and e.name not in env.locals:
+            sym = env.scope.lookup(e.name)
+            if isinstance(sym, VarSym):
+                return sym.index, sym.name
+        named = self._named_expr(e, env)
+        if named is not None and depth < 20:
+            return self._var_of(named[0], named[1], depth + 1)
+        return None
+
+    @staticmethod
+    def _named_expr(e: A.Expr, env: Env) -> tuple[A.Expr, Env] | None:
+        """The expression a name without arguments stands for: an operator
+        argument or LET definition reading state, a definition, a substitution."""
+        if not isinstance(e, A.Name):
+            return None
+        local = env.locals.get(e.name)
+        if local is not None:
+            if isinstance(local, ByNameLocal):
+                return local.expr, local.env
+            if isinstance(local, (SlotLocal, LazyLocal)) and local.source is not None:
+                return local.source
             return None
         sym = env.scope.lookup(e.name)
-        while isinstance(sym, SubstSym) and isinstance(sym.expr, A.Name):
-            sym = sym.scope.lookup(sym.expr.name)
-        if isinstance(sym, VarSym):
-            return sym.index, sym.name
+        if isinstance(sym, DefSym) and not sym.defn.params and sym.defn.fn_bounds is None:
+            return sym.defn.body, Env(sym.scope, env.frame, {}, env.init_mode)
+        if isinstance(sym, SubstSym):
+            return sym.expr, Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
+                                                        if p in env.locals}, env.init_mode)
         return None
 
     def _assign(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
@@ -305,16 +390,30 @@ class ActionCompiler:
                     k(s, t, L)
         return assign_in
 
-    def unchanged(self, e: A.Expr, env: Env, k: Cont) -> Code:
+    def unchanged(self, e: A.Expr, env: Env, k: Cont, depth: int = 0) -> Code:
+        """``UNCHANGED e`` as TLC (`Tool.processUnchanged`): a variable is assigned
+        (or tested), a tuple is taken element by element, names without
+        arguments are expanded; anything else (an operator application too)
+        compares e with e'."""
         idx = self._unchanged_vars(e, env, 0)
-        if idx is None:
-            same = self.c._unchanged_expr(e, env)
-            return lambda s, t, L: k(s, t, L) if same(s, t, L) else None
-        for i in reversed(idx):
-            k = self._assign(i, (lambda i: lambda s, t, L: s[i])(i), k, e.loc)
-        return k
+        if idx is not None:
+            for i in reversed(idx):
+                k = self._assign(i, var_read(i), k, e.loc)
+            return k
+        if depth < 20:
+            if isinstance(e, A.TupleLit):
+                for x in reversed(e.elems):
+                    k = self.unchanged(x, env, k, depth + 1)
+                return k
+            named = self._named_expr(e, env)
+            if named is not None:
+                return self.unchanged(named[0], named[1], k, depth + 1)
+        same = self.c._unchanged_expr(e, env)
+        return lambda s, t, L: k(s, t, L) if same(s, t, L) else None
 
     def _unchanged_vars(self, e: A.Expr, env: Env, depth: int) -> list[int] | None:
+        """The variables of ``UNCHANGED e`` when e is a variable or a tuple of them,
+        possibly through names (see `_named_expr`)."""
         if depth > 20:
             return None
         if isinstance(e, A.TupleLit):
@@ -325,19 +424,18 @@ class ActionCompiler:
                     return None
                 out.extend(sub)
             return out
-        if isinstance(e, A.Name) and e.name not in env.locals:
-            sym = env.scope.lookup(e.name)
-            while isinstance(sym, SubstSym) and isinstance(sym.expr, A.Name):
-                env = Env(sym.scope, env.frame)
-                e = sym.expr
-                sym = sym.scope.lookup(sym.expr.name)
-            if isinstance(sym, VarSym):
-                return [sym.index]
-            if isinstance(sym, DefSym) and not sym.defn.params and sym.defn.fn_bounds is None:
-                return self._unchanged_vars(sym.defn.body, Env(sym.scope, env.frame), depth + 1)
-            if isinstance(sym, SubstSym):
-                return self._unchanged_vars(sym.expr, Env(sym.scope, env.frame), depth + 1)
+        var = self._var_of(e, env)
+        if var is not None:
+            return [var[0]]
+        named = self._named_expr(e, env)
+        if named is not None:
+            return self._unchanged_vars(named[0], named[1], depth + 1)
         return None
+
+
+def _plain_guard(code: Code) -> bool:
+    """Is `code` a boolean guard (made by `ActionCompiler.guard`), which never branches?"""
+    return getattr(code, "__name__", "") == "guard"
 
 
 def assign_run(run: list[tuple[int, Code, Loc]], k: Cont) -> Code:
@@ -423,6 +521,18 @@ def _exists(binds: list, body: Code) -> Code:
                 assign_binder(L, slots, is_tuple, v, sloc)
             body(s, t, L)
     return exists_n
+
+
+def _combos(binds: list, s: Any, t: Any, L: list) -> list[tuple]:
+    """Every binding of `binds` in TLC's ContextEnumerator order (first binder fastest)."""
+    elems = [list(_enum_checked(b[0](s, t, L), b[3])) for b in binds]
+    return [combo[::-1] for combo in itertools.product(*elems[::-1])]
+
+
+def _bind_combo(L: list, binds: list, combo: tuple) -> None:
+    from .compiler import _assign as assign_binder
+    for (_, slots, is_tuple, sloc), v in zip(binds, combo):
+        assign_binder(L, slots, is_tuple, v, sloc)
 
 
 def _let(resets: list[int], body: Code) -> Code:

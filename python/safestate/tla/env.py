@@ -45,17 +45,24 @@ class Frame:
 
 @dataclass(eq=False)
 class SlotLocal:
-    """A bound variable or by-value operator argument stored in ``L[slot]``."""
+    """A bound variable or by-value operator argument stored in ``L[slot]``.
+
+    `source` is the argument expression (and its environment) of an operator
+    argument that reads state: priming the parameter primes that expression."""
 
     slot: int
+    source: "tuple[A.Expr, Env] | None" = None
 
 
 @dataclass(eq=False)
 class LazyLocal:
-    """A zero-argument LET definition, evaluated on first use into ``L[slot]``."""
+    """A zero-argument LET definition, evaluated on first use into ``L[slot]``.
+
+    `source` is the definition's body (and environment) when it reads state."""
 
     slot: int
     code: Code
+    source: "tuple[A.Expr, Env] | None" = None
 
 
 @dataclass(eq=False)
@@ -94,6 +101,9 @@ class Env:
     locals: dict[str, Local] = field(default_factory=dict)
     # Compiling the initial predicate: unprimed variables are the state being built.
     init_mode: bool = False
+    # Compiling the inside of ``e'``: variables (and operator arguments and LET
+    # definitions that read them) denote their values in the next state `t`.
+    primed: bool = False
 
     def bind(self, **bindings: Local) -> "Env":
         return replace(self, locals={**self.locals, **bindings})

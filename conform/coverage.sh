@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Branch coverage of src/*.cpp under the conformance suite.
-#   conformance/coverage.sh [BUILD_DIR] [-- extra `safestate conform` arguments]
-# Builds safestate_cov._core with --coverage (conformance/wrong_variant/CMakeLists.txt,
+#   conform/coverage.sh [BUILD_DIR] [-- extra `safestate conform` arguments]
+# Builds safestate_cov._core with --coverage (conform/wrong_variant/CMakeLists.txt,
 # unchanged sources), runs the trace replay + Hypothesis through it, prints gcovr's
 # branch summary of src/*.cpp.
 set -euo pipefail

@@ -1,0 +1,52 @@
+"""The one base class of every error the safestate package reports to a user.
+
+Subcommands catch `SafestateError` (and the checker's own located errors) and print
+one line with the documented exit code (`safestate --help`), never a traceback.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections.abc import Callable
+
+
+class SafestateError(Exception):
+    """An error with a message fit for one line of output (file:line:col when known)."""
+
+
+class UsageError(SafestateError):
+    """A bad argument or an unusable input file (exit code 2)."""
+
+
+def one_line(e: BaseException) -> str:
+    """The message of `e` on one line, located when it carries a location."""
+    loc = getattr(e, "loc", None)
+    msg = getattr(e, "message", None) or str(e) or type(e).__name__
+    text = f"{loc}: {msg}" if loc else msg
+    return " ".join(text.split())
+
+
+def run_guarded(fn: Callable[[], int], what: str, usage_code: int) -> int:
+    """Run a subcommand body; a user's error becomes one line on stderr and
+    `usage_code`, an internal error one line naming it -- never a traceback."""
+    from .tla.errors import TlaError
+
+    try:
+        return fn()
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+    except (SafestateError, TlaError) as e:
+        print(f"error: {one_line(e)}", file=sys.stderr)
+        return usage_code
+    except json.JSONDecodeError as e:
+        print(f"error: {what}: malformed JSON at line {e.lineno} column {e.colno}: {e.msg}", file=sys.stderr)
+        return usage_code
+    except OSError as e:
+        print(f"error: {e.filename or what}: {e.strerror or e}", file=sys.stderr)
+        return usage_code
+    except Exception as e:  # noqa: BLE001 - the boundary: never a traceback
+        print(f"error: internal error ({type(e).__name__}: {one_line(e)}) while processing {what}; "
+              f"please report it", file=sys.stderr)
+        return usage_code

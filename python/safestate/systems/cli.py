@@ -1,0 +1,81 @@
+"""``safestate systems [--json]``: every registered system and the state of its parts.
+
+A part is `ok` when its file exists (binding: importable; adapter: loads and is an
+Adapter), `missing` when named but absent, `-` when the manifest names none.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import json
+from pathlib import Path
+from typing import Any
+
+from ..errors import SafestateError
+from .registry import System, load_all, registry_dir
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--json", action="store_true", help="print one JSON object instead of a table")
+    p.add_argument("--names", action="store_true", help="print only the names, one a line (for scripts)")
+    p.add_argument("--with-conformance", action="store_true",
+                   help="only the systems with a conformance adapter")
+
+
+def _file(p: Path | None) -> str:
+    if p is None:
+        return "-"
+    return "ok" if p.is_file() else "missing"
+
+
+def status(s: System) -> dict[str, Any]:
+    from ..conform.adapter import Adapter
+
+    out: dict[str, Any] = {
+        "name": s.name, "summary": s.summary, "manifest": str(s.manifest.relative_to(s.root)),
+        "design": _file(s.design), "model": _file(s.model),
+        "configs": "ok" if all(c.is_file() for c in s.configs) else "missing",
+        "proofs": _file(s.proofs), "mutants": _file(s.mutants),
+        "requirements": s.requirements,
+    }
+    if s.conformance is None:
+        out["binding"] = out["adapter"] = "-"
+        return out
+    try:
+        importlib.import_module(s.conformance.binding)
+        out["binding"] = "ok"
+    except ImportError as e:
+        out["binding"] = f"not importable ({e})"
+    try:
+        cls = s.load_adapter_class()
+        out["adapter"] = "ok" if issubclass(cls, Adapter) else "not an Adapter"
+    except (SafestateError, ImportError, SyntaxError) as e:
+        out["adapter"] = f"error ({e})"
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..errors import run_guarded
+
+    return run_guarded(lambda: _run(args), "the system registry", 2)
+
+
+def _run(args: argparse.Namespace) -> int:
+    systems = [s for s in load_all() if s.conformance is not None or not args.with_conformance]
+    if args.names:
+        print("\n".join(s.name for s in systems))
+        return 0
+    rows = [status(s) for s in systems]
+    if args.json:
+        print(json.dumps({"registry": str(registry_dir()), "systems": rows}))
+        return 0
+    cols = ("name", "model", "configs", "proofs", "mutants", "binding", "adapter")
+    print(f"registry: {registry_dir()}")
+    w = {c: max([len(c)] + [len(str(r[c])) for r in rows]) for c in cols}
+    print("  ".join(f"{c:<{w[c]}}" for c in cols) + "  requirements")
+    for r in rows:
+        reqs = r["requirements"]
+        req = f"{reqs[0]}..{reqs[-1]} ({len(reqs)})" if len(reqs) > 2 else " ".join(reqs)
+        print("  ".join(f"{str(r[c]):<{w[c]}}" for c in cols) + f"  {req}")
+    return 0

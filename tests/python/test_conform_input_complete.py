@@ -1,0 +1,98 @@
+"""Input-complete conformance: from reachable states, every input vector of the full
+alphabet (every channel pair, selector contact pattern, enabling pair, concrete speeds
+just below / at / above each threshold) for one step; the model accepts each and the
+C++ agrees.  C++ mutants that the CI cfg's restricted alphabet cannot see are caught.
+
+The test probes every 16th state of the BFS order (the full pass is
+`safestate conform SystemStateManager --input-complete`, run by the main job); the
+full mutant kill table is `conform/cpp_mutants/kill_table.py`.  The mutant
+modules are built once under build/cpp_mutants (incremental afterwards).
+"""
+
+from pathlib import Path
+
+import pytest
+
+from safestate.checker.model import load_model
+from safestate.conform import graph as graph_mod
+from safestate.conform.cli import make_harness
+from safestate.conform.input_complete import run_input_complete
+from safestate.systems.registry import find
+
+REPO = Path(__file__).resolve().parents[2]
+MUTANTS_DIR = REPO / "conform" / "cpp_mutants"
+# Mistakes invisible to the CI cfg's alphabet (channel pairs {both closed, A closed/B
+# open}, abstract speed classes), one per kind of gap.
+SUBSET = ("estop_1oo2_as_xor", "t1_limit_inclusive", "tcp_speed_in_m_per_s", "selector_several_contacts_first_wins")
+
+
+@pytest.fixture(scope="module")
+def flagship():
+    system = find("SystemStateManager", REPO / "systems")
+    model = load_model(str(system.model), str(system.ci_config))
+    return system, model, graph_mod.cached_explore(model)
+
+
+@pytest.fixture(scope="module")
+def mutant_build():
+    import sys
+
+    sys.path.insert(0, str(MUTANTS_DIR))
+    import mutate as mutants_build
+
+    out = REPO / "build" / "cpp_mutants"
+    mutants = [m for m in mutants_build.load() if m.id in SUBSET]
+    mutants_build.build_all(out, mutants)
+    sys.path.insert(0, str(out))
+    return mutants_build
+
+
+def test_input_complete_pass_agrees_on_every_16th_state(flagship):
+    system, model, graph = flagship
+    res = run_input_complete(make_harness(system, model), graph, stride=16)
+    assert res.mismatch is None, res.mismatch
+    assert res.states == len(range(0, len(graph.states), 16))
+    # every probe of the alphabet, from every probed state: at least 4+4+9+8 channel and
+    # selector vectors and the 10 speed probes
+    assert res.probes >= res.states * 35
+
+
+def test_flagship_alphabet_has_every_channel_pair_contact_pattern_and_threshold_speed(flagship):
+    system, model, _ = flagship
+    h = make_harness(system, model)
+    labels = [p.label for p in h.adapter.input_alphabet(model.initial_states()[0])]
+    for a in "01":
+        for b in "01":
+            assert f"estop {a}{b}" in labels and f"gate {a}{b}" in labels
+    assert sum(1 for x in labels if x.startswith("enabling ")) == 9
+    assert sum(1 for x in labels if x.startswith("selector contacts ")) == 8
+    for must in ("just below the T1 limit", "exactly at the T1 limit", "just above the T1 limit",
+                 "at the zero threshold", "just above the zero threshold", "NaN"):
+        assert any(must in x for x in labels), must
+
+
+@pytest.mark.parametrize("mutant", SUBSET)
+def test_input_complete_pass_catches_cpp_mutant(flagship, mutant_build, mutant):
+    system, model, graph = flagship
+    h = make_harness(system, model, f"safestate_mut_{mutant}._core")
+    res = run_input_complete(h, graph)
+    assert res.mismatch is not None and "MISMATCH" in res.mismatch, f"{mutant} survived {res.probes} probes"
+
+
+def test_a_cpp_mutation_that_no_longer_applies_is_an_error(mutant_build):
+    m = mutant_build.load()[0]
+    stale = mutant_build.Mutant(m.id, m.kind, m.what, m.file, m.original + " /* gone */", m.replacement)
+    with pytest.raises(mutant_build.MutationError, match="no longer applies"):
+        mutant_build.apply(stale)
+
+
+def test_every_cpp_mutant_still_applies_to_the_sources():
+    import sys
+
+    sys.path.insert(0, str(MUTANTS_DIR))
+    import mutate as mutants_build
+
+    mutants = mutants_build.load()
+    assert len(mutants) >= 15
+    for m in mutants:
+        assert mutants_build.apply(m) != (REPO / m.file).read_text(encoding="utf-8")
