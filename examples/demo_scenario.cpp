@@ -32,6 +32,7 @@ class Plant {
     in_.enabling = {EnablePosition::Released, EnablePosition::Released};
     select(SelectorReading::Auto);
     in_.self_test_ok = true;
+    in_.fieldbus_ok = true;
     in_.q = {0.0, -1.2, 1.1, -1.4, -1.57, 0.0};
   }
 

@@ -41,6 +41,7 @@ CONSTANTS
     ServoReadyInputs,     \* subset of BOOLEAN
     DriveFaultInputs,     \* subset of BOOLEAN
     SelfTestInputs,       \* subset of BOOLEAN
+    FieldbusInputs,       \* subset of BOOLEAN (C24: FALSE = fieldbus/cycle watchdog lost)
     LockoutHoldsInputs,   \* TRUE: the held signals stop changing in ERROR_LOCKOUT
     CombineChanges        \* TRUE: a held change and free choices in one cycle
 
@@ -65,7 +66,8 @@ InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
                   gate_a |-> TRUE, gate_b |-> TRUE,
                   enable_a |-> "RELEASED", enable_b |-> "RELEASED",
                   selector |-> "AUTO", self_test_ok |-> TRUE,
-                  servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO"]
+                  servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO",
+                  fieldbus_ok |-> TRUE]
 
 ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
@@ -82,6 +84,7 @@ ASSUME SpeedInputs      \subseteq Speeds
 ASSUME ServoReadyInputs \subseteq BOOLEAN
 ASSUME DriveFaultInputs \subseteq BOOLEAN
 ASSUME SelfTestInputs   \subseteq BOOLEAN
+ASSUME FieldbusInputs   \subseteq BOOLEAN
 ASSUME LockoutHoldsInputs \in BOOLEAN
 ASSUME CombineChanges \in BOOLEAN
 ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
@@ -89,7 +92,7 @@ ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
        /\ <<"RELEASED", "RELEASED">> \in EnablingInputs
        /\ "AUTO" \in SelectorInputs /\ "ZERO" \in SpeedInputs
        /\ FALSE \in ServoReadyInputs /\ FALSE \in DriveFaultInputs
-       /\ TRUE \in SelfTestInputs
+       /\ TRUE \in SelfTestInputs /\ TRUE \in FieldbusInputs
 
 -----------------------------------------------------------------------------
 (***************************** Value sets (§4-§8) *************************)
@@ -103,11 +106,12 @@ Motion      == {"AUTO_RUNNING", "MANUAL_JOGGING"}                       \* §4
 StopCategories == {"NONE", "CAT0", "CAT1", "CAT2"}
 FaultCodes == {"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP",
                "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING", "SELECTOR_INVALID",
-               "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT"}
+               "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT",
+               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION"}
 Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
             "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
             "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
-            "QUEUE_FULL"}
+            "QUEUE_FULL", "CHANNEL_TEST_PENDING"}
 AxisStates == {"Disabled", "StandStill", "Homing", "DiscreteMotion",
                "ContinuousMotion", "SynchronizedMotion", "Stopping", "ErrorStop"}
 Axes == 1..6
@@ -118,7 +122,7 @@ NoJog == [axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
 Inputs == [estop_a: BOOLEAN, estop_b: BOOLEAN, gate_a: BOOLEAN, gate_b: BOOLEAN,
            enable_a: EnablePositions, enable_b: EnablePositions,
            selector: Selectors, self_test_ok: BOOLEAN, servo_ready: BOOLEAN,
-           drive_fault: BOOLEAN, speed: Speeds]
+           drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN]
 
 Min(a, b) == IF a <= b THEN a ELSE b
 Max2(a, b) == IF a >= b THEN a ELSE b
@@ -130,27 +134,68 @@ VARIABLES
     state, selector, session_mode, stop_category, fault_code,
     last_reject_reason, command_result,
     estop_mismatch, safeguard_mismatch, enabling_mismatch, selector_invalid,
-    state_cycles, t2_confirmed, resume_to, jog, queue, axes
+    state_cycles, t2_confirmed, resume_to, jog, queue, axes,
+    stale_commands,       \* K36: queued commands submitted before the last E-stop release
+    estop_tested_a,       \* K37: E-stop channel A seen open since the last accepted Reset
+    estop_tested_b        \* K37: likewise channel B
 
-(* Environment and history variables (not C++ state):                     *)
-(*   inputs            -- the inputs of the last cycle (before the first    *)
-(*                        cycle: InitialInputs); the environment changes    *)
-(*                        one signal group per cycle from these.            *)
-(*   event             -- the event that produced this state (not in View). *)
-(*   reset_since_trip  -- INV-RESET: no E-stop trip since the last Reset    *)
-(*                        accepted with both E-stop channels released.      *)
-(*   jog_in_auto       -- INV-NOJOG-AUTO: the last cycle popped a JOG_START *)
-(*                        or JOG_STOP while in AUTO.                        *)
-(*   t1_overspeed      -- INV-T1SPEED: the last cycle read OVER_T1 while    *)
-(*                        the session (at the start of the cycle) was T1.  *)
-(*   ever_locked       -- INV-DISCREPANCY: ERROR_LOCKOUT was ever entered.  *)
-VARIABLES inputs, event, reset_since_trip, jog_in_auto, t1_overspeed, ever_locked
+(* Environment: `inputs` -- the inputs of the last cycle (before the     *)
+(* first cycle: InitialInputs); `event` -- the event that produced this  *)
+(* state (not in View).                                                   *)
+VARIABLES inputs, event
+
+(* Requirement observers (not C++ state).  Each is a function of the      *)
+(* input history, the command stream and the outputs/status record only   *)
+(* (never of `state` or another model-internal variable), so that the     *)
+(* requirement-level invariants below say what REQUIREMENTS.md says and a *)
+(* weakened model cannot satisfy them by construction.                   *)
+(*   obs_estop     -- RSM-05: "CLEAR"; "DEMANDED" from a cycle with either *)
+(*                    E-stop channel open; "RELEASED" from the next cycle  *)
+(*                    with both closed; "RESET_ISSUED" when a RESET is     *)
+(*                    submitted (queued) after that; "CLEAR" again when a  *)
+(*                    cycle pops a RESET and reports ACCEPTED then.         *)
+(*   obs_open_a/b  -- RSM-04 channel test: channel seen open since the    *)
+(*                    last CLEAR.                                          *)
+(*   obs_disagree  -- RSM-04/02: consecutive cycles the inputs disagreed  *)
+(*                    (pairs) or read an invalid selector, capped at D+1.  *)
+(*   obs_locked    -- RSM-04: a fault code was ever output.               *)
+(*   obs_ramp      -- RSM-11: consecutive cycles ending with the          *)
+(*                    ramp-down request output on while the arm was       *)
+(*                    measured moving (not yet at standstill; capped).    *)
+(*   last_accepted -- the kind of command the last cycle accepted, "NONE".*)
+(*   jog_in_auto   -- RSM-08: the last cycle popped JOG_START/JOG_STOP    *)
+(*                    with selector AUTO or session AUTO.                 *)
+(*   obs_guard_fault  -- RSM-05/06: the last cycle accepted a RESET or    *)
+(*                    SERVO_ON whose cycle read drive_fault.              *)
+(*   obs_servo_on_powered -- RSM-06: the last cycle accepted a SERVO_ON   *)
+(*                    while the outputs were powered.                     *)
+(*   obs_t2        -- RSM-06: a T2_CONFIRM was accepted and the selector  *)
+(*                    stayed on T2, unpowered, without E-stop demand.     *)
+(*   obs_drive_fault -- RSM-07: the last cycle read drive_fault with the  *)
+(*                    outputs powered at its start.                      *)
+(*   obs_fieldbus_lost -- seed/RSM-03: a cycle read fieldbus_ok = FALSE.  *)
+(*   obs_unexpected_motion -- RSM-11 (standstill monitoring): the last    *)
+(*                    cycle read speed # ZERO with power on and no motion  *)
+(*                    commanded at its start.                              *)
+(*   t1_overspeed  -- RSM-10: the last cycle read OVER_T1 while the       *)
+(*                    session output (at its start) was T1.               *)
+(*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
+(*                    self_test_ok = FALSE.                               *)
+VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
+          last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
+          obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
+          obs_booted, obs_self_test_failed
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
               safeguard_mismatch, enabling_mismatch, selector_invalid,
-              state_cycles, t2_confirmed, resume_to, jog, queue, axes>>
-histVars == <<inputs, reset_since_trip, jog_in_auto, t1_overspeed, ever_locked>>
+              state_cycles, t2_confirmed, resume_to, jog, queue, axes,
+              stale_commands, estop_tested_a, estop_tested_b>>
+obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
+              last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
+              obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
+              obs_booted, obs_self_test_failed>>
+histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
 \* The held input signals (see the environment below).
@@ -160,14 +205,15 @@ Held(in) == <<in.estop_a, in.estop_b, in.gate_a, in.gate_b, in.enable_a, in.enab
 (* The fingerprint.  It leaves out what no guard, no environment choice   *)
 (* and no invariant reads, so that the quotient graph has the same        *)
 (* behaviours for every checked property: `event` (how this state was     *)
-(* reached), the free input signals of the last cycle, and the            *)
-(* write-only status field last_reject_reason.  Traces still show them:   *)
-(* TLC rebuilds a trace from real successor states.                       *)
+(* reached), the free input signals of the last cycle (the invariants     *)
+(* read them only through observers), and the write-only status field     *)
+(* last_reject_reason.  Traces still show them: TLC rebuilds a trace from  *)
+(* real successor states.                                                 *)
 View == <<state, selector, session_mode, stop_category, fault_code,
           command_result, estop_mismatch, safeguard_mismatch,
           enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
-          resume_to, jog, queue, axes,
-          Held(inputs), reset_since_trip, jog_in_auto, t1_overspeed, ever_locked>>
+          resume_to, jog, queue, axes, stale_commands, estop_tested_a, estop_tested_b,
+          Held(inputs), obsVars>>
 
 \* The manager state as one record, so that the sections can be composed.
 Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
@@ -176,7 +222,9 @@ Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
         estop_mismatch |-> estop_mismatch, safeguard_mismatch |-> safeguard_mismatch,
         enabling_mismatch |-> enabling_mismatch, selector_invalid |-> selector_invalid,
         state_cycles |-> state_cycles, t2_confirmed |-> t2_confirmed,
-        resume_to |-> resume_to, jog |-> jog, queue |-> queue, axes |-> axes]
+        resume_to |-> resume_to, jog |-> jog, queue |-> queue, axes |-> axes,
+        stale_commands |-> stale_commands, estop_tested_a |-> estop_tested_a,
+        estop_tested_b |-> estop_tested_b]
 
 SetMgr(m) ==
     /\ state' = m.state                 /\ selector' = m.selector
@@ -189,6 +237,8 @@ SetMgr(m) ==
     /\ selector_invalid' = m.selector_invalid
     /\ state_cycles' = m.state_cycles   /\ t2_confirmed' = m.t2_confirmed
     /\ resume_to' = m.resume_to         /\ jog' = m.jog
+    /\ stale_commands' = m.stale_commands
+    /\ estop_tested_a' = m.estop_tested_a /\ estop_tested_b' = m.estop_tested_b
     /\ queue' = m.queue                 /\ axes' = m.axes
 
 -----------------------------------------------------------------------------
@@ -231,7 +281,10 @@ Monitor(m, in) ==
               !.safeguard_mismatch = Count(@, in.gate_a # in.gate_b),
               !.enabling_mismatch  = Count(@, in.enable_a # in.enable_b),
               !.selector_invalid   = Count(@, in.selector = "INVALID"),
-              !.selector           = in.selector]
+              !.selector           = in.selector,
+              \* K37: an E-stop channel seen open (tripped) since the last Reset
+              !.estop_tested_a     = @ \/ ~in.estop_a,
+              !.estop_tested_b     = @ \/ ~in.estop_b]
 
 \* A counter above D is a discrepancy fault; codes in the order of §3.
 DiscrepancyCode(m) ==
@@ -244,12 +297,19 @@ DiscrepancyCode(m) ==
 -----------------------------------------------------------------------------
 (************ §5 Safety evaluation: one guard and one effect per row ********)
 (* `m` is the manager after §3 (its state is the state before the row).  *)
-StopCat1Free(m) ==        \* "powered, not (STOPPING with CAT1)" (C12-C14)
-    m.state \in Powered /\ ~(m.state = "STOPPING" /\ m.stop_category = "CAT1")
+\* "powered, not (STOPPING with CAT1, or with its timer expired and the arm
+\* still moving)" (C12-C14): an expired stop timer is C20's (Cat 0), not an
+\* escalation.
+StopCat1Free(m, in) ==
+    /\ m.state \in Powered
+    /\ ~(/\ m.state = "STOPPING"
+         /\ \/ m.stop_category = "CAT1"
+            \/ m.state_cycles = MaxStopCycles /\ in.speed # "ZERO")
 
 C01_Guard(m, in) == m.state = "ERROR_LOCKOUT"                   \* RSM-04
 C02_Guard(m, in) == m.state = "BOOT" /\ ~in.self_test_ok        \* RSM-12
 C03_Guard(m, in) == DiscrepancyCode(m) # "NONE"                 \* RSM-04, RSM-02
+C24_Guard(m, in) == ~in.fieldbus_ok                             \* seed, RSM-03
 C04_Guard(m, in) == m.state = "BOOT" /\ EstopTripped(in)        \* RSM-12
 C05_Guard(m, in) == m.state = "BOOT"                            \* RSM-12
 C06_Guard(m, in) == m.state # "ESTOP_ACTIVE" /\ EstopTripped(in) \* RSM-05
@@ -258,10 +318,15 @@ C08_Guard(m, in) == m.state = "ESTOP_ACTIVE"                    \* RSM-05
 C09_Guard(m, in) == m.state \in Powered /\ in.drive_fault       \* RSM-07, RSM-03
 C10_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T1"  \* RSM-10
                     /\ in.speed = "OVER_T1"
+\* C25: standstill monitoring where power is on and no motion is commanded.
+\* (An axis still in PLCopen Stopping after JOG_STOP is still decelerating.)
+C25_Guard(m, in) == /\ m.state \in {"ARMING", "AUTO_IDLE", "MANUAL_IDLE", "HOLD"}
+                    /\ \A i \in Axes : m.axes[i] \in {"Disabled", "StandStill"}
+                    /\ in.speed # "ZERO"                          \* RSM-11, RSM-03
 C11_Guard(m, in) == m.state \in Powered /\ Manual(m) /\ EnablePanic(in)  \* RSM-09
-C12_Guard(m, in) == StopCat1Free(m) /\ in.selector # m.session_mode      \* RSM-02
-C13_Guard(m, in) == StopCat1Free(m) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
-C14_Guard(m, in) == StopCat1Free(m) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
+C12_Guard(m, in) == StopCat1Free(m, in) /\ in.selector # m.session_mode      \* RSM-02
+C13_Guard(m, in) == StopCat1Free(m, in) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
+C14_Guard(m, in) == StopCat1Free(m, in) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
 C15_Guard(m, in) == m.state = "ARMING" /\ in.servo_ready                 \* RSM-07
 C16_Guard(m, in) == m.state = "ARMING" /\ m.state_cycles = ArmingTimeoutCycles
 C17_Guard(m, in) == m.state = "ARMING"                                   \* RSM-07
@@ -276,17 +341,28 @@ C22_Guard(m, in) == m.state = "IDLE" /\ in.selector # "T2"               \* RSM-
 C01(m, in) == m                                        \* stay: only re-init leaves
 C02(m, in) == Lockout(m, "SELF_TEST_FAILED")
 C03(m, in) == Lockout(m, DiscrepancyCode(m))
+C24(m, in) == Lockout(m, "FIELDBUS_LOSS")
 C04(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
 C05(m, in) == Enter(m, "IDLE")
 C06(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
-C07(m, in) == Enter(m, "ESTOP_RESET_NEEDED")           \* never IDLE (RSM-05)
+\* never IDLE (RSM-05); the commands queued now were submitted before the
+\* release: a RESET among them is stale (K36).
+C07(m, in) == [Enter(m, "ESTOP_RESET_NEEDED") EXCEPT !.stale_commands = Len(m.queue)]
 C08(m, in) == m
 C09(m, in) == Lockout(m, "DRIVE_FAULT")
 C10(m, in) == Lockout(m, "T1_OVERSPEED")
+C25(m, in) == Lockout(m, "STANDSTILL_VIOLATION")
 C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
-C12(m, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
-C13(m, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
-C14(m, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
+\* A Cat 1 stop; escalating a stop in progress (STOPPING CAT2) keeps its
+\* timer and counts the cycle (as C21, at most up to the limit): the stop
+\* watchdog runs from the first trigger of the episode.
+StopCat1(m) == [WithCat(Enter(m, "STOPPING"), "CAT1")
+                  EXCEPT !.state_cycles = IF m.state = "STOPPING"
+                                          THEN Min(m.state_cycles + 1, MaxStopCycles)
+                                          ELSE 0]
+C12(m, in) == StopCat1(m)
+C13(m, in) == StopCat1(m)
+C14(m, in) == StopCat1(m)
 C15(m, in) == Enter(m, IF m.session_mode = "AUTO" THEN "AUTO_IDLE" ELSE "MANUAL_IDLE")
 C16(m, in) == Lockout(m, "ARMING_TIMEOUT")
 C17(m, in) == [m EXCEPT !.state_cycles = @ + 1]
@@ -302,6 +378,7 @@ SafetyRow(m, in) ==
     IF      C01_Guard(m, in) THEN "C01"
     ELSE IF C02_Guard(m, in) THEN "C02"
     ELSE IF C03_Guard(m, in) THEN "C03"
+    ELSE IF C24_Guard(m, in) THEN "C24"
     ELSE IF C04_Guard(m, in) THEN "C04"
     ELSE IF C05_Guard(m, in) THEN "C05"
     ELSE IF C06_Guard(m, in) THEN "C06"
@@ -309,6 +386,7 @@ SafetyRow(m, in) ==
     ELSE IF C08_Guard(m, in) THEN "C08"
     ELSE IF C09_Guard(m, in) THEN "C09"
     ELSE IF C10_Guard(m, in) THEN "C10"
+    ELSE IF C25_Guard(m, in) THEN "C25"
     ELSE IF C11_Guard(m, in) THEN "C11"
     ELSE IF C12_Guard(m, in) THEN "C12"
     ELSE IF C13_Guard(m, in) THEN "C13"
@@ -336,7 +414,8 @@ Safety(m, in) ==
       [] r = "C17" -> C17(m, in) [] r = "C18" -> C18(m, in)
       [] r = "C19" -> C19(m, in) [] r = "C20" -> C20(m, in)
       [] r = "C21" -> C21(m, in) [] r = "C22" -> C22(m, in)
-      [] r = "C23" -> C23(m, in)
+      [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
+      [] r = "C25" -> C25(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
@@ -348,11 +427,17 @@ CommandRow(m, c, in) ==
     ELSE CASE
       c.kind = "RESET" ->                                             \* RSM-05
         IF      m.state = "ESTOP_ACTIVE"        THEN "K02"
+        ELSE IF m.stale_commands > 0            THEN "K36"   \* issued before release
         ELSE IF m.state # "ESTOP_RESET_NEEDED"  THEN "K03"
         ELSE IF in.drive_fault                  THEN "K04"
+        ELSE IF ~(m.estop_tested_a /\ m.estop_tested_b) THEN "K37"  \* channel test
         ELSE "K05"
    [] c.kind = "SERVO_ON" ->                                          \* RSM-06
+        \* K38: IDLE before §5 too (`state` is the state at the cycle start): a
+        \* Servo-on popped in the cycle whose §5 row removed power (C11, C18)
+        \* would keep the contactor closed across the stop.
         IF      m.state # "IDLE"                                  THEN "K06"
+        ELSE IF state # "IDLE"                                    THEN "K38"
         ELSE IF in.drive_fault                                    THEN "K07"
         ELSE IF m.selector = "INVALID"                            THEN "K08"
         ELSE IF m.selector = "AUTO" /\ GateOpen(in)               THEN "K09"
@@ -391,7 +476,8 @@ CommandRow(m, c, in) ==
 \* The reject rows and their reason codes (RSM-13).
 RejectReason ==
     [K01 |-> "LOCKED_OUT",    K02 |-> "ESTOP_PRESSED",    K03 |-> "WRONG_STATE",
-     K04 |-> "DRIVE_FAULT",   K06 |-> "WRONG_STATE",      K07 |-> "DRIVE_FAULT",
+     K04 |-> "DRIVE_FAULT",   K36 |-> "ESTOP_PRESSED",    K37 |-> "CHANNEL_TEST_PENDING",
+     K06 |-> "WRONG_STATE",   K38 |-> "WRONG_STATE",      K07 |-> "DRIVE_FAULT",
      K08 |-> "SELECTOR_INVALID", K09 |-> "SAFEGUARD_OPEN",
      K10 |-> "ENABLE_NOT_MIDDLE", K11 |-> "T2_NOT_CONFIRMED",
      K13 |-> "WRONG_STATE",   K15 |-> "WRONG_MODE",       K16 |-> "WRONG_STATE",
@@ -408,7 +494,8 @@ Reject(m, reason) == [m EXCEPT !.command_result = reason,
                                !.last_reject_reason = reason]
 
 \* The accepting rows.
-K05(m, c, in) == Enter(m, "IDLE")                                     \* INV-RESET
+K05(m, c, in) == [Enter(m, "IDLE") EXCEPT !.estop_tested_a = FALSE,     \* INV-RESET
+                                          !.estop_tested_b = FALSE]
 K12(m, c, in) == [Enter(m, "ARMING") EXCEPT !.session_mode = m.selector,
                                             !.stop_category = "NONE"]
 K14(m, c, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
@@ -437,8 +524,9 @@ CommandStep(m, in) ==
     ELSE LET c  == Head(m.queue)
              m1 == [m EXCEPT !.queue = Tail(@)]
              r  == CommandRow(m1, c, in)
-         IN IF r \in RejectRows THEN Reject(m1, RejectReason[r])
-                                ELSE Accept(r, m1, c, in)
+             m2 == IF r \in RejectRows THEN Reject(m1, RejectReason[r])
+                                       ELSE Accept(r, m1, c, in)
+         IN [m2 EXCEPT !.stale_commands = Max2(@ - 1, 0)]   \* K36: one fewer stale
 
 -----------------------------------------------------------------------------
 (******************** §8 PLCopen axes (RSM-17) *****************************)
@@ -485,30 +573,79 @@ AfterSubmit(c) ==
     IF Len(queue) < QueueCapacity THEN [Mgr EXCEPT !.queue = Append(@, c)]
     ELSE [Mgr EXCEPT !.last_reject_reason = "QUEUE_FULL"]
 
+(************************ Outputs (§7, RSM-16) *****************************)
+\* Each output as a function of a manager record: the requirement observers
+\* read the outputs before and after a cycle.
+ContactorOut(m)      == m.state \in Powered
+DriveEnableOut(m)    == m.state \in Powered
+BrakeReleaseOut(m)   == m.state \in Powered
+RampDownOut(m)       == m.state = "STOPPING"
+ResetLampOut(m)      == m.state = "ESTOP_RESET_NEEDED"
+CommandedSpeedOut(m) == IF m.state = "MANUAL_JOGGING" THEN m.jog.speed_mm_s ELSE 0
+
+\* Any of the three power outputs on.
+PowerOut(m) == ContactorOut(m) \/ DriveEnableOut(m) \/ BrakeReleaseOut(m)
+
+\* No motion commanded: the status shows a state without motion (RSM-16
+\* status record) and every axis output is Disabled or StandStill.
+NoMotionOut(m) ==
+    /\ m.state \in {"ARMING", "AUTO_IDLE", "MANUAL_IDLE", "HOLD"}
+    /\ \A i \in Axes : m.axes[i] \in {"Disabled", "StandStill"}
+
+\* The kind of the command the next cycle pops, "NONE" if the queue is empty.
+Popped == IF queue = << >> THEN "NONE" ELSE Head(queue).kind
+
 Cycle(in) ==
-    LET m2 == AfterSafety(in)
-        m  == AxesStep(CommandStep(m2, in), in)     \* = AfterCycle(in)
+    LET m2  == AfterSafety(in)
+        m   == AxesStep(CommandStep(m2, in), in)     \* = AfterCycle(in)
+        acc == IF m.command_result = "ACCEPTED" THEN Popped ELSE "NONE"
+        tripped == EstopTripped(in)
+        n(c, bad) == IF bad THEN Min(c + 1, D + 1) ELSE 0
     IN /\ SetMgr(m)
        /\ inputs' = in
        /\ event' = [kind |-> "cycle", inputs |-> in]
-       /\ reset_since_trip' =
-            IF m2.state = "ESTOP_ACTIVE" \/ m.state = "ESTOP_ACTIVE" THEN FALSE
-            ELSE IF /\ queue # << >> /\ Head(queue).kind = "RESET"
-                    /\ m.command_result = "ACCEPTED"
-                    /\ in.estop_a /\ in.estop_b
-                 THEN TRUE
-            ELSE reset_since_trip
-       /\ jog_in_auto' = /\ queue # << >>
-                         /\ Head(queue).kind \in {"JOG_START", "JOG_STOP"}
-                         /\ InAuto(m2)
+       \* requirement observers (inputs, commands, outputs only)
+       /\ obs_estop' = IF tripped THEN "DEMANDED"
+                       ELSE IF obs_estop = "DEMANDED" THEN "RELEASED"
+                       ELSE IF obs_estop = "RESET_ISSUED" /\ acc = "RESET" THEN "CLEAR"
+                       ELSE obs_estop
+       /\ obs_open_a' = ((obs_estop # "CLEAR" /\ obs_open_a) \/ ~in.estop_a)
+       /\ obs_open_b' = ((obs_estop # "CLEAR" /\ obs_open_b) \/ ~in.estop_b)
+       /\ obs_disagree' =
+            [estop    |-> n(obs_disagree.estop, in.estop_a # in.estop_b),
+             gate     |-> n(obs_disagree.gate, in.gate_a # in.gate_b),
+             enable   |-> n(obs_disagree.enable, in.enable_a # in.enable_b),
+             selector |-> n(obs_disagree.selector, in.selector \notin Modes)]
+       /\ obs_locked' = (obs_locked \/ m.fault_code # "NONE")
+       /\ obs_ramp' = IF RampDownOut(m) /\ in.speed # "ZERO"
+                      THEN Min(obs_ramp + 1, MaxStopCycles + 2) ELSE 0
+       /\ last_accepted' = acc
+       /\ jog_in_auto' = /\ Popped \in {"JOG_START", "JOG_STOP"}
+                         /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
+       /\ obs_guard_fault' = (acc \in {"RESET", "SERVO_ON"} /\ in.drive_fault)
+       /\ obs_servo_on_powered' = (acc = "SERVO_ON" /\ PowerOut(Mgr))
+       /\ obs_t2' = IF acc = "T2_CONFIRM" THEN TRUE
+                    ELSE IF in.selector # "T2" \/ tripped \/ PowerOut(Mgr) THEN FALSE
+                    ELSE obs_t2
+       /\ obs_drive_fault' = (in.drive_fault /\ PowerOut(Mgr))
+       /\ obs_fieldbus_lost' = (obs_fieldbus_lost \/ ~in.fieldbus_ok)
+       /\ obs_unexpected_motion' =
+            (PowerOut(Mgr) /\ NoMotionOut(Mgr) /\ in.speed # "ZERO")
        /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
-       /\ ever_locked' = (ever_locked \/ m2.state = "ERROR_LOCKOUT"
-                                      \/ m.state = "ERROR_LOCKOUT")
+       /\ obs_booted' = TRUE
+       /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
 
+\* A RESET queued after the E-stop release is "issued after the release"
+\* (RSM-05); the Submit's result (queued / queue_full) is its output.
 Submit(c) ==
     /\ SetMgr(AfterSubmit(c))
     /\ event' = [kind |-> "submit", command |-> c]
-    /\ UNCHANGED histVars
+    /\ obs_estop' = IF obs_estop = "RELEASED" /\ c.kind = "RESET" /\ Len(queue) < QueueCapacity
+                    THEN "RESET_ISSUED" ELSE obs_estop
+    /\ UNCHANGED <<inputs, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
+                   last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
+                   obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
+                   obs_booted, obs_self_test_failed>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -559,7 +696,15 @@ FreeDefault == [speed |-> "ZERO", servo_ready |-> FALSE, drive_fault |-> FALSE,
                 self_test_ok |-> TRUE]
 
 WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
-                            !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok]
+                            !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok,
+                            !.fieldbus_ok = TRUE]
+
+\* Fieldbus/cycle watchdog loss (C24) is a cycle of its own, the other free
+\* signals at their defaults: C24 precedes every row that reads them but
+\* C02, and lockout (C01) reads none of them.  Not offered in lockout.
+FieldbusLoss(cur) ==
+    IF state = "ERROR_LOCKOUT" \/ FALSE \notin FieldbusInputs THEN {}
+    ELSE {[WithFree(cur, FreeDefault) EXCEPT !.fieldbus_ok = FALSE]}
 
 \* With CombineChanges a cycle may change a held group and choose the free
 \* signals at once; without it (the CI cfg) a cycle either changes one held
@@ -567,9 +712,9 @@ WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
 \* free signals.
 NextInputs(cur) ==
     IF CombineChanges
-    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
+    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices} \cup FieldbusLoss(cur)
     ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)}
-         \cup {WithFree(cur, f) : f \in FreeChoices}
+         \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur)
 
 \* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
 \* off, every axis Disabled.
@@ -584,8 +729,17 @@ Init ==
     /\ resume_to = "NONE"         /\ jog = NoJog
     /\ queue = << >>              /\ axes = [i \in Axes |-> "Disabled"]
     /\ inputs = InitialInputs     /\ event = [kind |-> "init"]
-    /\ reset_since_trip = TRUE    /\ jog_in_auto = FALSE
-    /\ t1_overspeed = FALSE       /\ ever_locked = FALSE
+    /\ stale_commands = 0         /\ estop_tested_a = FALSE
+    /\ estop_tested_b = FALSE
+    /\ obs_estop = "CLEAR"        /\ obs_open_a = FALSE /\ obs_open_b = FALSE
+    /\ obs_disagree = [estop |-> 0, gate |-> 0, enable |-> 0, selector |-> 0]
+    /\ obs_locked = FALSE         /\ obs_ramp = 0
+    /\ last_accepted = "NONE"     /\ jog_in_auto = FALSE
+    /\ obs_guard_fault = FALSE    /\ obs_servo_on_powered = FALSE
+    /\ obs_t2 = FALSE             /\ obs_drive_fault = FALSE
+    /\ obs_fieldbus_lost = FALSE  /\ obs_unexpected_motion = FALSE
+    /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
+    /\ obs_self_test_failed = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
 \* last_reject_reason changes), so when it is full one representative
@@ -600,12 +754,12 @@ Spec == Init /\ [][Next]_vars
 
 -----------------------------------------------------------------------------
 (************************ Outputs (§7, RSM-16) *****************************)
-contactor_closed     == state \in Powered
-drive_enable         == state \in Powered
-brake_release        == state \in Powered
-ramp_down_request    == state = "STOPPING"
-reset_lamp           == state = "ESTOP_RESET_NEEDED"
-commanded_speed_mm_s == IF state = "MANUAL_JOGGING" THEN jog.speed_mm_s ELSE 0
+contactor_closed     == ContactorOut(Mgr)
+drive_enable         == DriveEnableOut(Mgr)
+brake_release        == BrakeReleaseOut(Mgr)
+ramp_down_request    == RampDownOut(Mgr)
+reset_lamp           == ResetLampOut(Mgr)
+commanded_speed_mm_s == CommandedSpeedOut(Mgr)
 queue_length         == Len(queue)
 
 -----------------------------------------------------------------------------
@@ -629,8 +783,19 @@ TypeOK ==
     /\ queue \in Seq(Commands) /\ Len(queue) <= QueueCapacity
     /\ axes \in [Axes -> AxisStates]
     /\ inputs \in Inputs
-    /\ reset_since_trip \in BOOLEAN /\ jog_in_auto \in BOOLEAN
-    /\ t1_overspeed \in BOOLEAN /\ ever_locked \in BOOLEAN
+    /\ stale_commands \in 0..QueueCapacity
+    /\ estop_tested_a \in BOOLEAN /\ estop_tested_b \in BOOLEAN
+    /\ obs_estop \in {"CLEAR", "DEMANDED", "RELEASED", "RESET_ISSUED"}
+    /\ obs_open_a \in BOOLEAN /\ obs_open_b \in BOOLEAN
+    /\ obs_disagree \in [estop: 0..(D + 1), gate: 0..(D + 1), enable: 0..(D + 1),
+                         selector: 0..(D + 1)]
+    /\ obs_locked \in BOOLEAN /\ obs_ramp \in 0..(MaxStopCycles + 2)
+    /\ last_accepted \in CommandKinds \cup {"NONE"}
+    /\ jog_in_auto \in BOOLEAN /\ obs_guard_fault \in BOOLEAN
+    /\ obs_servo_on_powered \in BOOLEAN /\ obs_t2 \in BOOLEAN
+    /\ obs_drive_fault \in BOOLEAN /\ obs_fieldbus_lost \in BOOLEAN
+    /\ obs_unexpected_motion \in BOOLEAN /\ t1_overspeed \in BOOLEAN
+    /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
     \* per-state data is meaningful only where §4 says so
     /\ (session_mode # "NONE") <=> (state \in Powered)
     /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
@@ -639,78 +804,186 @@ TypeOK ==
     /\ (resume_to # "NONE") <=> (state = "HOLD" \/ (state = "STOPPING" /\ stop_category = "CAT2"))
     /\ (jog # NoJog) <=> (state = "MANUAL_JOGGING" \/ resume_to = "MANUAL_JOGGING")
 
-\* INV-RESET (RSM-05): ARMING and OPERATIONAL are reachable from
-\* ESTOP_ACTIVE only through K05, a Reset accepted while both E-stop
-\* channels were released.
-INV_RESET == state \in {"ARMING"} \cup Operational => reset_since_trip
+(***************************************************************************)
+(* Requirement-level properties.  Written from REQUIREMENTS.md (RSM-xx)    *)
+(* and the seed, over the INPUTS (`inputs`, the last cycle's) and the      *)
+(* OUTPUTS (§7: power outputs, ramp-down request, reset lamp, commanded    *)
+(* speed, axes, and the status record's session_mode, stop_category,       *)
+(* fault_code, command_result), with the observers above as the only      *)
+(* history.  None reads `state` or another model-internal variable.        *)
+(* Each has a witness (Witness_<name>, the negation of its antecedent)    *)
+(* that the checker must violate, and a killing mutant                     *)
+(* (models/mutants/SystemStateManager.toml).                              *)
+(***************************************************************************)
+Unpowered == ~contactor_closed /\ ~drive_enable /\ ~brake_release
+Locked    == fault_code # "NONE"                       \* status: a fault code shown
+Cat1Ramp  == ramp_down_request /\ stop_category = "CAT1"
 
-\* INV-NOJOG-AUTO (RSM-08): never MANUAL_JOGGING with session_mode or
-\* selector AUTO at the end of a cycle; a jog command in AUTO changes
-\* nothing: it is rejected with JOG_IN_AUTO (K25, K30; LOCKED_OUT in
-\* ERROR_LOCKOUT, K01 comes first), and a rejection changes only the
-\* reason fields (Reject).
-INV_NOJOG_AUTO ==
-    /\ state = "MANUAL_JOGGING" => session_mode # "AUTO" /\ selector # "AUTO"
-    /\ jog_in_auto =>
-           command_result = IF state = "ERROR_LOCKOUT" THEN "LOCKED_OUT"
-                                                       ELSE "JOG_IN_AUTO"
+\* INV-RESET (RSM-05): after any E-stop demand on either channel, no power
+\* output until a Reset command issued after both channels were seen
+\* released was accepted.
+INV_RESET == contactor_closed \/ drive_enable \/ brake_release => obs_estop = "CLEAR"
 
-\* INV-DISCREPANCY (RSM-04, RSM-02): a mismatch counter above D implies
-\* ERROR_LOCKOUT; ERROR_LOCKOUT is never left.
+\* RSM-05: a Reset is accepted only when it was issued after the release
+\* (not while the E-stop was pressed) and no drive fault was read.
+RSM05_RESET_ACCEPTED == last_accepted = "RESET" => obs_estop = "CLEAR" /\ ~obs_guard_fault
+
+\* RSM-04 (K37, test of both channels): a Reset is accepted only if both
+\* E-stop channels were seen open (and, RSM-05, released) since the demand:
+\* a one-channel demand leaves a stuck channel undetected otherwise.
+RSM04_CHANNEL_TEST == last_accepted = "RESET" => obs_open_a /\ obs_open_b
+
+\* RSM-03/RSM-05: an E-stop demand on either channel removes drive power and
+\* engages the brakes in the same cycle (Cat 0); every axis disabled.
+RSM03_ESTOP_CAT0 ==
+    ~inputs.estop_a \/ ~inputs.estop_b =>
+        Unpowered /\ \A i \in Axes : axes[i] \in {"Disabled", "ErrorStop"}
+
+\* INV-DISCREPANCY (RSM-04, RSM-02): channels that disagreed (or a selector
+\* that read invalid) for more than D cycles in a row are locked out, and
+\* the lockout is left by no input sequence (the inputs stay free in it).
 INV_DISCREPANCY ==
-    /\ (\/ estop_mismatch > D \/ safeguard_mismatch > D
-        \/ enabling_mismatch > D \/ selector_invalid > D) => state = "ERROR_LOCKOUT"
-    /\ ever_locked => state = "ERROR_LOCKOUT"
+    /\ (\/ obs_disagree.estop > D \/ obs_disagree.gate > D
+        \/ obs_disagree.enable > D \/ obs_disagree.selector > D) => Locked /\ Unpowered
+    /\ obs_locked => Locked /\ Unpowered /\ ~reset_lamp
 
-\* INV-POWER (RSM-03, RSM-07, RSM-16): contactor, drive enable and brake
-\* release only in powered states; in ESTOP_ACTIVE and ERROR_LOCKOUT all
-\* three are off.
-INV_POWER ==
-    /\ (contactor_closed \/ drive_enable \/ brake_release) => state \in Powered
-    /\ state \in {"ESTOP_ACTIVE", "ERROR_LOCKOUT"} =>
-           ~contactor_closed /\ ~drive_enable /\ ~brake_release
+\* Seed (loss of the EtherCAT fieldbus is a lockout cause), RSM-03 (a
+\* hardware fault is a Cat 0 stop): after a fieldbus/cycle watchdog loss the
+\* outputs are off and a fault code is shown.
+RSM03_FIELDBUS == obs_fieldbus_lost => Locked /\ Unpowered
 
-\* INV-GATE (RSM-08): AUTO_RUNNING only with both safeguard channels closed.
-INV_GATE == state = "AUTO_RUNNING" => inputs.gate_a /\ inputs.gate_b
+\* RSM-02: with drive power on, a selector reading other than the session's
+\* mode (a change, or invalid) means a Cat 1 ramp-down.
+RSM02_MODE_CHANGE == drive_enable /\ inputs.selector # session_mode => Cat1Ramp
 
-\* INV-ENABLE (RSM-09): MANUAL_JOGGING only in T1/T2 with both enabling
-\* channels MIDDLE.
+\* INV-GATE (RSM-08): in AUTO (selector or session) with the safeguard open
+\* on either channel, no drive is enabled except during a Cat 1 ramp (whose
+\* end within the budget is RSM11_STOP_BUDGET).
+INV_GATE ==
+    /\ inputs.selector = "AUTO" \/ session_mode = "AUTO"
+    /\ ~inputs.gate_a \/ ~inputs.gate_b
+    /\ drive_enable
+    => Cat1Ramp
+
+\* INV-ENABLE (RSM-09): in a manual session, the enabling device fully
+\* pressed on either channel removes power (Cat 0); not in the middle
+\* position on both channels, drives stay enabled only during a Cat 1 ramp.
 INV_ENABLE ==
-    state = "MANUAL_JOGGING" =>
-        /\ session_mode \in {"T1", "T2"}
+    session_mode \in {"T1", "T2"} /\ drive_enable =>
+        /\ inputs.enable_a # "PANIC" /\ inputs.enable_b # "PANIC"
+        /\ (inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE") \/ Cat1Ramp
+
+\* RSM-11: every stop reaches standstill within MaxStopCycles of its FIRST
+\* trigger: the ramp-down output is on with the arm moving for at most
+\* MaxStopCycles + 1 consecutive cycles (the trigger cycle, then
+\* MaxStopCycles full cycles), escalation from Cat 2 to Cat 1 included.
+RSM11_STOP_BUDGET == obs_ramp <= MaxStopCycles + 1
+
+\* RSM-11: a Pause is a Cat 2 stop: power kept, ramp-down requested.
+RSM11_PAUSE_CAT2 ==
+    last_accepted = "PAUSE" => contactor_closed /\ ramp_down_request /\ stop_category = "CAT2"
+
+\* RSM-11/RSM-03 (standstill monitoring, IEC 60204-1 Cat 2): with power on
+\* and no motion commanded, measured motion removes power (Cat 0) and shows
+\* a fault (or the E-stop removed power in the same cycle).
+RSM11_STANDSTILL ==
+    obs_unexpected_motion => Unpowered /\ (Locked \/ ~inputs.estop_a \/ ~inputs.estop_b)
+
+\* INV-NOJOG-AUTO (RSM-08): no jog speed is commanded in AUTO (selector or
+\* session), and a jog command in AUTO is rejected with its reason
+\* (JOG_IN_AUTO; LOCKED_OUT in lockout) and accepted never.
+INV_NOJOG_AUTO ==
+    /\ commanded_speed_mm_s > 0 => inputs.selector # "AUTO" /\ session_mode # "AUTO"
+    /\ jog_in_auto => command_result \in {"JOG_IN_AUTO", "LOCKED_OUT"}
+
+\* RSM-09: a jog start is accepted only in a manual session with the
+\* enabling device in its middle position on both channels.
+RSM09_JOG_START ==
+    last_accepted = "JOG_START" =>
+        /\ session_mode \in {"T1", "T2"} /\ inputs.selector = session_mode
         /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
 
-\* INV-T1SPEED (RSM-10): in a T1 session the commanded speed never exceeds
-\* T1SpeedLimit, and a cycle that reads OVER_T1 during a T1 session ends
-\* unpowered.
+\* RSM-08: Start is accepted only in an AUTO session with the safeguard
+\* closed on both channels.
+RSM08_START ==
+    last_accepted = "START" =>
+        /\ session_mode = "AUTO" /\ inputs.selector = "AUTO"
+        /\ inputs.gate_a /\ inputs.gate_b
+
+\* INV-T1SPEED (RSM-10): in T1 the commanded speed at the tool centre point
+\* never exceeds T1SpeedLimit, and a cycle that measures OVER_T1 in a T1
+\* session ends with the power outputs off.  (The TCP speed with the tool
+\* offset is computed in the C++ kinematics; the model sees its level.)
 INV_T1SPEED ==
     /\ session_mode = "T1" => commanded_speed_mm_s <= T1SpeedLimit
-    /\ t1_overspeed => state \notin Powered
+    /\ t1_overspeed => Unpowered
+
+\* RSM-06: Servo-on is accepted only unpowered, after any E-stop demand has
+\* been reset, with no drive fault, a valid mode that becomes the session's,
+\* and: AUTO - safeguard closed; T1/T2 - enabling device middle; T2 - a T2
+\* confirmation accepted since the selector was last moved off T2.
+RSM06_SERVO_ON ==
+    last_accepted = "SERVO_ON" =>
+        /\ ~obs_servo_on_powered /\ ~obs_guard_fault /\ obs_estop = "CLEAR"
+        /\ inputs.selector \in Modes /\ session_mode = inputs.selector
+        /\ inputs.selector = "AUTO" => inputs.gate_a /\ inputs.gate_b
+        /\ inputs.selector \in {"T1", "T2"} =>
+               inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
+        /\ inputs.selector = "T2" => obs_t2
+
+\* RSM-07/RSM-03: a drive fault read while powered removes power (Cat 0)
+\* and shows a fault (or the E-stop removed power in the same cycle).
+RSM07_DRIVE_FAULT ==
+    obs_drive_fault => Unpowered /\ (Locked \/ ~inputs.estop_a \/ ~inputs.estop_b)
+
+\* RSM-12: a failed self-test in the first cycle locks out for good.
+RSM12_SELF_TEST == obs_self_test_failed => fault_code = "SELF_TEST_FAILED" /\ Unpowered
+
+\* RSM-17: without power every axis is Disabled (ErrorStop after a drive
+\* fault, which puts every axis in ErrorStop).
+RSM17_AXES ==
+    /\ Unpowered => \A i \in Axes : axes[i] \in {"Disabled", "ErrorStop"}
+    /\ fault_code = "DRIVE_FAULT" => \A i \in Axes : axes[i] = "ErrorStop"
 
 \* INV-1OO2 (RSM-04): a tripped channel of a safety input that guards the
-\* current mode never coexists with a motion state: E-stop always,
-\* safeguard in AUTO, enabling device in T1/T2 (not the safeguard in
-\* manual modes, RSM-09).
+\* current mode never coexists with commanded motion (a jog speed or an
+\* axis in motion): E-stop always, safeguard in AUTO, enabling device in
+\* T1/T2 (the safeguard is not required in manual modes, RSM-09).
 INV_1OO2 ==
-    state \in Motion =>
+    (commanded_speed_mm_s > 0 \/ \E i \in Axes : axes[i] \in MotionStates) =>
         /\ inputs.estop_a /\ inputs.estop_b
         /\ session_mode = "AUTO" => inputs.gate_a /\ inputs.gate_b
         /\ session_mode \in {"T1", "T2"} =>
                inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
 
-(* Determinism (RSM-15): each event has exactly one successor.  We chose  *)
-(* to make this true by construction: Next is \E e : Cycle(e) \/ Submit(e)*)
-(* and each of these is "every variable' = a function of (state, e)"     *)
-(* (SetMgr of AfterCycle/AfterSubmit: IF/CASE chains with disjoint guards,*)
-(* no \E, no disjunction).  An invariant cannot enumerate the successors  *)
-(* of an action, so the invariant restates it over the set of successor  *)
-(* values computed from the same functions: for every event enabled in    *)
-(* the current state the successor set is a singleton, and the functions  *)
-(* are total there (TLC reports an error if a CASE has no matching arm or *)
-(* Head is applied to << >>).                                             *)
-Determinism ==
-    /\ \A in \in NextInputs(inputs) : Cardinality({AfterCycle(in)}) = 1
-    /\ \A c \in Commands : Cardinality({AfterSubmit(c)}) = 1
+(***************************************************************************)
+(* Witnesses (vacuity): each is the negation of an invariant's antecedent; *)
+(* the checker must find a state violating it, i.e. reach the antecedent.  *)
+(***************************************************************************)
+Witness_INV_RESET            == ~(contactor_closed \/ drive_enable \/ brake_release)
+Witness_RSM05_RESET_ACCEPTED == ~(last_accepted = "RESET")
+Witness_RSM04_CHANNEL_TEST   == ~(last_accepted = "RESET")
+Witness_RSM03_ESTOP_CAT0     == ~((~inputs.estop_a \/ ~inputs.estop_b) /\ obs_booted)
+Witness_INV_DISCREPANCY      == ~(obs_disagree.estop > D \/ obs_disagree.gate > D
+                                  \/ obs_disagree.enable > D \/ obs_disagree.selector > D)
+Witness_RSM03_FIELDBUS       == ~obs_fieldbus_lost
+Witness_RSM02_MODE_CHANGE    == ~(drive_enable /\ inputs.selector # session_mode)
+Witness_INV_GATE             == ~((inputs.selector = "AUTO" \/ session_mode = "AUTO")
+                                  /\ (~inputs.gate_a \/ ~inputs.gate_b) /\ drive_enable)
+Witness_INV_ENABLE           == ~(session_mode \in {"T1", "T2"} /\ drive_enable
+                                  /\ (inputs.enable_a # "MIDDLE" \/ inputs.enable_b # "MIDDLE"))
+Witness_RSM11_STOP_BUDGET    == ~(obs_ramp = MaxStopCycles + 1)
+Witness_RSM11_PAUSE_CAT2     == ~(last_accepted = "PAUSE")
+Witness_RSM11_STANDSTILL     == ~obs_unexpected_motion
+Witness_INV_NOJOG_AUTO       == ~(jog_in_auto /\ command_result = "JOG_IN_AUTO")
+Witness_RSM09_JOG_START      == ~(last_accepted = "JOG_START")
+Witness_RSM08_START          == ~(last_accepted = "START")
+Witness_INV_T1SPEED          == ~t1_overspeed
+Witness_RSM06_SERVO_ON       == ~(last_accepted = "SERVO_ON" /\ inputs.selector = "T2")
+Witness_RSM07_DRIVE_FAULT    == ~obs_drive_fault
+Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
+Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
+Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
 
 -----------------------------------------------------------------------------
 (*********** Input profiles, substituted by the .cfg files with <- *********)
@@ -725,6 +998,9 @@ Full_JogCommands == {Jog(1, 1, 100), Jog(2, -1, 400), Jog(7, 1, 100),
 
 \* Pairs: healthy, and channel B alone tripped (a trip and a disagreement).
 CI_ChannelPairs  == {<<TRUE, TRUE>>, <<TRUE, FALSE>>}
+\* E-stop: also both channels open (a normal press), so that the test of
+\* both channels (K37) can pass and a Reset be accepted.
+CI_EstopPairs    == {<<TRUE, TRUE>>, <<TRUE, FALSE>>, <<FALSE, FALSE>>}
 All_ChannelPairs == BOOLEAN \X BOOLEAN
 \* Full cfg (long timers): only consistent readings where a disagreement
 \* would let a 50-cycle counter run along a 1000-cycle timer.

@@ -2,15 +2,16 @@
 (***************************************************************************)
 (* Strengthening invariants for `safestate prove` (proofs/README.md).     *)
 (* Each is an invariant of SystemStateManager in its own right; together  *)
-(* with TypeOK and the INV_* they make an inductive invariant, so every   *)
-(* INV_* is proved for all reachable states and all parameter values.     *)
+(* with TypeOK and the requirement-level properties they make an          *)
+(* inductive invariant, so every property is proved for all reachable     *)
+(* states and all parameter values.  The lemmas tie the requirement       *)
+(* observers (functions of the inputs and outputs) to the manager state.  *)
 (***************************************************************************)
 EXTENDS SystemStateManager
 
 \* The timers of ARMING and STOPPING never pass their limits: C16 and C20
-\* fire when state_cycles reaches the limit, so C17/C21 only count below it.
-\* (TypeOK's range 0..Max2(...) alone is not inductive: in ARMING a counter
-\* above ArmingTimeoutCycles but below MaxStopCycles would count on.)
+\* fire when state_cycles reaches the limit, so C17/C21 only count below it,
+\* and an escalation (C12-C14 from STOPPING) counts at most up to it.
 Strengthen_TIMERS ==
     /\ state = "ARMING"   => state_cycles <= ArmingTimeoutCycles
     /\ state = "STOPPING" => state_cycles <= MaxStopCycles
@@ -26,22 +27,55 @@ Strengthen_MODE ==
     /\ resume_to = "MANUAL_JOGGING" => session_mode \in {"T1", "T2"}
     /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
 
-\* reset_since_trip is FALSE only between an E-stop trip and the next
-\* accepted Reset, i.e. only in ESTOP_ACTIVE, ESTOP_RESET_NEEDED and
-\* ERROR_LOCKOUT: every way into IDLE and the powered states keeps it.
+\* The E-stop observer against the manager: no pending demand in IDLE, BOOT
+\* and the powered states; a demand means ESTOP_ACTIVE (or lockout), a
+\* release ESTOP_RESET_NEEDED (or lockout).  While released but no Reset was
+\* queued after the release, every queued RESET is among the stale commands
+\* (K36), so K05 cannot accept it.
 Strengthen_RESET ==
-    state \in Powered \cup {"IDLE", "BOOT"} => reset_since_trip
+    /\ state \in Powered \cup {"IDLE", "BOOT"} => obs_estop = "CLEAR"
+    /\ obs_estop = "DEMANDED" => state \in {"ESTOP_ACTIVE", "ERROR_LOCKOUT"}
+    /\ obs_estop \in {"RELEASED", "RESET_ISSUED"} => state \in {"ESTOP_RESET_NEEDED", "ERROR_LOCKOUT"}
+    /\ obs_estop = "RELEASED" /\ state = "ESTOP_RESET_NEEDED" =>
+           \A i \in 1..Len(queue) : queue[i].kind = "RESET" => i <= stale_commands
+    /\ stale_commands <= Len(queue)
+    /\ last_accepted = "RESET" => state = "IDLE"
+
+\* The channel test: no E-stop channel seen open while no demand is pending
+\* (K05 clears them); during an episode the manager's memory is the
+\* observer's.
+Strengthen_TEST ==
+    /\ obs_estop = "CLEAR" /\ state # "ERROR_LOCKOUT" => ~estop_tested_a /\ ~estop_tested_b
+    /\ obs_estop # "CLEAR" /\ state # "ERROR_LOCKOUT" =>
+           (estop_tested_a => obs_open_a) /\ (estop_tested_b => obs_open_b)
+
+\* The input observers count what §3 counts; a fault code shown once is the
+\* lockout for good; a fieldbus loss or a failed self-test was a lockout.
+Strengthen_OBSERVERS ==
+    /\ obs_disagree.estop = estop_mismatch /\ obs_disagree.gate = safeguard_mismatch
+    /\ obs_disagree.enable = enabling_mismatch /\ obs_disagree.selector = selector_invalid
+    /\ obs_locked <=> state = "ERROR_LOCKOUT"
+    /\ obs_fieldbus_lost => state = "ERROR_LOCKOUT"
+    /\ obs_self_test_failed => state = "ERROR_LOCKOUT" /\ fault_code = "SELF_TEST_FAILED"
+    /\ ~obs_booted => state = "BOOT" /\ ~obs_self_test_failed
+    /\ state = "BOOT" => ~obs_booted
+    /\ obs_ramp > 0 => state = "STOPPING" /\ obs_ramp <= state_cycles + 1
+    /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
+    /\ t2_confirmed => obs_t2
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
 \* changes while a jog is kept: Enter keeps session_mode in powered states).
 Strengthen_T1JOG ==
     (session_mode = "T1" /\ jog # NoJog) => jog.speed_mm_s <= T1SpeedLimit
 
-\* Every invariant of the .cfg at once: each INV_* is proved assuming all
-\* of them (and the lemmas above) in the pre-state; it is their conjunction
-\* that is inductive.
+\* Every property of the .cfg at once: each is proved assuming all of them
+\* (and the lemmas above) in the pre-state; it is their conjunction that is
+\* inductive.
 Strengthen_ALL ==
     /\ TypeOK
-    /\ INV_RESET /\ INV_NOJOG_AUTO /\ INV_DISCREPANCY /\ INV_POWER
-    /\ INV_GATE /\ INV_ENABLE /\ INV_T1SPEED /\ INV_1OO2
+    /\ INV_RESET /\ RSM05_RESET_ACCEPTED /\ RSM04_CHANNEL_TEST /\ RSM03_ESTOP_CAT0
+    /\ INV_DISCREPANCY /\ RSM03_FIELDBUS /\ RSM02_MODE_CHANGE /\ INV_GATE /\ INV_ENABLE
+    /\ RSM11_STOP_BUDGET /\ RSM11_PAUSE_CAT2 /\ RSM11_STANDSTILL /\ INV_NOJOG_AUTO
+    /\ RSM09_JOG_START /\ RSM08_START /\ INV_T1SPEED /\ RSM06_SERVO_ON
+    /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
 =============================================================================

@@ -6,7 +6,8 @@
 
 namespace safestate {
 
-ArmKinematics::ArmKinematics(const DhTable& dh) noexcept : dh_(dh) {}
+ArmKinematics::ArmKinematics(const DhTable& dh, const std::array<double, 3>& tool_offset_m) noexcept
+    : dh_(dh), tool_offset_m_(tool_offset_m[0], tool_offset_m[1], tool_offset_m[2]) {}
 
 Eigen::Isometry3d ArmKinematics::link_transform(const DhRow& row, double theta) noexcept {
   const double th = theta + row.theta_offset_rad;
@@ -28,6 +29,7 @@ Eigen::Isometry3d ArmKinematics::forward(const JointVector& q) const noexcept {
   for (std::size_t i = 0; i < kAxisCount; ++i) {
     t = t * link_transform(dh_[i], q[i]);
   }
+  t.translate(tool_offset_m_);  // flange -> tool centre point
   return t;
 }
 
@@ -41,7 +43,7 @@ ArmKinematics::Jacobian ArmKinematics::jacobian(const JointVector& q) const noex
     p[i] = t.translation();
     t = t * link_transform(dh_[i], q[i]);
   }
-  const Eigen::Vector3d pe = t.translation();
+  const Eigen::Vector3d pe = t * tool_offset_m_;  // the tool centre point
 
   Jacobian j;
   for (std::size_t i = 0; i < kAxisCount; ++i) {

@@ -62,6 +62,13 @@ void SystemStateManager::derive_inputs(const ScanInputs& in) noexcept {
   d.self_test_ok = in.self_test_ok;
   d.servo_ready = in.servo_ready;
   d.drive_fault = in.drive_fault;
+  d.fieldbus_ok = in.fieldbus_ok;
+  d.axes_at_rest = std::all_of(axes_.begin(), axes_.end(), [](const PlcopenAxis& a) {
+    return a.state() == AxisState::Disabled || a.state() == AxisState::StandStill;
+  });
+  // K37: an E-stop channel seen open, every cycle, in every state.
+  reset_.estop_tested_a = reset_.estop_tested_a || !in.estop_closed.a;
+  reset_.estop_tested_b = reset_.estop_tested_b || !in.estop_closed.b;
   // §3 order: E-stop, safeguard, enabling device, selector.
   if (estop_.discrepancy_fault()) {
     d.discrepancy = FaultCode::DiscrepancyEstop;
@@ -99,7 +106,8 @@ void SystemStateManager::fire(const TransitionRow& row, StepContext& ctx, bool i
 
 ScanOutputs SystemStateManager::cycle(const ScanInputs& inputs) noexcept {
   derive_inputs(inputs);
-  StepContext ctx{state_, derived_, config_, config_error_ == ConfigError::None, Command{}};
+  StepContext ctx{state_,  derived_, config_, config_error_ == ConfigError::None, Command{}, reset_,
+                  queue_.size(), state_id(state_)};
 
   // §5: safety evaluation, exactly one row.
   const TransitionRow& safety_row = first_match(RowEvent::Cycle, ctx);
@@ -113,6 +121,9 @@ ScanOutputs SystemStateManager::cycle(const ScanInputs& inputs) noexcept {
     const TransitionRow& command_row = first_match(event_of(command.kind), ctx);
     fire(command_row, ctx, true);
     last_rows_.command = &command_row;
+    if (reset_.stale_commands > 0) {
+      --reset_.stale_commands;  // K36: one fewer command from before the release
+    }
   } else {
     command_result_ = CommandResult::none();
     last_rows_.command = nullptr;
@@ -193,6 +204,9 @@ StatusRecord SystemStateManager::status() const noexcept {
   r.jog_direction = j.direction;
   r.jog_speed_mm_s = j.speed_mm_s;
   r.queue_length = queue_.size();
+  r.stale_commands = reset_.stale_commands;
+  r.estop_tested_a = reset_.estop_tested_a;
+  r.estop_tested_b = reset_.estop_tested_b;
   return r;
 }
 

@@ -11,8 +11,12 @@ namespace safestate {
 
 namespace {
 
-bool stopping_cat1(const MachineState& s) noexcept {
-  return stopping_category(s) == StopCategory::Cat1;
+// C12-C14 do not fire in STOPPING with CAT1 (already the stop asked for) nor with the stop
+// timer expired and the arm still moving (C20 cuts power: Cat 0 beats an escalation).
+bool stopping_cat1(const StepContext& c) noexcept {
+  return stopping_category(c.state) == StopCategory::Cat1 ||
+         (state_id(c.state) == StateId::Stopping && state_cycles(c.state) == c.config.max_stop_cycles &&
+          c.in.speed != SpeedLevel::Zero);
 }
 
 }  // namespace
@@ -43,19 +47,19 @@ bool manual_session_panic(const StepContext& c) noexcept {
   return is_manual(session_mode(c.state)) && c.in.enable_panic;
 }
 
-// C12: not (STOPPING with CAT1) ∧ selector ≠ session_mode (a change, or INVALID).
+// C12: not (STOPPING with CAT1 or timer expired) ∧ selector ≠ session_mode (a change, or INVALID).
 bool selector_differs_from_session_unless_cat1_stopping(const StepContext& c) noexcept {
-  return !stopping_cat1(c.state) && !selector_matches(c.in.selector, session_mode(c.state));
+  return !stopping_cat1(c) && !selector_matches(c.in.selector, session_mode(c.state));
 }
 
-// C13: not (STOPPING with CAT1) ∧ session_mode = AUTO ∧ gate_open.
+// C13: not (STOPPING with CAT1 or timer expired) ∧ session_mode = AUTO ∧ gate_open.
 bool auto_session_gate_open_unless_cat1_stopping(const StepContext& c) noexcept {
-  return !stopping_cat1(c.state) && session_mode(c.state) == OperatingMode::Auto && c.in.gate_open;
+  return !stopping_cat1(c) && session_mode(c.state) == OperatingMode::Auto && c.in.gate_open;
 }
 
-// C14: not (STOPPING with CAT1) ∧ manual ∧ ¬enable_middle.
+// C14: not (STOPPING with CAT1 or timer expired) ∧ manual ∧ ¬enable_middle.
 bool manual_session_enable_not_middle_unless_cat1_stopping(const StepContext& c) noexcept {
-  return !stopping_cat1(c.state) && is_manual(session_mode(c.state)) && !c.in.enable_middle;
+  return !stopping_cat1(c) && is_manual(session_mode(c.state)) && !c.in.enable_middle;
 }
 
 bool servo_ready(const StepContext& c) noexcept { return c.in.servo_ready; }
@@ -117,6 +121,25 @@ bool jog_arguments_invalid(const StepContext& c) noexcept {
 
 bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }
 
+// C24: the fieldbus (EtherCAT) or the cycle watchdog reports a loss.
+bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
+
+// C25: power on, no motion commanded (every axis Disabled/StandStill), measured motion.
+bool moving_at_standstill(const StepContext& c) noexcept {
+  return c.in.axes_at_rest && c.in.speed != SpeedLevel::Zero;
+}
+
+// K36: the Reset was queued before the E-stop release (C07 counted it as stale).
+bool reset_submitted_before_release(const StepContext& c) noexcept { return c.reset.stale_commands > 0; }
+
+// K37: not both E-stop channels seen open since the last accepted Reset.
+bool estop_channels_not_both_tested(const StepContext& c) noexcept {
+  return !(c.reset.estop_tested_a && c.reset.estop_tested_b);
+}
+
+// K38: IDLE only since this cycle's §5 row (C05, C11, C18): power was never seen off.
+bool not_idle_at_cycle_start(const StepContext& c) noexcept { return c.cycle_start_state != StateId::Idle; }
+
 }  // namespace guards
 
 namespace actions {
@@ -133,16 +156,35 @@ void lockout_arming_timeout(StepContext& c) noexcept {
   c.state = states::ErrorLockout{FaultCode::ArmingTimeout};
 }
 void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
+void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::FieldbusLoss}; }
+void lockout_standstill_violation(StepContext& c) noexcept {
+  c.state = states::ErrorLockout{FaultCode::StandstillViolation};
+}
 
 void enter_estop_active(StepContext& c) noexcept { c.state = states::EstopActive{}; }
-void enter_estop_reset_needed(StepContext& c) noexcept { c.state = states::EstopResetNeeded{}; }
+// C07: every command queued now was submitted before the release (K36).
+void enter_estop_reset_needed(StepContext& c) noexcept {
+  c.state = states::EstopResetNeeded{};
+  c.reset.stale_commands = static_cast<std::uint32_t>(c.queued_commands);
+}
 
 // Entering IDLE sets t2_confirmed FALSE (§4).
 void enter_idle(StepContext& c) noexcept { c.state = states::Idle{false}; }
 
-// Cat 1: ramp down with power kept; no resume target, no jog (§4).
+// K05: the accepted Reset starts a new channel test (K37).
+void reset_to_idle(StepContext& c) noexcept {
+  enter_idle(c);
+  c.reset.estop_tested_a = false;
+  c.reset.estop_tested_b = false;
+}
+
+// Cat 1: ramp down with power kept; no resume target, no jog (§4). Escalating a stop in
+// progress (STOPPING CAT2) keeps its timer and counts the cycle (as C21): the watchdog
+// runs from the first trigger (C12-C14 never fire with the timer expired).
 void enter_stopping_cat1(StepContext& c) noexcept {
-  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, 0, ResumeTarget::None, JogSetpoint{}};
+  const std::uint32_t kept =
+      state_id(c.state) == StateId::Stopping ? std::min(state_cycles(c.state) + 1U, c.config.max_stop_cycles) : 0U;
+  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, kept, ResumeTarget::None, JogSetpoint{}};
 }
 
 // K20 Pause: Cat 2, remembers the motion state; a paused jog keeps its setpoint.

@@ -70,6 +70,7 @@ ScanInputs scan_inputs(const py::dict& d) {
     else if (key == "self_test_ok") in.self_test_ok = v.cast<bool>();
     else if (key == "servo_ready") in.servo_ready = v.cast<bool>();
     else if (key == "drive_fault") in.drive_fault = v.cast<bool>();
+    else if (key == "fieldbus_ok") in.fieldbus_ok = v.cast<bool>();
     else if (key == "q") in.q = joint_vector(v, "q");
     else if (key == "qd") in.qd = joint_vector(v, "qd");
     else throw py::key_error("unknown input '" + key + "'");
@@ -120,6 +121,9 @@ py::dict observe(const SystemStateManager& m) {
   d["jog_direction"] = s.jog_direction;
   d["jog_speed_mm_s"] = s.jog_speed_mm_s;
   d["queue_length"] = s.queue_length;
+  d["stale_commands"] = s.stale_commands;
+  d["estop_tested_a"] = s.estop_tested_a;
+  d["estop_tested_b"] = s.estop_tested_b;
   put_outputs(d, m.outputs());
   return d;
 }
@@ -184,6 +188,8 @@ py::dict derived_dict(const DerivedInputs& d) {
   out["self_test_ok"] = d.self_test_ok;
   out["servo_ready"] = d.servo_ready;
   out["drive_fault"] = d.drive_fault;
+  out["fieldbus_ok"] = d.fieldbus_ok;
+  out["axes_at_rest"] = d.axes_at_rest;
   out["discrepancy"] = str(to_string(d.discrepancy));
   return out;
 }
@@ -264,6 +270,7 @@ void observe_key(const SystemStateManager& m, std::string& k) {
   num(s.estop_mismatch); num(s.safeguard_mismatch); num(s.enabling_mismatch); num(s.selector_invalid);
   num(s.state_cycles); num(s.t2_confirmed ? 1 : 0); add(to_string(s.resume_to));
   num(s.jog_axis); num(s.jog_direction); num(s.jog_speed_mm_s); num(static_cast<long long>(s.queue_length));
+  num(static_cast<long long>(s.stale_commands)); num(s.estop_tested_a ? 1 : 0); num(s.estop_tested_b ? 1 : 0);
   num(o.contactor_closed ? 1 : 0); num(o.drive_enable ? 1 : 0); num(o.brake_release ? 1 : 0);
   num(o.ramp_down_request ? 1 : 0); num(o.reset_lamp ? 1 : 0); num(o.commanded_speed_mm_s);
   for (std::size_t i = 0; i < o.axes.size(); ++i) {
@@ -304,6 +311,13 @@ PYBIND11_MODULE(_core, m) {
                      "Joint speed at or below which the axis is at rest (default 0.001 rad/s).")
       .def_readwrite("command_queue_limit", &Config::command_queue_limit,
                      "Commands the queue holds, 1..16 (default 8).")
+      .def_property(
+          "tool_offset_m", [](const Config& c) { return py::make_tuple(c.tool_offset_m[0], c.tool_offset_m[1], c.tool_offset_m[2]); },
+          [](Config& c, const py::sequence& v) {
+            if (py::len(v) != 3) throw py::value_error("tool_offset_m is (x, y, z) in metres");
+            for (std::size_t i = 0; i < 3; ++i) c.tool_offset_m[i] = v[i].cast<double>();
+          },
+          "Tool centre point in the flange frame, metres (RSM-10: T1 speed at the tool tip).")
       .def_property(
           "dh", [](const Config& c) { return dh_to_list(c.dh); },
           [](Config& c, const py::sequence& rows) { c.dh = dh_from(rows); },
@@ -349,6 +363,7 @@ PYBIND11_MODULE(_core, m) {
            "session_mode, stop_category, fault_code, last_reject_reason, command_result,\n"
            "estop_mismatch, safeguard_mismatch, enabling_mismatch, selector_invalid, state_cycles,\n"
            "t2_confirmed, resume_to, jog_axis, jog_direction, jog_speed_mm_s, queue_length,\n"
+           "stale_commands, estop_tested_a, estop_tested_b,\n"
            "contactor_closed, drive_enable, brake_release, ramp_down_request, reset_lamp,\n"
            "commanded_speed_mm_s, axes.")
       .def(

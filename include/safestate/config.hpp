@@ -2,6 +2,7 @@
 // Parameters of the SystemStateManager (design §9): one struct, the model's constants.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +28,9 @@ struct Config {
   double zero_velocity_rad_s{0.001};          ///< |qd[i]| at or below this is standstill (§2)
   std::uint32_t command_queue_limit{8};       ///< commands the queue holds, 1..kMaxQueueCapacity
   DhTable dh{kUr5DhTable};                    ///< arm kinematics (UR5 standard DH)
+  /// Tool centre point in the flange (last DH) frame, metres: the T1 speed (RSM-10) is
+  /// measured at the tool tip, not at the flange. Zero = a tool-less flange.
+  std::array<double, 3> tool_offset_m{0.0, 0.0, 0.0};
 };
 
 /// First problem found, in field order; ConfigError::None for a usable Config.
@@ -51,6 +55,11 @@ struct Config {
   }
   if (c.command_queue_limit == 0U || c.command_queue_limit > kMaxQueueCapacity) {
     return ConfigError::QueueLimitOutOfRange;
+  }
+  for (const double v : c.tool_offset_m) {
+    if (!std::isfinite(v)) {
+      return ConfigError::DhTableNotFinite;
+    }
   }
   for (const DhRow& row : c.dh) {
     if (!std::isfinite(row.a_m) || !std::isfinite(row.alpha_rad) || !std::isfinite(row.d_m) ||

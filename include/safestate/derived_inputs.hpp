@@ -19,6 +19,8 @@ struct DerivedInputs {
   bool self_test_ok{false};
   bool servo_ready{false};
   bool drive_fault{false};
+  bool fieldbus_ok{false};     ///< C24: FALSE = fieldbus / cycle watchdog lost
+  bool axes_at_rest{false};    ///< C25: every axis Disabled or StandStill at the cycle start
   /// First discrepancy fault in §3 order (E-stop, safeguard, enabling, selector), else None.
   FaultCode discrepancy{FaultCode::None};
 };

@@ -22,9 +22,11 @@ enum class FaultCode : std::uint8_t {
   T1Overspeed,
   ArmingTimeout,
   StopTimeout,
+  FieldbusLoss,
+  StandstillViolation,
 };
 
-inline constexpr std::size_t kFaultCodeCount = 10;
+inline constexpr std::size_t kFaultCodeCount = 12;
 
 inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::None,
@@ -37,6 +39,8 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::T1Overspeed,
     FaultCode::ArmingTimeout,
     FaultCode::StopTimeout,
+    FaultCode::FieldbusLoss,
+    FaultCode::StandstillViolation,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.
@@ -52,6 +56,8 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     case FaultCode::T1Overspeed: return "T1_OVERSPEED";
     case FaultCode::ArmingTimeout: return "ARMING_TIMEOUT";
     case FaultCode::StopTimeout: return "STOP_TIMEOUT";
+    case FaultCode::FieldbusLoss: return "FIELDBUS_LOSS";
+    case FaultCode::StandstillViolation: return "STANDSTILL_VIOLATION";
   }
   return "?";
 }

@@ -24,9 +24,10 @@ enum class RejectReason : std::uint8_t {
   JogInAuto,
   InvalidArgument,
   QueueFull,
+  ChannelTestPending,
 };
 
-inline constexpr std::size_t kRejectReasonCount = 13;
+inline constexpr std::size_t kRejectReasonCount = 14;
 
 inline constexpr std::array<RejectReason, kRejectReasonCount> kAllRejectReasons{
     RejectReason::None,
@@ -42,6 +43,7 @@ inline constexpr std::array<RejectReason, kRejectReasonCount> kAllRejectReasons{
     RejectReason::JogInAuto,
     RejectReason::InvalidArgument,
     RejectReason::QueueFull,
+    RejectReason::ChannelTestPending,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.
@@ -60,6 +62,7 @@ inline constexpr std::array<RejectReason, kRejectReasonCount> kAllRejectReasons{
     case RejectReason::JogInAuto: return "JOG_IN_AUTO";
     case RejectReason::InvalidArgument: return "INVALID_ARGUMENT";
     case RejectReason::QueueFull: return "QUEUE_FULL";
+    case RejectReason::ChannelTestPending: return "CHANNEL_TEST_PENDING";
   }
   return "?";
 }

@@ -20,6 +20,7 @@ struct ScanInputs {
   bool self_test_ok{false};                   ///< platform self-test passed (read in BOOT)
   bool servo_ready{false};                    ///< every drive reports ready
   bool drive_fault{false};                    ///< any drive reports a fault
+  bool fieldbus_ok{false};                    ///< fieldbus (EtherCAT) and cycle watchdog healthy (C24)
   JointVector q{};                            ///< joint positions, rad
   JointVector qd{};                           ///< joint velocities, rad/s
 };

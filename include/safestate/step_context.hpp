@@ -6,6 +6,8 @@
 #include "safestate/config.hpp"
 #include "safestate/derived_inputs.hpp"
 #include "safestate/machine_state.hpp"
+#include "safestate/reset_interlock.hpp"
+#include "safestate/state_id.hpp"
 
 namespace safestate {
 
@@ -18,6 +20,9 @@ struct StepContext {
   const Config& config;
   bool config_valid;
   Command command;  ///< the popped command (§6 rows only)
+  ResetInterlock& reset;        ///< K36/K37 memory; C07 and K05 update it
+  std::size_t queued_commands;  ///< queue length before this cycle's pop (C07)
+  StateId cycle_start_state;    ///< the state before §5 (K38)
 };
 
 }  // namespace safestate

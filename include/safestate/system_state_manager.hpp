@@ -18,6 +18,7 @@
 #include "safestate/machine_state.hpp"
 #include "safestate/mode_selector.hpp"
 #include "safestate/plcopen_axis.hpp"
+#include "safestate/reset_interlock.hpp"
 #include "safestate/scan_inputs.hpp"
 #include "safestate/scan_outputs.hpp"
 #include "safestate/speed_monitor.hpp"
@@ -89,6 +90,7 @@ class SystemStateManager {
   MachineState state_{states::Boot{}};
   DerivedInputs derived_{};
   StopCategory stop_category_{StopCategory::None};
+  ResetInterlock reset_{};
   CommandResult command_result_{};
   // Written by submit() (producer) and cycle() (consumer): atomic, and a plain value.
   std::atomic<RejectReason> last_reject_reason_{RejectReason::None};

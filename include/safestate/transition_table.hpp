@@ -52,6 +52,11 @@ bool resume_to_jog_and_enable_not_middle(const StepContext&) noexcept;
 bool in_auto(const StepContext&) noexcept;
 bool jog_arguments_invalid(const StepContext&) noexcept;
 bool enable_not_middle(const StepContext&) noexcept;
+bool fieldbus_lost(const StepContext&) noexcept;
+bool moving_at_standstill(const StepContext&) noexcept;
+bool reset_submitted_before_release(const StepContext&) noexcept;
+bool estop_channels_not_both_tested(const StepContext&) noexcept;
+bool not_idle_at_cycle_start(const StepContext&) noexcept;
 }  // namespace guards
 
 /// Actions: construct the entered state (with its §4 data) or update the current one.
@@ -63,6 +68,9 @@ void lockout_drive_fault(StepContext&) noexcept;
 void lockout_t1_overspeed(StepContext&) noexcept;
 void lockout_arming_timeout(StepContext&) noexcept;
 void lockout_stop_timeout(StepContext&) noexcept;
+void lockout_fieldbus_loss(StepContext&) noexcept;
+void lockout_standstill_violation(StepContext&) noexcept;
+void reset_to_idle(StepContext&) noexcept;
 void enter_estop_active(StepContext&) noexcept;
 void enter_estop_reset_needed(StepContext&) noexcept;
 void enter_idle(StepContext&) noexcept;
@@ -124,12 +132,13 @@ struct Effect {
 #define SAFESTATE_ACTION(fn) &::safestate::actions::fn, #fn
 
 // clang-format off
-inline constexpr std::array<TransitionRow, 58> kRows{{
+inline constexpr std::array<TransitionRow, 63> kRows{{
   // ---- §5: one scan cycle, after channel monitoring (§3) ---------------------------------------
   // id     event      source                    guard                                                              effect                                                                       stop        requirements
   row("C01", Ev::Cycle, {St::ErrorLockout},       SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-04, INV-DISCREPANCY"),
   row("C02", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(self_test_failed_or_config_invalid),              enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_self_test_failed)),       Stop::Cat0, "RSM-12"),
   row("C03", Ev::Cycle, any(),                    SAFESTATE_GUARD(discrepancy_fault),                               enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_discrepancy)),            Stop::Cat0, "RSM-04, RSM-02"),
+  row("C24", Ev::Cycle, any(),                    SAFESTATE_GUARD(fieldbus_lost),                                   enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_fieldbus_loss)),          Stop::Cat0, "RSM-03, seed"),
   row("C04", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(estop_tripped),                                   enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-12"),
   row("C05", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(always),                                          enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Keep, "RSM-12"),
   row("C06", Ev::Cycle, any_but({St::EstopActive}), SAFESTATE_GUARD(estop_tripped),                                 enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-05"),
@@ -137,10 +146,11 @@ inline constexpr std::array<TransitionRow, 58> kRows{{
   row("C08", Ev::Cycle, {St::EstopActive},        SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-05"),
   row("C09", Ev::Cycle, powered(),                SAFESTATE_GUARD(drive_fault),                                     enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_drive_fault)),            Stop::Cat0, "RSM-07, RSM-03"),
   row("C10", Ev::Cycle, powered(),                SAFESTATE_GUARD(t1_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t1_overspeed)),           Stop::Cat0, "RSM-10"),
+  row("C25", Ev::Cycle, {St::Arming, St::AutoIdle, St::ManualIdle, St::Hold}, SAFESTATE_GUARD(moving_at_standstill), enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_standstill_violation)), Stop::Cat0, "RSM-11, RSM-03"),
   row("C11", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_panic),                            enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Cat0, "RSM-09"),
-  row("C12", Ev::Cycle, powered(),                SAFESTATE_GUARD(selector_differs_from_session_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),             Stop::Cat1, "RSM-02"),
-  row("C13", Ev::Cycle, powered(),                SAFESTATE_GUARD(auto_session_gate_open_unless_cat1_stopping),     enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),                Stop::Cat1, "RSM-08"),
-  row("C14", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_enable_not_middle_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),          Stop::Cat1, "RSM-09"),
+  row("C12", Ev::Cycle, powered(),                SAFESTATE_GUARD(selector_differs_from_session_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),             Stop::Cat1, "RSM-02, RSM-11"),
+  row("C13", Ev::Cycle, powered(),                SAFESTATE_GUARD(auto_session_gate_open_unless_cat1_stopping),     enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),                Stop::Cat1, "RSM-08, RSM-11"),
+  row("C14", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_enable_not_middle_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),          Stop::Cat1, "RSM-09, RSM-11"),
   row("C15", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(servo_ready),                                     enter({St::AutoIdle, St::ManualIdle}, SAFESTATE_ACTION(enter_operational_idle)), Stop::Keep, "RSM-07"),
   row("C16", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(arming_timer_expired),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_arming_timeout)),         Stop::Cat0, "RSM-07"),
   row("C17", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(count_state_cycle)),                                   Stop::Keep, "RSM-07"),
@@ -154,10 +164,13 @@ inline constexpr std::array<TransitionRow, 58> kRows{{
   // ---- §6: one command popped from the queue, after §5 ----------------------------------------
   row("K01", Ev::AnyCommand, {St::ErrorLockout},  SAFESTATE_GUARD(always),                                          reject(Why::LockedOut),                                                      Stop::Keep, "RSM-04"),
   row("K02", Ev::Reset,     {St::EstopActive},    SAFESTATE_GUARD(always),                                          reject(Why::EstopPressed),                                                   Stop::Keep, "RSM-05"),
+  row("K36", Ev::Reset,     any(),                SAFESTATE_GUARD(reset_submitted_before_release),                  reject(Why::EstopPressed),                                                   Stop::Keep, "RSM-05"),
   row("K03", Ev::Reset,     any_but({St::EstopResetNeeded}), SAFESTATE_GUARD(always),                               reject(Why::WrongState),                                                     Stop::Keep, "RSM-05"),
   row("K04", Ev::Reset,     any(),                SAFESTATE_GUARD(drive_fault),                                     reject(Why::DriveFault),                                                     Stop::Keep, "RSM-05"),
-  row("K05", Ev::Reset,     any(),                SAFESTATE_GUARD(always),                                          enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Keep, "RSM-05, INV-RESET"),
+  row("K37", Ev::Reset,     any(),                SAFESTATE_GUARD(estop_channels_not_both_tested),                  reject(Why::ChannelTestPending),                                             Stop::Keep, "RSM-04, RSM-05"),
+  row("K05", Ev::Reset,     any(),                SAFESTATE_GUARD(always),                                          enter({St::Idle}, SAFESTATE_ACTION(reset_to_idle)),                             Stop::Keep, "RSM-05, INV-RESET"),
   row("K06", Ev::ServoOn,   any_but({St::Idle}),  SAFESTATE_GUARD(always),                                          reject(Why::WrongState),                                                     Stop::Keep, "RSM-06"),
+  row("K38", Ev::ServoOn,   any(),                SAFESTATE_GUARD(not_idle_at_cycle_start),                         reject(Why::WrongState),                                                     Stop::Keep, "RSM-06, RSM-03"),
   row("K07", Ev::ServoOn,   any(),                SAFESTATE_GUARD(drive_fault),                                     reject(Why::DriveFault),                                                     Stop::Keep, "RSM-06"),
   row("K08", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_invalid),                                reject(Why::SelectorInvalid),                                                Stop::Keep, "RSM-06"),
   row("K09", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_auto_and_gate_open),                     reject(Why::SafeguardOpen),                                                  Stop::Keep, "RSM-06"),
@@ -197,9 +210,9 @@ inline constexpr std::array<TransitionRow, 58> kRows{{
 }  // namespace table_dsl
 
 /// The table, §5 rows then §6 rows.
-inline constexpr const std::array<TransitionRow, 58>& kTransitionTable = table_dsl::kRows;
-inline constexpr std::size_t kCycleRowCount = 23;    // C01..C23
-inline constexpr std::size_t kCommandRowCount = 35;  // K01..K35
+inline constexpr const std::array<TransitionRow, 63>& kTransitionTable = table_dsl::kRows;
+inline constexpr std::size_t kCycleRowCount = 25;    // C01..C25
+inline constexpr std::size_t kCommandRowCount = 38;  // K01..K38
 
 // ---- Compile-time audit of the table ---------------------------------------------------------
 
@@ -211,11 +224,16 @@ namespace table_check {
          id[2] == static_cast<char>('0' + number % 10);
 }
 
-/// C01..C23 then K01..K35, in order (which also makes the ids unique).
+/// C rows then K rows, each id Cnn / Knn within its section's count (rows added by a later
+/// change take the next free number and sit where first-match needs them: C24, C25, K36-K38).
 [[nodiscard]] constexpr bool ids_in_order() noexcept {
   for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
-    const bool ok = i < kCycleRowCount ? id_is(kTransitionTable[i].id, 'C', i + 1)
-                                       : id_is(kTransitionTable[i].id, 'K', i + 1 - kCycleRowCount);
+    const bool cycle = i < kCycleRowCount;
+    const std::size_t count = cycle ? kCycleRowCount : kCommandRowCount;
+    bool ok = false;
+    for (std::size_t n = 1; n <= count; ++n) {
+      ok = ok || id_is(kTransitionTable[i].id, cycle ? 'C' : 'K', n);
+    }
     if (!ok) return false;
   }
   return true;
@@ -284,8 +302,8 @@ namespace table_check {
 
 }  // namespace table_check
 
-static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "58 rows: C01-C23, K01-K35");
-static_assert(table_check::ids_in_order(), "row ids must be C01..C23 then K01..K35, in order");
+static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "63 rows: C01-C25, K01-K38");
+static_assert(table_check::ids_in_order(), "row ids must be C01..C25 then K01..K38");
 static_assert(table_check::ids_unique(), "row ids must be unique");
 static_assert(table_check::events_match_sections(), "C rows are cycle rows, K rows command rows");
 static_assert(table_check::effects_well_formed(), "every reject row needs a reason; effects must be well formed");

@@ -60,13 +60,21 @@ class SystemStateManagerAdapter(Adapter):
     observed_variables = ("state", "selector", "session_mode", "stop_category", "fault_code",
                           "last_reject_reason", "command_result", "estop_mismatch",
                           "safeguard_mismatch", "enabling_mismatch", "selector_invalid",
-                          "state_cycles", "t2_confirmed", "resume_to", "axes")
+                          "state_cycles", "t2_confirmed", "resume_to", "axes",
+                          # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
+                          "stale_commands", "estop_tested_a", "estop_tested_b")
     split_records = {"jog": (("jog_axis", "axis"), ("jog_direction", "direction"),
                              ("jog_speed_mm_s", "speed_mm_s"))}
     observed_operators = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request",
                           "reset_lamp", "commanded_speed_mm_s", "queue_length")
     hidden_variables = ("queue",  # observed through queue_length
-                        "inputs", "event", "reset_since_trip", "jog_in_auto", "t1_overspeed", "ever_locked")
+                        "inputs", "event",
+                        # the requirement observers (models/SystemStateManager.tla): history
+                        # of inputs, commands and outputs, not C++ state.
+                        "obs_estop", "obs_open_a", "obs_open_b", "obs_disagree", "obs_locked", "obs_ramp",
+                        "last_accepted", "jog_in_auto", "obs_guard_fault", "obs_servo_on_powered", "obs_t2",
+                        "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
+                        "obs_booted", "obs_self_test_failed")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
@@ -101,6 +109,8 @@ class SystemStateManagerAdapter(Adapter):
             "selector_auto": sel == "AUTO", "selector_t1": sel == "T1", "selector_t2": sel == "T2",
             "self_test_ok": rec["self_test_ok"], "servo_ready": rec["servo_ready"],
             "drive_fault": rec["drive_fault"],
+            # issue 17 (C24): the fieldbus/cycle watchdog input of ScanInputs.
+            "fieldbus_ok": rec["fieldbus_ok"],
             "q": POSE, "qd": self.speeds[rec["speed"]][0],  # type: ignore[index]
         }
         if key is not None:
@@ -149,7 +159,7 @@ class SystemStateManagerAdapter(Adapter):
                 dict(zip(SELECTOR_CONTACTS, contacts)))
         for label, level, qd in self.speeds["probes"]:
             add(f"speed: {label}", {"speed": level}, {"qd": qd})
-        for name in ("servo_ready", "drive_fault", "self_test_ok"):
+        for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok"):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
         return probes
@@ -389,15 +399,15 @@ def flagship_rules(D: int, queue_capacity: int, timers: list[int]) -> type:  # n
                 self._submit("T2_CONFIRM")
                 self._cycle_where(lambda r: True)
             self._submit("SERVO_ON")
-            self._cycle_where(lambda r: not r["servo_ready"] and not r["drive_fault"])
-            self._cycle_where(lambda r: r["servo_ready"] and not r["drive_fault"])
+            self._cycle_where(lambda r: not r["servo_ready"] and not r["drive_fault"] and r["fieldbus_ok"])
+            self._cycle_where(lambda r: r["servo_ready"] and not r["drive_fault"] and r["fieldbus_ok"])
 
         @rule(kind=st.sampled_from(["START", "JOG_START", "PAUSE", "RESUME", "JOG_STOP", "SERVO_OFF", "RESET"]),
               i=st.integers(0, 7))
         def command(self, kind: str, i: int) -> None:
             """One command and the cycle that pops it."""
             self._submit(kind, i)
-            self._cycle_where(lambda r: not r["drive_fault"])
+            self._cycle_where(lambda r: not r["drive_fault"] and r["fieldbus_ok"])
 
         @rule(n=st.sampled_from(timers), i=st.integers(0, 7))
         def hold(self, n: int, i: int) -> None:

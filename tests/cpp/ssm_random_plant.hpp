@@ -22,8 +22,10 @@ class RandomPlant {
     in_.self_test_ok = chance(0.97);
   }
 
-  /// The inputs of the next cycle.
-  const ScanInputs& next() {
+  /// The inputs of the next cycle. `at_rest_commanded`: the last outputs command no motion
+  /// (power off, or every axis Disabled/StandStill): the robot then stays at rest but for
+  /// a rare creep (a fault that the standstill monitor, C25, must catch).
+  const ScanInputs& next(bool at_rest_commanded = false) {
     follow(estop_demand_, in_.estop_closed, 0.004, 0.03);
     follow(gate_demand_, in_.safeguard_closed, 0.01, 0.03);
     // Enabling device: the operator moves it; the two channels follow with a lag.
@@ -42,7 +44,10 @@ class RandomPlant {
     if (chance(0.0005)) in_.selector = SelectorContacts{true, true, false};  // welded contact
     if (chance(0.05)) in_.servo_ready = chance(0.8);
     if (in_.drive_fault ? chance(0.1) : chance(0.002)) in_.drive_fault = !in_.drive_fault;
-    if (chance(0.05)) {
+    in_.fieldbus_ok = !chance(0.0003);  // a lost EtherCAT frame / missed cycle deadline (C24)
+    if (at_rest_commanded) {
+      in_.qd = chance(0.002) ? kSlow : kRest;
+    } else if (chance(0.05)) {
       const std::uint32_t u = uniform(20);
       in_.qd = u < 10 ? kRest : (u < 18 ? kSlow : kFast);
     }
@@ -63,6 +68,14 @@ class RandomPlant {
   }
 
   [[nodiscard]] const ScanInputs& inputs() const { return in_; }
+
+  /// What next() needs from the last outputs: no motion commanded.
+  [[nodiscard]] static bool at_rest(const ScanOutputs& out) {
+    for (const AxisState a : out.axes) {
+      if (a != AxisState::Disabled && a != AxisState::StandStill && a != AxisState::ErrorStop) return false;
+    }
+    return !out.ramp_down_request && out.commanded_speed_mm_s == 0;
+  }
 
  private:
   bool chance(double p) { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < p; }

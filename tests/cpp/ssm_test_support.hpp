@@ -48,6 +48,7 @@ inline ScanInputs healthy(SelectorReading mode = SelectorReading::Auto) {
   in.self_test_ok = true;
   in.servo_ready = true;
   in.drive_fault = false;
+  in.fieldbus_ok = true;
   in.q = kPose;
   in.qd = kRest;
   return in;

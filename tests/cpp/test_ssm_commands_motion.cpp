@@ -112,9 +112,9 @@ TEST(RSM06_ServoOn, T2ConfirmationIsClearedByLeavingIdle) {
   Rig r;
   r.boot(SelectorReading::T2);
   (void)r.command(Command::t2_confirm());
-  r.in.estop_closed.a = false;
+  r.in.estop_closed = {false, false};
   r.cycle();
-  r.in.estop_closed.a = true;
+  r.in.estop_closed = {true, true};
   r.cycle();
   (void)r.command(Command::reset());
   ASSERT_EQ(r.state(), StateId::Idle);
@@ -466,7 +466,8 @@ TEST(RSM11_Stopping, GateOpenedInHoldEscalatesToCat1SoResumeIsRefused) {
   EXPECT_EQ(r.st().command_result, CommandResult::rejected(RejectReason::WrongState));
 }
 
-TEST(RSM11_Stopping, Cat2StopEscalatesToCat1AndRestartsTheStopTimer) {
+// The stop watchdog runs from the first trigger of the episode (C12-C14 keep state_cycles).
+TEST(RSM11_Stopping, Cat2StopEscalatesToCat1AndKeepsTheStopTimer) {
   Rig r;
   r.to_auto_running();
   (void)r.command(Command::pause());
@@ -476,7 +477,7 @@ TEST(RSM11_Stopping, Cat2StopEscalatesToCat1AndRestartsTheStopTimer) {
   r.cycle();
   EXPECT_EQ(r.state(), StateId::Stopping);
   EXPECT_EQ(r.st().stop_category, StopCategory::Cat1);
-  EXPECT_EQ(r.st().state_cycles, 0U);
+  EXPECT_EQ(r.st().state_cycles, 6U);  // kept, and this cycle counted
   r.in.qd = kRest;
   r.cycle();
   EXPECT_EQ(r.state(), StateId::Idle);  // Cat 1 ends unpowered, not in HOLD

@@ -19,10 +19,22 @@ using namespace safestate;  // NOLINT
 
 std::string two_digits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
-TEST(TransitionTable, RowIdsAreC01ToC23ThenK01ToK35InOrder) {
+// Rows added by later changes take the next free number and sit where first-match needs
+// them: C24 (fieldbus loss) after C03, C25 (standstill) after C10, K36 after K02, K37 after
+// K04, K38 after K06.
+TEST(TransitionTable, RowIdsAreC01ToC25ThenK01ToK38InFirstMatchOrder) {
   std::vector<std::string> expected;
-  for (std::size_t i = 1; i <= 23; ++i) expected.push_back("C" + two_digits(i));
-  for (std::size_t i = 1; i <= 35; ++i) expected.push_back("K" + two_digits(i));
+  for (std::size_t i = 1; i <= 23; ++i) {
+    expected.push_back("C" + two_digits(i));
+    if (i == 3) expected.emplace_back("C24");
+    if (i == 10) expected.emplace_back("C25");
+  }
+  for (std::size_t i = 1; i <= 35; ++i) {
+    expected.push_back("K" + two_digits(i));
+    if (i == 2) expected.emplace_back("K36");
+    if (i == 4) expected.emplace_back("K37");
+    if (i == 6) expected.emplace_back("K38");
+  }
   ASSERT_EQ(kTransitionTable.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(kTransitionTable[i].id, expected[i]);
   EXPECT_TRUE(table_check::ids_unique());
@@ -54,6 +66,7 @@ TEST(RSM03_StopCategories, TheTableSetsTheCategoriesOfTheDesignTriggerTable) {
       {"C02", StopUpdate::Cat0}, {"C03", StopUpdate::Cat0}, {"C04", StopUpdate::Cat0}, {"C06", StopUpdate::Cat0},
       {"C09", StopUpdate::Cat0}, {"C10", StopUpdate::Cat0}, {"C11", StopUpdate::Cat0}, {"C12", StopUpdate::Cat1},
       {"C13", StopUpdate::Cat1}, {"C14", StopUpdate::Cat1}, {"C16", StopUpdate::Cat0}, {"C20", StopUpdate::Cat0},
+      {"C24", StopUpdate::Cat0}, {"C25", StopUpdate::Cat0},
       {"K12", StopUpdate::Clear}, {"K14", StopUpdate::Cat1}, {"K20", StopUpdate::Cat2},
   };
   for (const TransitionRow& r : kTransitionTable) {

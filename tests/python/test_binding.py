@@ -17,6 +17,7 @@ STATUS_KEYS = {
     "command_result", "estop_mismatch", "safeguard_mismatch", "enabling_mismatch",
     "selector_invalid", "state_cycles", "t2_confirmed", "resume_to", "jog_axis",
     "jog_direction", "jog_speed_mm_s", "queue_length",
+    "stale_commands", "estop_tested_a", "estop_tested_b",  # K36, K37 (issue 17)
 }
 OUTPUT_KEYS = {
     "contactor_closed", "drive_enable", "brake_release", "ramp_down_request", "reset_lamp",
@@ -33,7 +34,7 @@ def healthy(mode="AUTO", **overrides):
         "enabling_a": "MIDDLE" if manual else "RELEASED",
         "enabling_b": "MIDDLE" if manual else "RELEASED",
         "selector_auto": mode == "AUTO", "selector_t1": mode == "T1", "selector_t2": mode == "T2",
-        "self_test_ok": True, "servo_ready": True, "drive_fault": False,
+        "self_test_ok": True, "servo_ready": True, "drive_fault": False, "fieldbus_ok": True,
         "q": POSE, "qd": REST,
     }
     inputs.update(overrides)
@@ -97,8 +98,9 @@ def test_estop_release_needs_reset_rsm05():
     m = core.Manager()
     m.cycle(healthy(estop_closed_b=False))
     assert m.observe()["state"] == "ESTOP_ACTIVE"
-    assert command(m, "RESET", healthy(estop_closed_b=False)) == "ESTOP_PRESSED"
+    assert command(m, "RESET", healthy(estop_closed_a=False, estop_closed_b=False)) == "ESTOP_PRESSED"
     assert m.last_rows() == {"cycle": "C08", "command": "K02"}
+    assert m.observe()["estop_tested_a"] and m.observe()["estop_tested_b"]  # K37: both seen open
     m.cycle(healthy())
     obs = m.observe()
     assert obs["state"] == "ESTOP_RESET_NEEDED" and obs["reset_lamp"]
@@ -168,10 +170,13 @@ def test_bad_arguments_raise():
     assert m.observe()["state"] == "BOOT"  # nothing ran
 
 
-def test_transition_table_lists_c01_to_k35_and_matches_json_and_dot():
+def test_transition_table_lists_c01_to_c25_and_k01_to_k38_and_matches_json_and_dot():
     rows = core.transition_table()
     ids = [r["id"] for r in rows]
-    assert ids == [f"C{i:02d}" for i in range(1, 24)] + [f"K{i:02d}" for i in range(1, 36)]
+    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 26)]
+    assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 39)]
+    # rows added by issue 17 sit where first-match needs them
+    assert ids[3] == "C24" and ids[ids.index("K02") + 1] == "K36" and ids[ids.index("K06") + 1] == "K38"
     assert all(r["reason"] != "NONE" for r in rows if r["kind"] == "REJECT")
     k05 = rows[ids.index("K05")]
     assert k05["effective_source"] == ["ESTOP_RESET_NEEDED"] and k05["targets"] == ["IDLE"]

@@ -7,37 +7,24 @@ test_models.py through models/expected.json.)"""
 
 from __future__ import annotations
 
-import json
 import re
-import tomllib
 from pathlib import Path
 
 import pytest
 
-from conftest import REPO, run_safestate
+from conftest import REPO
+from declared_mutants import check_variant, mutants_of, mutated_source, witnesses_of
 
 MODEL = REPO / "models" / "SafetyService.tla"
 PEERS = REPO / "models" / "SafetyServicePeers.tla"
-MUTANTS = tomllib.loads((REPO / "models" / "mutants" / "SafetyService.toml").read_text())["mutant"]
-WITNESSES = sorted(set(re.findall(r"^(Witness_\w+) ==", MODEL.read_text(), re.M)))
-PEER_WITNESSES = sorted(set(re.findall(r"^(Witness_\w+) ==", PEERS.read_text(), re.M)))
-
-
-def _cfg_with_only(model: Path, invariant: str) -> str:
-    """The model's .cfg (constants, INIT, NEXT, VIEW) with one invariant listed."""
-    head = model.with_suffix(".cfg").read_text().split("INVARIANTS")[0]
-    return f"{head}INVARIANTS\n    {invariant}\n"
+MUTANTS = mutants_of("SafetyService")
+WITNESSES = witnesses_of(MODEL)
+PEER_WITNESSES = witnesses_of(PEERS)
 
 
 def _check(folder: Path, tla_text: str, invariant: str, model: Path = MODEL) -> dict:
     """Checks `model` (with SafetyService.tla replaced by `tla_text`) in `folder`."""
-    (folder / "SafetyService.tla").write_text(tla_text)
-    if model != MODEL:
-        (folder / model.name).write_text(model.read_text())
-    (folder / model.with_suffix(".cfg").name).write_text(_cfg_with_only(model, invariant))
-    proc = run_safestate("check", str(folder / model.name), "--json")
-    assert "Traceback" not in proc.stderr, proc.stderr
-    return json.loads(proc.stdout)
+    return check_variant(folder, model, invariant, {MODEL.name: tla_text})
 
 
 def test_every_invariant_has_witnesses() -> None:
@@ -62,10 +49,7 @@ def test_saf_protocol_situation_with_explicit_peers_is_reachable(witness: str, t
 
 @pytest.mark.parametrize("mutant", MUTANTS, ids=[m["name"] for m in MUTANTS])
 def test_saf_mutant_is_caught_on_its_target_invariant(mutant: dict, tmp_path: Path) -> None:
-    source = (REPO / mutant["file"]).read_text()
-    assert source.count(mutant["original"]) == 1, "the original text must occur exactly once"
-    got = _check(tmp_path, source.replace(mutant["original"], mutant["replacement"]),
-                 mutant["target"])
+    got = _check(tmp_path, mutated_source(mutant), mutant["target"])
     assert got["result"] == "safety failure"
     assert got["violated"] == mutant["target"]
     assert len(got["trace"]["states"]) == mutant["trace_length"]

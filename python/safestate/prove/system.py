@@ -77,6 +77,8 @@ class System:
         out = {}
         for c in _conjuncts(_expand(sym.defn.body, self.scope)):
             label = f"{name}: {os.path.basename(c.loc.file)}:{c.loc.line}"
+            if label in out:  # two conjuncts on one line: keep both (a dict key each)
+                label = f"{label}:{c.loc.column}"
             out[label] = self.expr(c)
         return out
 

@@ -1,0 +1,15 @@
+// One validated sensor snapshot of a tick (docs/design/protection.md §2).
+#pragma once
+
+#include <cstdint>
+
+namespace safestate::pro {
+
+struct SensorSnapshot {
+  std::int16_t temperature_c{0};
+  std::uint16_t voltage_dv{0};  // decivolts: the thresholds compare exactly
+  bool sensor_valid{false};     // zero-initialised = invalid = protective
+  bool clear_request{false};
+};
+
+}  // namespace safestate::pro

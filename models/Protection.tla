@@ -1,0 +1,177 @@
+------------------------------ MODULE Protection ------------------------------
+(***************************************************************************)
+(* PRO-01 .. PRO-04: ao_safety with its latched protection state machine   *)
+(* sm_protection (docs/design/protection.md, "the page").  One step of     *)
+(* this model is one tick: the validated sensor snapshot of the tick (page *)
+(* section 2) is evaluated by rows P01..P05 (section 4); the output gate   *)
+(* sets the fan command and diagnostics receives the operating status in   *)
+(* the same tick (dispatch order monitoring, control, safety, diagnostics).*)
+(*                                                                         *)
+(* Environment: any snapshot in any tick (temperatures 0..TempLimit+1,     *)
+(* voltages VoltMin-1..VoltMax+1: every boundary and both of its sides),   *)
+(* valid or not, with or without a clear request.                          *)
+(***************************************************************************)
+EXTENDS Naturals
+
+CONSTANTS
+    TempLimit,            \* 85 degC: hazard if temp > TempLimit (strict)
+    VoltMin,              \* 18 V (180 dV): hazard if volt < VoltMin (strict)
+    VoltMax,              \* 30 V (300 dV): hazard if volt > VoltMax (strict)
+    ResponseBudgetTicks   \* PRO-04: 1 s = 10 ticks of 100 ms
+
+ASSUME TempLimit \in Nat
+ASSUME VoltMin \in Nat \ {0}
+ASSUME VoltMax \in Nat /\ VoltMin <= VoltMax
+ASSUME ResponseBudgetTicks \in Nat \ {0}
+
+Temps == 0..(TempLimit + 1)
+Volts == (VoltMin - 1)..(VoltMax + 1)
+ProtectionStates == {"NORMAL", "PROTECTION"}
+Results == {"OK", "PROTECTION_ENTERED", "LATCH_BLOCKED"}
+FanCommands == {"REGULATED", "SAFE"}
+FaultEvents == {"NONE", "SENSOR_INVALID", "OVER_TEMP", "UNDER_VOLT", "OVER_VOLT",
+                "LATCH_BLOCKED"}
+
+\* Inputs of the tick (the snapshot) ...
+VARIABLES temp, volt, valid, clear
+\* ... outputs of the tick ...
+VARIABLES protection_state, latch_active, override_active, fan_cmd, result,
+          published, fault_event
+\* ... and history: the state before the tick, consecutive hazardous ticks.
+VARIABLES was_protection, hazard_ticks
+
+vars == <<temp, volt, valid, clear, protection_state, latch_active,
+          override_active, fan_cmd, result, published, fault_event,
+          was_protection, hazard_ticks>>
+
+-----------------------------------------------------------------------------
+(***************************** Hazard (page 3) *****************************)
+Hazard(t, v, ok) == t > TempLimit \/ v < VoltMin \/ v > VoltMax \/ ~ok
+
+Cause(t, v, ok) ==
+    IF ~ok THEN "SENSOR_INVALID"
+    ELSE IF t > TempLimit THEN "OVER_TEMP"
+    ELSE IF v < VoltMin THEN "UNDER_VOLT"
+    ELSE IF v > VoltMax THEN "OVER_VOLT"
+    ELSE "NONE"
+
+(************************* Rows P01..P05 (page 4) ***************************)
+Row(t, v, ok, clr) ==
+    IF protection_state = "NORMAL" THEN
+        IF Hazard(t, v, ok) THEN "P01" ELSE "P02"
+    ELSE IF clr /\ Hazard(t, v, ok) THEN "P03"
+    ELSE IF clr THEN "P04"
+    ELSE "P05"
+
+NextState(row) ==
+    IF row = "P01" THEN "PROTECTION"
+    ELSE IF row = "P04" THEN "NORMAL"
+    ELSE protection_state
+
+Tick(t, v, ok, clr) ==
+    LET row == Row(t, v, ok, clr)
+        s == NextState(row) IN
+    /\ temp' = t /\ volt' = v /\ valid' = ok /\ clear' = clr
+    /\ protection_state' = s
+    /\ latch_active' = (s = "PROTECTION")
+    /\ override_active' = (s = "PROTECTION")
+    \* Output gate: the safe fan value while the override is active.
+    /\ fan_cmd' = IF s = "PROTECTION" THEN "SAFE" ELSE "REGULATED"
+    /\ result' = IF row = "P01" THEN "PROTECTION_ENTERED"
+                 ELSE IF row = "P03" THEN "LATCH_BLOCKED"
+                 ELSE "OK"
+    \* Diagnostics runs after safety in the same tick.
+    /\ published' = s
+    /\ fault_event' = IF row = "P01" THEN Cause(t, v, ok)
+                      ELSE IF row = "P03" THEN "LATCH_BLOCKED"
+                      ELSE "NONE"
+    /\ was_protection' = (protection_state = "PROTECTION")
+    /\ hazard_ticks' = IF Hazard(t, v, ok)
+                       THEN IF hazard_ticks < ResponseBudgetTicks
+                            THEN hazard_ticks + 1 ELSE hazard_ticks
+                       ELSE 0
+
+\* Construction: NORMAL, no snapshot evaluated yet (a nominal reading).
+Init ==
+    /\ temp = 0 /\ volt = VoltMin /\ valid = TRUE /\ clear = FALSE
+    /\ protection_state = "NORMAL" /\ latch_active = FALSE
+    /\ override_active = FALSE /\ fan_cmd = "REGULATED" /\ result = "OK"
+    /\ published = "NORMAL" /\ fault_event = "NONE"
+    /\ was_protection = FALSE /\ hazard_ticks = 0
+
+Next == \E t \in Temps, v \in Volts, ok \in BOOLEAN, clr \in BOOLEAN :
+            Tick(t, v, ok, clr)
+
+Spec == Init /\ [][Next]_vars
+
+-----------------------------------------------------------------------------
+(******************************** Invariants *******************************)
+TypeOK ==
+    /\ temp \in Temps /\ volt \in Volts /\ valid \in BOOLEAN /\ clear \in BOOLEAN
+    /\ protection_state \in ProtectionStates
+    /\ latch_active \in BOOLEAN /\ override_active \in BOOLEAN
+    /\ fan_cmd \in FanCommands /\ result \in Results
+    /\ published \in ProtectionStates /\ fault_event \in FaultEvents
+    /\ was_protection \in BOOLEAN
+    /\ hazard_ticks \in 0..ResponseBudgetTicks
+
+\* The invariants spell the hazard out from the requirement (not Hazard
+\* above), so that a mutant of the rows' operators cannot weaken them.
+InputHazard ==
+    temp > TempLimit \/ volt < VoltMin \/ volt > VoltMax \/ ~valid
+
+\* PRO-01: a hazardous snapshot leaves ao_safety in PROTECTION.
+INV_PRO_HAZARD_PROTECTS ==
+    InputHazard => protection_state = "PROTECTION"
+
+\* PRO-02: the latch.  PROTECTION is left only on a clear request in a
+\* snapshot without a hazard; a clear request with a hazard is denied.
+INV_PRO_LATCH ==
+    /\ (was_protection /\ protection_state = "NORMAL") => (clear /\ ~InputHazard)
+    /\ (was_protection /\ clear /\ InputHazard) => result = "LATCH_BLOCKED"
+
+\* PRO-02: PROTECTION_ENTERED exactly on entry; LATCH_BLOCKED only in
+\* PROTECTION on a clear request.
+INV_PRO_RESULT ==
+    /\ result = "PROTECTION_ENTERED"
+           <=> (~was_protection /\ protection_state = "PROTECTION")
+    /\ result = "LATCH_BLOCKED" => (was_protection /\ clear)
+
+\* PRO-03: in PROTECTION the latch and the override are on, the fan command
+\* is the safe value and diagnostics holds PROTECTION; outside it none is.
+INV_PRO_OVERRIDE ==
+    /\ latch_active <=> protection_state = "PROTECTION"
+    /\ override_active <=> protection_state = "PROTECTION"
+    /\ fan_cmd = "SAFE" <=> protection_state = "PROTECTION"
+    /\ published = protection_state
+    /\ (result = "PROTECTION_ENTERED") => fault_event # "NONE"
+
+\* PRO-04: a hazard present for the budget's number of ticks implies
+\* protection, outputs at the safe value and the status published.
+INV_PRO_RESPONSE ==
+    hazard_ticks >= ResponseBudgetTicks =>
+        /\ protection_state = "PROTECTION"
+        /\ fan_cmd = "SAFE"
+        /\ published = "PROTECTION"
+
+-----------------------------------------------------------------------------
+(* Reachability witnesses (non-vacuity): each Witness_X is the negation of *)
+(* a situation an invariant speaks about; tests/python/test_pro_model.py   *)
+(* checks each alone and expects it violated, i.e. the situation reachable.*)
+Witness_OverTemp ==        \* INV_PRO_HAZARD_PROTECTS, temperature only
+    ~(temp = TempLimit + 1 /\ valid /\ volt = VoltMin /\ result = "PROTECTION_ENTERED")
+Witness_BoundaryNormal ==  \* INV_PRO_HAZARD_PROTECTS, every limit value is no hazard
+    ~(temp = TempLimit /\ volt = VoltMax /\ valid /\ protection_state = "NORMAL")
+Witness_Blocked ==         \* INV_PRO_LATCH, clear denied while hot
+    ~(result = "LATCH_BLOCKED" /\ temp = TempLimit + 1)
+Witness_Cleared ==         \* INV_PRO_LATCH, clear accepted when cool
+    ~(was_protection /\ protection_state = "NORMAL")
+Witness_LatchedCool ==     \* INV_PRO_LATCH, latched without a hazard
+    ~(protection_state = "PROTECTION" /\ ~InputHazard /\ ~clear)
+Witness_Entered ==         \* INV_PRO_RESULT, entry by an invalid sensor
+    ~(result = "PROTECTION_ENTERED" /\ fault_event = "SENSOR_INVALID")
+Witness_SafeFan ==         \* INV_PRO_OVERRIDE, under-voltage
+    ~(fan_cmd = "SAFE" /\ fault_event = "UNDER_VOLT")
+Witness_Budget ==          \* INV_PRO_RESPONSE, hazard for the whole budget
+    ~(hazard_ticks = ResponseBudgetTicks /\ volt = VoltMax + 1)
+=============================================================================

@@ -1,0 +1,16 @@
+-------------------- MODULE RuntimeSupervisorProofs --------------------
+(***************************************************************************)
+(* Strengthening invariant for `safestate prove` (proofs/README.md).      *)
+(* INV_SUP_SHUTDOWN_SAFE is not 1-inductive: a state with safety about to *)
+(* stop and the outputs not yet safe is unreachable only because the stop *)
+(* steps run in StopOrder.  Stop_Progress states that.                     *)
+(***************************************************************************)
+EXTENDS RuntimeSupervisor
+
+Stop_Progress ==
+    /\ (stop_step >= 1) <=> sup_state \in {"SHUTTING_DOWN", "STOPPED"}
+    /\ stop_step >= 2 => outputs_safe
+    /\ \A k \in 2..8 :
+           /\ k < stop_step => status[StopOrder[k]] = "STOPPED"
+           /\ status[StopOrder[k]] = "STOPPED" => k <= stop_step
+=============================================================================

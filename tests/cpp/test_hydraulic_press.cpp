@@ -1,0 +1,174 @@
+// SCH-05 / INV-PRESS: the hydraulic press on the state chain against the flat defective
+// reference (docs/design/hydraulic-press.md). The accident sequence is the counterexample
+// `safestate check models/HydraulicPressFlat.tla` finds: motor on, start, motor off, motor on.
+#include <gtest/gtest.h>
+
+#include "safestate/chain/hydraulic_press.hpp"
+#include "safestate/chain/press_flat.hpp"
+
+namespace sc = safestate::chain;
+
+namespace {
+
+sc::PressInputs motor_on() { sc::PressInputs i; i.motor_on = true; return i; }
+sc::PressInputs motor_off() { sc::PressInputs i; i.motor_off = true; return i; }
+sc::PressInputs start() { sc::PressInputs i; i.start = true; return i; }
+sc::PressInputs step_done() { sc::PressInputs i; i.step_done = true; return i; }
+sc::PressInputs ret() { sc::PressInputs i; i.ret = true; return i; }
+
+template <class Press>
+sc::PressOutputs accident(Press& p) {
+  p.cycle(motor_on());
+  p.cycle(start());
+  p.cycle(step_done());
+  p.cycle(step_done());
+  p.cycle(step_done());
+  p.cycle(step_done());  // Pressing: press_valve on
+  p.cycle(motor_off());
+  return p.cycle(motor_on());
+}
+
+TEST(HydraulicPressFlat, INV_PRESS_AccidentRestartResumesMidStrokeAndEnergisesTheValve) {
+  sc::PressFlat flat;
+  const sc::PressOutputs out = accident(flat);
+  EXPECT_TRUE(out.on(sc::Output::press_valve));
+  EXPECT_EQ(flat.observe().step, sc::PressStep::pressing);
+}
+
+TEST(HydraulicPress, INV_PRESS_SameInputsRestartAtReadyWithEveryStrokeOutputOff) {
+  sc::HydraulicPress press;
+  const sc::PressOutputs out = accident(press);
+  EXPECT_TRUE(out.on(sc::Output::motor));
+  EXPECT_FALSE(out.any_stroke_output());
+  EXPECT_EQ(press.observe().step, sc::PressStep::ready);
+}
+
+TEST(HydraulicPress, INV_PRESS_MotorOffSwitchesEveryOutputOffMidStroke) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  press.cycle(start());
+  EXPECT_TRUE(press.observe().outputs.on(sc::Output::feed_valve));
+  const sc::PressOutputs out = press.cycle(motor_off());
+  EXPECT_EQ(out.bits, 0U);
+  EXPECT_EQ(press.observe().step, sc::PressStep::none);
+}
+
+TEST(HydraulicPress, SCH05_StrokeSequenceFollowsTheSensorsSingleStepBackToReady) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  press.cycle(start());
+  for (int k = 1; k < sc::stroke_steps; ++k) {
+    EXPECT_EQ(press.observe().step, static_cast<sc::PressStep>(k));
+    EXPECT_TRUE(press.observe().outputs.on(sc::valve_of_step(k)));
+    press.cycle(step_done());
+  }
+  EXPECT_EQ(press.observe().step, sc::PressStep::ready);
+  EXPECT_FALSE(press.observe().outputs.any_stroke_output());
+}
+
+TEST(HydraulicPress, SCH05_ContinuousRunningStartsTheNextCycleAtFeed) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  press.cycle(start());
+  sc::PressInputs done = step_done();
+  done.continuous = true;
+  for (int k = 1; k < sc::stroke_steps; ++k) press.cycle(done);
+  EXPECT_EQ(press.observe().step, sc::PressStep::feed);
+}
+
+TEST(HydraulicPress, SCH05_RetReturnsToReadyBySelfTransition) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  press.cycle(start());
+  press.cycle(step_done());
+  press.cycle(ret());
+  EXPECT_EQ(press.observe().step, sc::PressStep::ready);
+  EXPECT_FALSE(press.observe().outputs.any_stroke_output());
+}
+
+TEST(HydraulicPress, SCH05_ModeChangeLeavesTheStrokeAndEntersReady) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  press.cycle(start());
+  sc::PressInputs m2;
+  m2.mode = 2;
+  press.cycle(m2);
+  EXPECT_EQ(press.observe().mode, 2);
+  EXPECT_EQ(press.observe().step, sc::PressStep::ready);
+  EXPECT_FALSE(press.observe().outputs.any_stroke_output());
+}
+
+TEST(HydraulicPress, SCH03_CoolingIsAParallelSubChainExitedWithTheMotor) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  EXPECT_TRUE(press.observe().outputs.on(sc::Output::lamp));
+  sc::PressInputs hot;
+  hot.temp_high = true;
+  press.cycle(hot);
+  press.cycle(start());
+  EXPECT_TRUE(press.observe().outputs.on(sc::Output::cool_pump));
+  EXPECT_TRUE(press.observe().outputs.on(sc::Output::feed_valve));
+  const sc::PressOutputs out = press.cycle(motor_off());
+  EXPECT_FALSE(out.on(sc::Output::cool_pump) || out.on(sc::Output::lamp));
+}
+
+}  // namespace
+
+// The counterexample `safestate check models/HydraulicPressFlat.tla --itf` wrote
+// (models/traces/HydraulicPressFlat_INV_PRESS.itf.json), replayed event by event.
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::vector<std::string> itf_events(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string s = text.str();
+  std::vector<std::string> events;
+  const std::regex event_re("\"event\": \"(\\w+)\"");
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), event_re); it != std::sregex_iterator(); ++it) {
+    if ((*it)[1] != "init") events.push_back((*it)[1]);
+  }
+  return events;
+}
+
+// The model's input event -> one scan's PressInputs (design page §7); `continuous` is a level.
+sc::PressInputs inputs_of(const std::string& e, bool& continuous) {
+  sc::PressInputs i;
+  if (e == "continuous_on") continuous = true;
+  if (e == "continuous_off") continuous = false;
+  i.continuous = continuous;
+  i.motor_on = e == "motor_on";
+  i.motor_off = e == "motor_off";
+  i.start = e == "start";
+  i.ret = e == "ret";
+  i.step_done = e == "step_done";
+  i.temp_high = e == "temp_high";
+  i.temp_ok = e == "temp_ok";
+  if (e.rfind("mode", 0) == 0) i.mode = static_cast<std::uint8_t>(e.back() - '0');
+  return i;
+}
+
+TEST(HydraulicPressAccidentReplay, INV_PRESS_CheckerCounterexampleEnergisesTheFlatPressNotTheChain) {
+  const auto events = itf_events(std::string(SAFESTATE_SOURCE_DIR) + "/models/traces/HydraulicPressFlat_INV_PRESS.itf.json");
+  ASSERT_EQ(events, (std::vector<std::string>{"motor_on", "start", "motor_off", "motor_on"}));
+  sc::PressFlat flat;
+  sc::HydraulicPress chain;
+  bool flat_cont = false, chain_cont = false;
+  sc::PressOutputs flat_out, chain_out;
+  for (const std::string& e : events) {
+    flat_out = flat.cycle(inputs_of(e, flat_cont));
+    chain_out = chain.cycle(inputs_of(e, chain_cont));
+  }
+  EXPECT_TRUE(flat_out.on(sc::Output::motor) && flat_out.on(sc::Output::feed_valve));
+  EXPECT_TRUE(chain_out.on(sc::Output::motor));
+  EXPECT_FALSE(chain_out.any_stroke_output());
+  EXPECT_EQ(chain.observe().step, sc::PressStep::ready);
+}
+
+}  // namespace
