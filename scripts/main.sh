@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up (scripts/setup.sh) and runs the main job: the demo scenario, then the
 # evidence chain for every model: model check (safestate check), unbounded proofs
-# (safestate prove) and conformance of the C++ against the flagship model
+# (safestate prove) and conformance of the C++ against its model
 # (safestate conform), for every system of the registry (systems/*/system.toml).
 # Exits non-zero as soon as one step fails.
 set -euo pipefail
