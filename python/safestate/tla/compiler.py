@@ -63,12 +63,15 @@ _NO_INFO = Info(frozenset(), False)
 
 
 class RecursiveFunction:
-    """``f[x \\in S] == body`` referring to itself: applied lazily, memoised."""
+    """``f[x \\in S] == body`` referring to itself: applied lazily, memoised.  Each
+    application evaluates `body` on a copy of `frame` (the enclosing LET's frame, or a
+    fresh one) after `bind` has stored the argument in its slots."""
 
-    __slots__ = ("dom", "body", "slot", "size", "memo", "s", "t")
+    __slots__ = ("dom", "body", "bind", "frame", "memo", "s", "t")
 
-    def __init__(self, dom: Value, body: Code, slot: int, size: int, s: Any, t: Any) -> None:
-        self.dom, self.body, self.slot, self.size, self.s, self.t = dom, body, slot, size, s, t
+    def __init__(self, dom: Value, body: Code, bind: Callable[[list, Value], None], frame: list,
+                 s: Any, t: Any) -> None:
+        self.dom, self.body, self.bind, self.frame, self.s, self.t = dom, body, bind, frame, s, t
         self.memo: dict = {}
 
     def apply(self, x: Value) -> Value:
