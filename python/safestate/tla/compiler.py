@@ -79,8 +79,8 @@ class RecursiveFunction:
         if r is NOTSET:
             if not member(x, self.dom):
                 raise EvalError(f"Attempted to apply function to argument {fmt(x)}, which is not in its domain")
-            L = [None] * self.size
-            L[self.slot] = x
+            L = list(self.frame)
+            self.bind(L, x)
             r = self.memo[x] = self.body(self.s, self.t, L)
         return r
 
@@ -385,7 +385,10 @@ class Compiler:
         elif args:
             raise TlaError("semantic", f"{d.name} is a function; apply it with {d.name}[...]", loc)
         info = self.def_info(sym)
-        if info.action or sym.scope.parameterised or env.init_mode:
+        # In Init, unprimed variables are the state being built, so a definition that
+        # reads them is expanded; a recursive one reading none is called as usual.
+        init_inline = env.init_mode and not (sym.recursive and not info.vars)
+        if info.action or sym.scope.parameterised or init_inline:
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
         if d.fn_bounds is not None:
@@ -540,7 +543,7 @@ class Compiler:
             def with_self(s2: Any, t2: Any, L2: list) -> Value:
                 L2[self_slot] = f
                 return body(s2, t2, L2)
-            f = RecursiveFunction(dom, with_self, slot, size, s, t)
+            f = RecursiveFunction(dom, with_self, lambda L2, x: L2.__setitem__(slot, x), [None] * size, s, t)
             if isinstance(dom, LazySet) and not dom.finite:
                 return f
             return f.materialize()
@@ -767,7 +770,9 @@ class Compiler:
                 continue
             body_expr: A.Expr = A.FnLit(d.loc, d.fn_bounds, d.body) if d.fn_bounds else d.body
             if d.fn_bounds and self._mentions(d.body, d.name):
-                raise UnsupportedError("recursive function definition inside LET", d.loc)
+                env, reset = self._let_recursive_function(d, env)
+                resets.append(reset)
+                continue
             if self.info(body_expr, env).action or env.init_mode:
                 env = env.bind(**{d.name: ByNameLocal(body_expr, env)})
                 continue
@@ -776,6 +781,40 @@ class Compiler:
             env = env.bind(**{d.name: LazyLocal(slot, code)})
             resets.append(slot)
         return env, resets
+
+    def _let_recursive_function(self, d: A.OpDef, env: Env) -> tuple[Env, int]:
+        """``LET f[x \\in S] == ... f[..] ... IN``: a `RecursiveFunction` over a copy of the
+        LET's frame, so that the body sees the enclosing bound variables."""
+        assert d.fn_bounds is not None
+        slot = env.frame.alloc()
+        holder: list[Code] = []
+        env = env.bind(**{d.name: LazyLocal(slot, lambda s, t, L: holder[0](s, t, L))})
+        inner, binds = self.bind_bounds(d.fn_bounds, env)
+        body = self.expr(d.body, inner)
+        set_codes = [b[0] for b in binds]
+        loc = d.loc
+
+        def bind(L: list, x: Value) -> None:
+            if len(binds) == 1:
+                _assign(L, binds[0][1], binds[0][2], x, loc)
+                return
+            if type(x) is not tuple or len(x) != len(binds):
+                raise EvalError(f"Attempted to apply function {d.name} to argument {fmt(x)}, which is not in "
+                                f"its domain", loc)
+            for (_, slots, is_tuple, _), v in zip(binds, x):
+                _assign(L, slots, is_tuple, v, loc)
+
+        def make(s: Any, t: Any, L: list) -> Value:
+            doms = [_need_set(c(s, t, L), "function definition") for c in set_codes]
+            dom = doms[0] if len(doms) == 1 else ProductSet(tuple(doms))
+            frame = list(L)
+            f = RecursiveFunction(dom, body, bind, frame, s, t)
+            frame[slot] = f
+            if isinstance(dom, LazySet) and not dom.finite:
+                return f
+            return f.materialize()
+        holder.append(_guard(make, loc))
+        return env, slot
 
     @staticmethod
     def _mentions(e: Any, name: str) -> bool:
