@@ -232,7 +232,7 @@ class Case(Expr):
 
 @dataclass(slots=True, eq=False)
 class Let(Expr):
-    defs: list["OpDef"]
+    defs: list["OpDef | InstanceDef"]
     body: Expr
 
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import itertools
 import operator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable
 
 from . import ast as A
@@ -23,7 +23,7 @@ from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
 from .errors import EvalError, Loc, TlaError, UnsupportedError
-from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym
+from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym, let_instance_scope
 from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
 from .stdlib import NATURALS, cap, cup, domain, setminus, subseteq, union
@@ -110,6 +110,8 @@ class Compiler:
         # > 0 while compiling a body that runs re-entrantly on a shared frame (see inline.py).
         self._no_inline = 0
         self.folder = ConstFolder(self)
+        # (id of a LET's INSTANCE, id of the enclosing scope) -> the LET body's scope
+        self._let_scopes: dict[tuple[int, int], Scope] = {}
 
     # ================================================================ entry points
     def compile_unit(self, e: A.Expr, scope: Scope) -> tuple[Code, int]:
@@ -161,10 +163,16 @@ class Compiler:
                     sym = self._resolve(name, env.scope)
                     self._walk_sym(sym, env, vs, action)
         if isinstance(e, A.Prefixed):
-            action[0] = action[0] or self._prefixed_info(e, env).action
+            pinfo = self._prefixed_info(e, env)
+            vs.update(pinfo.vars)
+            action[0] = action[0] or pinfo.action
         if isinstance(e, A.Let):
             bound = bound | {d.name for d in e.defs}
             for d in e.defs:
+                if isinstance(d, A.InstanceDef):
+                    env = replace(env, scope=self.let_scope(d, env))
+                    bound = bound - {d.name}
+                    continue
                 self._walk(d.body, env, vs, action, bound | {p.name for p in d.params})
             self._walk(e.body, env, vs, action, bound)
             return
@@ -616,6 +624,7 @@ class Compiler:
             params = sym.inst.params
             self._arity(step.name, len(params), step.args, e.loc)
             b, p = self.bind_params(params, step.args, env, e.loc)
+            bindings.update({n: env.locals[n] for n in sym.let_locals if n in env.locals})
             bindings.update(b)
             pre.extend(p)
             scope = sym.scope
@@ -763,6 +772,9 @@ class Compiler:
     def bind_let(self, defs: list[A.OpDef], env: Env) -> tuple[Env, list[int]]:
         resets: list[int] = []
         for d in defs:
+            if isinstance(d, A.InstanceDef):
+                env = replace(env, scope=self.let_scope(d, env))
+                continue
             if d.params:
                 local: Any = LetOpLocal(d, env, [env.frame.alloc() for _ in d.params], [])
                 env = env.bind(**{d.name: local})
@@ -781,6 +793,14 @@ class Compiler:
             env = env.bind(**{d.name: LazyLocal(slot, code)})
             resets.append(slot)
         return env, resets
+
+    def let_scope(self, inst: A.InstanceDef, env: Env) -> Scope:
+        """The scope after ``LET I == INSTANCE M ...`` (built once per enclosing scope)."""
+        key = (id(inst), id(env.scope))
+        scope = self._let_scopes.get(key)
+        if scope is None:
+            scope = self._let_scopes[key] = let_instance_scope(env.scope, inst, tuple(env.locals))
+        return scope
 
     def _let_recursive_function(self, d: A.OpDef, env: Env) -> tuple[Env, int]:
         """``LET f[x \\in S] == ... f[..] ... IN``: a `RecursiveFunction` over a copy of the

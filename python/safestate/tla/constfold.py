@@ -150,7 +150,7 @@ class ConstFolder:
         if t is A.Let:
             bound = {d.name for d in e.defs}
             for d in e.defs:
-                if d.fn_bounds:
+                if isinstance(d, A.InstanceDef) or d.fn_bounds:
                     return None
                 b = self.free_names(d.body)
                 if b is None:

@@ -548,16 +548,12 @@ class _Converter:
         return A.Case(loc, arms, other)
 
     def x_let_in(self, n: Node, loc: Loc) -> A.Expr:
-        defs: list[A.OpDef] = []
+        defs: list[A.OpDef | A.InstanceDef] = []
         for d in n.children_by_field_name("definitions"):
             if d.type == "recursive_declaration":
                 continue  # LET operators may refer to themselves; nothing to record
-            if d.type == "module_definition":
-                raise UnsupportedError("INSTANCE inside LET", self.loc(d))
-            if d.type in ("operator_definition", "function_definition"):
-                defn = self.definition(d, False)
-                assert isinstance(defn, A.OpDef)
-                defs.append(defn)
+            if d.type in ("operator_definition", "function_definition", "module_definition"):
+                defs.append(self.definition(d, False))
         return A.Let(loc, defs, self.expr(n.child_by_field_name("expression")))
 
     def x_conj_list(self, n: Node, loc: Loc) -> A.Expr:
