@@ -22,7 +22,7 @@ from typing import Any, Callable
 
 from . import ast as A
 from .compiler import Compiler, _enum_checked, _prefix, check_bool
-from .env import UNSET, Code, Env, SlotLocal
+from .env import UNSET, ByNameLocal, Code, Env, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
@@ -196,11 +196,11 @@ class ActionCompiler:
     def _call(self, e: A.Name | A.Apply, args: list[A.Expr], env: Env, k: Cont) -> Code | None:
         local = env.locals.get(e.name)
         if local is not None:
-            from .env import ByNameLocal
             if isinstance(local, ByNameLocal) and not args:
                 return self.action(local.expr, local.env, k)
             return None
         sym = env.scope.lookup(e.name)
+        sym = self.c.sym_overrides.get(id(sym), sym)  # C <- Op: expand Op
         if isinstance(sym, SubstSym) and not args:
             inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
             return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode), k)
@@ -259,6 +259,9 @@ class ActionCompiler:
     # ---------------------------------------------------------------- assignments
     def _target_var(self, lhs: A.Expr, env: Env) -> tuple[int, str] | None:
         """The variable assigned by ``lhs = ...``: ``x'`` in actions, ``x`` in Init."""
+        local = env.locals.get(lhs.name) if isinstance(lhs, A.Name) else None
+        if isinstance(local, ByNameLocal):  # an operator parameter given x' (TLC expands it)
+            return self._target_var(local.expr, local.env)
         if env.init_mode:
             return self._var_of(lhs, env)
         if isinstance(lhs, A.Prime):

@@ -396,7 +396,10 @@ class Compiler:
         # In Init, unprimed variables are the state being built, so a definition that
         # reads them is expanded; a recursive one reading none is called as usual.
         init_inline = env.init_mode and not (sym.recursive and not info.vars)
-        if info.action or sym.scope.parameterised or init_inline:
+        # An action-level argument (Send(p, x, x')) is passed by name, as TLC expands
+        # the operator: its body may assign the primed variable.
+        action_arg = any(self.info(a, env).action for a in args if not isinstance(a, A.Lambda))
+        if info.action or sym.scope.parameterised or init_inline or action_arg:
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
         if d.fn_bounds is not None:
