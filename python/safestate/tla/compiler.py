@@ -26,6 +26,7 @@ from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym, let_instance_scope
 from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
+from .tlcget import RUNTIME
 from .stdlib import NATURALS, cap, cup, domain, setminus, subseteq, union
 from .values import (BOOLEAN, STRING, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
                      ProductSet, RecSetValue, as_set, fmt, is_set, kind, make_fn, member,
@@ -593,6 +594,8 @@ class Compiler:
         b = sym.builtin
         self._arity(b.name, b.arity, args, loc)
         fn = b.fn
+        if b.name in ("TLCGet", "TLCSet"):
+            RUNTIME.used = True  # the explorer keeps the counters up to date
         if b.arity == 0:
             v = fn()
             return lambda s, t, L: v

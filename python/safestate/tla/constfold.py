@@ -22,7 +22,7 @@ from .env import ByNameLocal, Env
 from .modules import BuiltinSym, ConstSym, DefSym, VarSym
 
 # Builtins whose evaluation has an effect besides its value.
-IMPURE_BUILTINS = frozenset({"Print", "PrintT", "Assert"})
+IMPURE_BUILTINS = frozenset({"Print", "PrintT", "Assert", "TLCGet", "TLCSet"})
 
 _NOT_CONSTANT = None  # free_names() result for expressions that are never constant
 

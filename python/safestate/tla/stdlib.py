@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from .errors import AssertFailure, EvalError
+from .tlcget import tlc_get, tlc_set
 from .values import (
     BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
     iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
@@ -284,6 +285,7 @@ TLC = {
     "@@": Builtin("@@", 2, merge_fn, "TLC"), "Permutations": Builtin("Permutations", 1, permutations, "TLC"),
     "SortSeq": Builtin("SortSeq", 2, sort_seq, "TLC", higher_order=True),
     "ToString": Builtin("ToString", 1, to_string, "TLC"), "TLCEval": Builtin("TLCEval", 1, tlc_eval, "TLC"),
+    "TLCGet": Builtin("TLCGet", 1, tlc_get, "TLC"), "TLCSet": Builtin("TLCSet", 2, tlc_set, "TLC"),
 }
 
 
