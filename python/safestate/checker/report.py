@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TextIO
 
 from ..tla.errors import TlaError
+from ..tla.tlcget import RUNTIME
 from .explore import CheckResult, Step
 from .model import Model
 
@@ -25,6 +26,7 @@ def write_trace(out: TextIO, model: Model, trace: list[Step]) -> None:
             params = ", ".join(f"{k} = {_fmt(v)}" for k, v in step.params.items())
             label = f"<{step.action}{'(' + params + ')' if params else ''}{where}>"
         print(f"State {i}: {label}", file=out)
+        RUNTIME.level = i  # an ALIAS may show TLCGet("level")
         print(model.format_state(step.state), file=out)
         print(file=out)
 
