@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from . import ast as A
-from .compiler import Compiler, _enum_checked, _prefix, check_bool
+from .compiler import Compiler, _enum_checked, _prefix, check_bool, primed_names
 from .env import UNSET, ByNameLocal, Code, Env, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
@@ -59,7 +59,7 @@ class ActionCompiler:
             body = self.split(e.body, inner, label, label_loc, params + names, make_k)
             return _exists(binds, body)
         if isinstance(e, A.Let):
-            env2, resets = self.c.bind_let(e.defs, env)
+            env2, resets = self.c.bind_let(e.defs, env, primed_names(e))
             return _let(resets, self.split(e.body, env2, label, label_loc, params, make_k))
         if isinstance(e, (A.Name, A.Apply)) and e.name not in env.locals:
             sym = env.scope.lookup(e.name)
@@ -184,7 +184,7 @@ class ActionCompiler:
         return case
 
     def a_Let(self, e: A.Let, env: Env, k: Cont) -> Code:
-        env2, resets = self.c.bind_let(e.defs, env)
+        env2, resets = self.c.bind_let(e.defs, env, primed_names(e))
         return _let(resets, self.action(e.body, env2, k))
 
     def a_Name(self, e: A.Name, env: Env, k: Cont) -> Code | None:
@@ -269,6 +269,9 @@ class ActionCompiler:
         return None
 
     def _var_of(self, e: A.Expr, env: Env) -> tuple[int, str] | None:
+        local = env.locals.get(e.name) if isinstance(e, A.Name) else None
+        if isinstance(local, ByNameLocal):  # a parameter given a variable (Lose(q) with q' = ...)
+            return self._var_of(local.expr, local.env)
         if not isinstance(e, A.Name) or e.name in env.locals:
             return None
         sym = env.scope.lookup(e.name)

@@ -456,7 +456,7 @@ class Compiler:
         if self._inline_depth > 60:
             raise UnsupportedError(f"recursive action-level operator {d.name}", loc)
         try:
-            bindings, pre = self.bind_params(d.params, args, env, loc)
+            bindings, pre = self.bind_params(d.params, args, env, loc, primed_names(d.body))
             inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
             body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode)
             if d.fn_bounds is not None:
@@ -467,9 +467,11 @@ class Compiler:
             self._inline_depth -= 1
         return pre, body
 
-    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc) -> tuple[dict, list]:
+    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc,
+                    primed: frozenset[str] = frozenset()) -> tuple[dict, list]:
         """Bind operator parameters: by value into fresh slots, or by name for
-        action-level arguments (which the body must see unevaluated)."""
+        action-level arguments and for parameters that the body primes (Lose(q) ==
+        ... q' = ...: TLC substitutes the argument, so q' is msgQ')."""
         bindings: dict[str, Any] = {}
         pre: list[tuple[int, Code]] = []
         for p, a in zip(params, args):
@@ -477,7 +479,7 @@ class Compiler:
                 slot = env.frame.alloc()
                 pre.append((slot, self._arg(a, p.arity, env, loc)))
                 bindings[p.name] = OpLocal(slot, p.arity)
-            elif self.info(a, env).action or env.init_mode:
+            elif self.info(a, env).action or env.init_mode or p.name in primed:
                 bindings[p.name] = ByNameLocal(a, env)
             else:
                 slot = env.frame.alloc()
@@ -645,7 +647,7 @@ class Compiler:
         if isinstance(sym, DefSym) and compile_body != self.expr:
             d = sym.defn
             self._arity(d.name, len(d.params), fake, e.loc)
-            pb, pp = self.bind_params(d.params, fake, inner_env, e.loc)
+            pb, pp = self.bind_params(d.params, fake, inner_env, e.loc, primed_names(d.body))
             inst = {p: inner_env.locals[p] for p in sym.scope.instance_params if p in inner_env.locals}
             body = compile_body(d.body, Env(sym.scope, env.frame, {**inst, **arg_bindings, **pb}, env.init_mode))
             return pre + pp, body
@@ -764,7 +766,7 @@ class Compiler:
         return case
 
     def c_Let(self, e: A.Let, env: Env) -> Code:
-        env2, resets = self.bind_let(e.defs, env)
+        env2, resets = self.bind_let(e.defs, env, primed_names(e))
         body = self.expr(e.body, env2)
         if not resets:
             return body
@@ -775,7 +777,9 @@ class Compiler:
             return body(s, t, L)
         return let
 
-    def bind_let(self, defs: list[A.OpDef], env: Env) -> tuple[Env, list[int]]:
+    def bind_let(self, defs: list[A.OpDef], env: Env, primed: frozenset[str] = frozenset()) -> tuple[Env, list[int]]:
+        """Bind LET definitions; those in `primed` (primed somewhere in the LET) are
+        bound by name, since q' must re-evaluate q's body in the next state."""
         resets: list[int] = []
         for d in defs:
             if isinstance(d, A.InstanceDef):
@@ -791,7 +795,7 @@ class Compiler:
                 env, reset = self._let_recursive_function(d, env)
                 resets.append(reset)
                 continue
-            if self.info(body_expr, env).action or env.init_mode:
+            if self.info(body_expr, env).action or env.init_mode or d.name in primed:
                 env = env.bind(**{d.name: ByNameLocal(body_expr, env)})
                 continue
             slot = env.frame.alloc()
@@ -1365,6 +1369,45 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 
 
 # ------------------------------------------------------------------ helpers
+
+
+_PRIMED_CACHE: dict[int, tuple[A.Expr, frozenset[str]]] = {}
+
+
+def primed_names(body: A.Expr) -> frozenset[str]:
+    """Names that occur under a prime, UNCHANGED, ENABLED or a [A]_v subscript in
+    `body` (LET definitions included)."""
+    hit = _PRIMED_CACHE.get(id(body))
+    if hit is not None and hit[0] is body:
+        return hit[1]
+    out: set[str] = set()
+
+    def names(e: Any) -> None:
+        if isinstance(e, (A.Name, A.Apply)):
+            out.add(e.name)
+        if isinstance(e, A.Let):
+            for d in e.defs:
+                if isinstance(d, A.OpDef):
+                    names(d.body)
+        for c in _children(e):
+            names(c)
+
+    def walk(e: Any) -> None:
+        if isinstance(e, A.Prime) or (isinstance(e, A.Unary) and e.op in ("UNCHANGED", "ENABLED")):
+            names(e)
+            return
+        if isinstance(e, A.StepAction):
+            names(e.sub)
+        if isinstance(e, A.Let):
+            for d in e.defs:
+                if isinstance(d, A.OpDef):
+                    walk(d.body)
+        for c in _children(e):
+            walk(c)
+    walk(body)
+    result = frozenset(out)
+    _PRIMED_CACHE[id(body)] = (body, result)
+    return result
 
 
 def _children(e: Any) -> list:
