@@ -22,6 +22,7 @@ from typing import Any, Callable
 
 from . import ast as A
 from .compiler import Compiler, _enum_checked, _prefix, check_bool, primed_names
+from .compiler import _assign as assign_binder
 from .env import UNSET, ByNameLocal, Code, Env, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
@@ -145,10 +146,43 @@ class ActionCompiler:
     def a_Quant(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
         if e.kind != "\\E":
             if self.c.info(e.body, env).action:
-                raise UnsupportedError("\\A over an action (a conjunction of actions) is not supported", e.loc)
+                return self._forall_action(e, env, k)
             return None
         inner, binds = self.c.bind_bounds(e.bounds, env)
         return _exists(binds, self.action(e.body, inner, k))
+
+    def _forall_action(self, e: A.Quant, env: Env, k: Cont) -> Code:
+        """``\\A x \\in S : A(x)`` in an action: the conjunction of A(x) over S.  TLC
+        (Tool.getNextStates, OPCODE_bf) takes the first element, then pushes the others
+        on its stack of pending conjuncts, so they run in the order x1, xn, ..., x2."""
+        inner, binds = self.c.bind_bounds(e.bounds, env)
+        state_slot = env.frame.alloc()  # (elements in TLC's order, position)
+        all_slots = [sl for b in binds for sl in b[1]]
+        rbinds = binds[::-1]
+
+        def after(s: Any, t: Any, L: list) -> None:
+            elems, pos = L[state_slot]
+            if pos == len(elems):
+                k(s, t, L)
+                return
+            saved = [L[sl] for sl in all_slots]
+            for (_, slots, is_tuple, sloc), v in zip(rbinds, elems[pos]):
+                assign_binder(L, slots, is_tuple, v, sloc)
+            L[state_slot] = (elems, pos + 1)
+            body(s, t, L)
+            L[state_slot] = (elems, pos)
+            for sl, v in zip(all_slots, saved):  # a branch of an earlier element continues
+                L[sl] = v
+        body = self.action(e.body, inner, after)
+
+        def forall(s: Any, t: Any, L: list) -> None:
+            sets = [_enum_checked(b[0](s, t, L), b[3]) for b in binds]
+            combos = list(itertools.product(*sets[::-1]))
+            saved = L[state_slot]
+            L[state_slot] = (combos[:1] + combos[:0:-1], 0)
+            after(s, t, L)
+            L[state_slot] = saved
+        return forall
 
     def a_If(self, e: A.If, env: Env, k: Cont) -> Code | None:
         c = self.c.expr(e.cond, env)
@@ -408,7 +442,6 @@ def _branches(branches: list[Code]) -> Code:
 
 
 def _exists(binds: list, body: Code) -> Code:
-    from .compiler import _assign as assign_binder
     if len(binds) == 1 and not binds[0][2]:
         set_code, (slot,), _, sloc = binds[0]
 
