@@ -408,8 +408,8 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
                 nexts.append(e.arg.action)
                 return
             raise UnsupportedError("only [][Next]_vars is supported as the box formula of a specification", e.loc)
-        if isinstance(e, A.Fairness):
-            return  # fairness does not affect safety checking
+        if _is_fairness(e, model, 0):
+            return  # fairness (also \\A p \\in S : WF_v(A(p))) does not affect safety checking
         if _is_temporal(e, model, 0):
             raise UnsupportedError("unsupported temporal formula in the specification", e.loc)
         inits.append(e)
@@ -423,6 +423,21 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
         raise TlaError("config", f"The specification {entry.name} has no initial predicate.", sym.defn.loc)
     init = inits[0] if len(inits) == 1 else A.And(inits[0].loc, inits)
     return init, nexts[0]
+
+
+def _is_fairness(e: Any, model: Model, depth: int) -> bool:
+    """WF/SF, or a conjunction or quantification of them (possibly through definitions)."""
+    if isinstance(e, A.Fairness):
+        return True
+    if isinstance(e, A.Quant):
+        return _is_fairness(e.body, model, depth)
+    if isinstance(e, A.And):
+        return all(_is_fairness(i, model, depth) for i in e.items)
+    if isinstance(e, (A.Name, A.Apply)) and depth < 20:
+        s = model.scope.lookup(e.name)
+        if isinstance(s, DefSym):
+            return _is_fairness(s.defn.body, model, depth + 1)
+    return False
 
 
 def _is_temporal(e: Any, model: Model, depth: int) -> bool:
