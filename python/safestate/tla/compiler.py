@@ -567,21 +567,27 @@ class Compiler:
         d = local.defn
         self._arity(name, len(d.params), args, loc)
         if not local.holder:
-            local.holder.append(None)
+            local.holder.extend([None, []])
             bindings = {}
             for p, sl in zip(d.params, local.param_slots):
                 bindings[p.name] = OpLocal(sl, p.arity) if p.arity else SlotLocal(sl)
             self._no_inline += 1
+            lo = local.env.frame.size
             try:
                 local.holder[0] = self.expr(d.body, local.env.bind_all(bindings))
             finally:
                 self._no_inline -= 1
+            if d.name in all_names(d.body):
+                # A recursive call reuses the slots of the body's own LETs and binders:
+                # save and restore them around each call, as for the parameters.
+                local.holder[1] = list(range(lo, local.env.frame.size))
         holder = local.holder
-        slots = local.param_slots
+        param_slots = local.param_slots
         arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
 
         def call(s: Any, t: Any, L: list) -> Value:
             vals = [a(s, t, L) for a in arg_codes]
+            slots = param_slots + holder[1] if holder[1] else param_slots
             saved = [L[sl] for sl in slots]
             for sl, v in zip(slots, vals):
                 L[sl] = v
@@ -1372,6 +1378,23 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 
 
 _PRIMED_CACHE: dict[int, tuple[A.Expr, frozenset[str]]] = {}
+
+
+def all_names(e: Any) -> set[str]:
+    """Every name referred to in `e`, LET definitions included."""
+    out: set[str] = set()
+
+    def walk(x: Any) -> None:
+        if isinstance(x, (A.Name, A.Apply)):
+            out.add(x.name)
+        if isinstance(x, A.Let):
+            for d in x.defs:
+                if isinstance(d, A.OpDef):
+                    walk(d.body)
+        for c in _children(x):
+            walk(c)
+    walk(e)
+    return out
 
 
 def primed_names(body: A.Expr) -> frozenset[str]:
