@@ -302,7 +302,7 @@ class _Converter:
         s = self.expr(n.child_by_field_name("set"))
         if len(intro) == 1 and intro[0].type == "tuple_of_identifiers":
             return A.Bound([self.text(i) for i in self.named(intro[0]) if i.type == "identifier"], True, s)
-        return A.Bound([self.text(i) for i in intro], False, s)
+        return A.Bound([self.text(i) for i in intro if i.is_named], False, s)  # not the commas
 
     # ------------------------------------------------------------ expressions
     def expr(self, n: Node) -> A.Expr:
