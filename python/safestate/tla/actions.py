@@ -23,7 +23,7 @@ from typing import Any, Callable
 from . import ast as A
 from .compiler import Compiler, _enum_checked, _prefix, check_bool, primed_names
 from .compiler import _assign as assign_binder
-from .env import UNSET, ByNameLocal, Code, Env, SlotLocal
+from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
@@ -145,11 +145,53 @@ class ActionCompiler:
 
     def a_Quant(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
         if e.kind != "\\E":
-            if self.c.info(e.body, env).action:
+            if self.c.info(e.body, env).action or self.may_branch(e.body, env):
                 return self._forall_action(e, env, k)
             return None
         inner, binds = self.c.bind_bounds(e.bounds, env)
         return _exists(binds, self.action(e.body, inner, k))
+
+    def may_branch(self, e: Any, env: Env, depth: int = 0) -> bool:
+        """Can `e`, in an action, produce a step more than once (a disjunction or \\E in
+        action position, possibly inside definitions)?  If not, evaluating it as an
+        expression gives the same steps.  Conservative: True when unsure."""
+        if depth > 30:
+            return True
+        if isinstance(e, A.Or):
+            return len(e.items) > 1
+        if isinstance(e, A.Quant):
+            return e.kind == "\\E" or self.may_branch(e.body, env, depth + 1)
+        if isinstance(e, A.And):
+            return any(self.may_branch(i, env, depth + 1) for i in e.items)
+        if isinstance(e, A.If):
+            return self.may_branch(e.then, env, depth + 1) or self.may_branch(e.other, env, depth + 1)
+        if isinstance(e, A.Case):
+            return any(self.may_branch(v, env, depth + 1) for _, v in e.arms) or (
+                e.other is not None and self.may_branch(e.other, env, depth + 1))
+        if isinstance(e, A.Let):
+            return True
+        if isinstance(e, A.Binary):
+            if e.op == "=>":
+                return self.may_branch(e.rhs, env, depth + 1)
+            return e.op == "\\in" and isinstance(e.lhs, A.Prime)
+        if isinstance(e, (A.Prefixed, A.StepAction)):
+            return True
+        if isinstance(e, (A.Name, A.Apply)):
+            local = env.locals.get(e.name)
+            if isinstance(local, (ByNameLocal, LazyLocal)):
+                return local.expr is None or self.may_branch(local.expr, local.env, depth + 1)
+            if isinstance(local, LetOpLocal):
+                return self.may_branch(local.defn.body, local.env, depth + 1)
+            if local is not None:
+                return False
+            sym = env.scope.lookup(e.name)
+            sym = self.c.sym_overrides.get(id(sym), sym)
+            if isinstance(sym, DefSym):
+                if sym.recursive or sym.defn.fn_bounds is not None:
+                    return False  # TLC evaluates these as expressions
+                return self.may_branch(sym.defn.body, Env(sym.scope, env.frame), depth + 1)
+            return isinstance(sym, SubstSym)
+        return False
 
     def _forall_action(self, e: A.Quant, env: Env, k: Cont) -> Code:
         """``\\A x \\in S : A(x)`` in an action: the conjunction of A(x) over S.  TLC
@@ -232,6 +274,17 @@ class ActionCompiler:
         if local is not None:
             if isinstance(local, ByNameLocal) and not args:
                 return self.action(local.expr, local.env, k)
+            # TLC expands a LET definition used as a conjunct (getNextStatesAppl), so a
+            # disjunction or \E inside it branches; without one, evaluating it is the same.
+            if isinstance(local, LazyLocal) and local.expr is not None and not args and \
+                    self.may_branch(local.expr, local.env):
+                return self.action(local.expr, local.env, k)
+            if isinstance(local, LetOpLocal) and self.may_branch(local.defn.body, local.env):
+                self.c._arity(e.name, len(local.defn.params), args, e.loc)
+                bindings, pre = self.c.bind_params(local.defn.params, args, env, e.loc,
+                                                   primed_names(local.defn.body))
+                body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings}, env.init_mode)
+                return _prefix_act(pre, self.action(local.defn.body, body_env, k))
             return None
         sym = env.scope.lookup(e.name)
         sym = self.c.sym_overrides.get(id(sym), sym)  # C <- Op: expand Op

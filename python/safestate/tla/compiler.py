@@ -806,7 +806,7 @@ class Compiler:
                 continue
             slot = env.frame.alloc()
             code = self.expr(body_expr, env)
-            env = env.bind(**{d.name: LazyLocal(slot, code)})
+            env = env.bind(**{d.name: LazyLocal(slot, code, body_expr, env)})
             resets.append(slot)
         return env, resets
 

@@ -52,10 +52,13 @@ class SlotLocal:
 
 @dataclass(eq=False)
 class LazyLocal:
-    """A zero-argument LET definition, evaluated on first use into ``L[slot]``."""
+    """A zero-argument LET definition, evaluated on first use into ``L[slot]``.  In an
+    action, its body `expr` (in `env`) is expanded instead, as TLC does."""
 
     slot: int
     code: Code
+    expr: A.Expr | None = None
+    env: "Env | None" = None
 
 
 @dataclass(eq=False)
