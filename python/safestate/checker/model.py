@@ -240,7 +240,8 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
         model.alias = _predicate(model, config.alias, "alias", boolean=False)
     if config.postcondition is not None:
         model.postcondition = _predicate(model, config.postcondition, "postcondition")
-        if model.compiler.def_info(_lookup_def(model, config.postcondition, "postcondition")).vars:
+        if any(v >= 0 for v in model.compiler.def_info(_lookup_def(model, config.postcondition,
+                                                                       "postcondition")).vars):
             raise UnsupportedError(f"the postcondition {config.postcondition.name} reads state variables; "
                                    f"only constant-level postconditions (TLCGet, ...) are supported",
                                    config.postcondition.loc)

@@ -61,6 +61,8 @@ class Info:
 
 
 _NO_INFO = Info(frozenset(), False)
+# In Info.vars: the expression reads TLCGet's counters (a pseudo-variable).
+SEARCH_STATE = -1
 
 
 class RecursiveFunction:
@@ -213,6 +215,8 @@ class Compiler:
         elif isinstance(sym, SubstSym):
             sub_env = Env(sym.scope, env.frame)
             self._walk(sym.expr, sub_env, vs, action, set(sym.instance_params))
+        elif isinstance(sym, BuiltinSym) and sym.builtin.name in ("TLCGet", "TLCSet"):
+            vs.add(SEARCH_STATE)  # reads the search's counters: never a constant
 
     def _prefixed_info(self, e: A.Prefixed, env: Env) -> Info:
         scope = self._instance_scope(e, env)
@@ -1305,7 +1309,7 @@ class Compiler:
         if info.action:
             raise TlaError("semantic", "a primed expression may not contain primes or actions", e.loc)
         code = self.expr(arg, env)
-        deps = sorted(info.vars)
+        deps = sorted(i for i in info.vars if i != SEARCH_STATE)
         loc = e.loc
 
         def primed(s: Any, t: Any, L: list) -> Value:
