@@ -336,7 +336,7 @@ def _check_postcondition(model: Model, result: CheckResult) -> None:
     final counters); a false one is reported as TLC does, with exit code 10."""
     post = model.postcondition
     assert post is not None
-    RUNTIME.level = 0
+    RUNTIME.level = RUNTIME.expanding = RUNTIME.pending = 0  # the search is over
     try:
         ok = model.holds(post, ())
     except TlaError as e:

@@ -612,7 +612,7 @@ class Compiler:
             v = fn()
             return lambda s, t, L: v
         if b.higher_order:
-            arities = {"SelectSeq": [0, 1], "SortSeq": [0, 2]}[b.name]
+            arities = {"SelectSeq": [0, 1], "SortSeq": [0, 2], "BagOfAll": [1, 0]}[b.name]
             codes = [self._arg(a, ar, env, loc) for a, ar in zip(args, arities)]
         else:
             codes = [self.expr(a, env) for a in args]

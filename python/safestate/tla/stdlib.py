@@ -351,12 +351,43 @@ def empty_bag() -> Value:
     return ()
 
 
+def bag_union(s: Value) -> Value:
+    """BagUnion(S): the bag sum of the bags in the set S."""
+    d: dict = {}
+    for b in iter_set(s):
+        for k, c in _bag(b).items():
+            d[k] = d.get(k, 0) + c
+    return make_fn(d)
+
+
+def sub_bags(b: Value) -> frozenset:
+    """SubBag(B): every bag SB with SB[e] <= B[e] (EmptyBag included)."""
+    import itertools
+    items = [(k, c) for k, c in _bag(b).items() if c > 0]
+    out = []
+    for counts in itertools.product(*[range(c + 1) for _, c in items]):
+        out.append(make_fn({k: n for (k, _), n in zip(items, counts) if n > 0}))
+    return frozenset(out)
+
+
+def bag_of_all(f: Callable[[Value], Value], b: Value) -> Value:
+    """BagOfAll(F, B): the bag of F(e) for the elements e of B, with their copies."""
+    d: dict = {}
+    for k, c in _bag(b).items():
+        if c > 0:
+            y = f(k)
+            d[y] = d.get(y, 0) + c
+    return make_fn(d)
+
+
 BAGS = {
     "SetToBag": Builtin("SetToBag", 1, set_to_bag, "Bags"), "BagToSet": Builtin("BagToSet", 1, bag_to_set, "Bags"),
     "BagIn": Builtin("BagIn", 2, bag_in, "Bags"), "CopiesIn": Builtin("CopiesIn", 2, copies_in, "Bags"),
     "(+)": Builtin("(+)", 2, bag_cup, "Bags"), "(-)": Builtin("(-)", 2, bag_minus, "Bags"),
     "IsABag": Builtin("IsABag", 1, is_a_bag, "Bags"), "BagCardinality": Builtin("BagCardinality", 1, bag_cardinality, "Bags"),
     "\\sqsubseteq": Builtin("\\sqsubseteq", 2, sub_bag, "Bags"), "EmptyBag": Builtin("EmptyBag", 0, empty_bag, "Bags"),
+    "BagUnion": Builtin("BagUnion", 1, bag_union, "Bags"), "SubBag": Builtin("SubBag", 1, sub_bags, "Bags"),
+    "BagOfAll": Builtin("BagOfAll", 2, bag_of_all, "Bags", higher_order=True),
 }
 
 STANDARD_MODULES: dict[str, dict[str, Builtin]] = {
