@@ -539,8 +539,24 @@ class Compiler:
         d = sym.defn
         assert d.fn_bounds is not None
         if len(d.fn_bounds) != 1 or len(d.fn_bounds[0].names) != 1 or d.fn_bounds[0].tuple:
-            code, size = self.compile_unit(A.FnLit(d.loc, d.fn_bounds, d.body), sym.scope)
-            return lambda s, t, L: code(s, t, [None] * size)
+            # f[m \in S, n \in T] == ... f[..] ...: as a recursive LET function.
+            frame = Frame()
+            env, fslot = self._let_recursive_function(d, Env(sym.scope, frame))
+            read = self.expr(A.Name(d.loc, d.name), env)
+            info = self.def_info(sym)
+            constant = not info.vars and not info.action
+            cache: list = []  # constant-level: the same function every time
+
+            def several(s: Any, t: Any, L: list) -> Value:
+                if cache:
+                    return cache[0]
+                L2 = [None] * frame.size
+                L2[fslot] = NOTSET
+                v = read(s, t, L2)
+                if constant:
+                    cache.append(v)
+                return v
+            return several
         compiled = sym.compiled
         if compiled is None:
             frame = Frame()
