@@ -28,7 +28,7 @@ from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
 from .tlcget import RUNTIME
 from .stdlib import NATURALS, cap, cup, domain, setminus, subseteq, union
-from .values import (BOOLEAN, STRING, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
+from .values import (BOOLEAN, STRING, FilteredSet, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
                      ProductSet, RecSetValue, as_set, fmt, is_set, kind, make_fn, member,
                      sorted_elems, values_equal)
 
@@ -972,9 +972,12 @@ class Compiler:
         set_code, slots, is_tuple, sloc = binds[0]
         ploc = e.pred.loc
 
-        def filt(s: Any, t: Any, L: list) -> frozenset:
+        def filt(s: Any, t: Any, L: list) -> Value:
+            base = set_code(s, t, L)
+            if isinstance(base, LazySet) and not base.finite:
+                return _lazy_filter(base, pred, slots, is_tuple, sloc, ploc, s, t, list(L))
             out = []
-            for v in _enum_checked(set_code(s, t, L), sloc):
+            for v in _enum_checked(base, sloc):
                 _assign(L, slots, is_tuple, v, sloc)
                 r = pred(s, t, L)
                 if r is True:
@@ -1550,6 +1553,18 @@ def _assign(L: list, slots: list[int], is_tuple: bool, v: Value, loc: Loc) -> No
         raise EvalError(f"Attempted to match {fmt(v)} against a tuple of {len(slots)} identifiers", loc)
     for sl, x in zip(slots, v):
         L[sl] = x
+
+
+def _lazy_filter(base: LazySet, pred: Code, slots: list[int], is_tuple: bool, sloc: Loc, ploc: Loc,
+                 s: Any, t: Any, L: list) -> FilteredSet:
+    """{x \\in S : P} over an infinite S: membership tests x \\in S and P(x) (TLC's
+    SetPredValue), enumeration is an error."""
+    def test(v: Value) -> bool:
+        if not base.contains(v):
+            return False
+        _assign(L, slots, is_tuple, v, sloc)
+        return check_bool(pred(s, t, L), ploc, "set filter")
+    return FilteredSet(test, f"{{x \\in {base.describe()} : ...}}")
 
 
 def _comprehension(binds: list, body: Code, finish: Callable | None, key_of: Callable | None = None) -> Code:
