@@ -221,6 +221,8 @@ class _Converter:
                 mod.units.append(self.definition(c, False))
             elif t == "local_definition":
                 mod.units.append(self.definition(self.named(c)[0], True))
+            elif t == "assumption" and self.text(c).lstrip().startswith("AXIOM"):
+                continue  # an AXIOM is proof material: TLC does not evaluate it
             elif t == "assumption":
                 nm = c.child_by_field_name("name")
                 body = [x for x in self.named(c) if x.type not in ("identifier", "def_eq")][-1]
