@@ -197,9 +197,12 @@ class ActionCompiler:
         """``\\A x \\in S : A(x)`` in an action: the conjunction of A(x) over S.  TLC
         (Tool.getNextStates, OPCODE_bf) takes the first element, then pushes the others
         on its stack of pending conjuncts, so they run in the order x1, xn, ..., x2."""
-        inner, binds = self.c.bind_bounds(e.bounds, env)
         state_slot = env.frame.alloc()  # (elements in TLC's order, position)
-        all_slots = [sl for b in binds for sl in b[1]]
+        lo = env.frame.size
+        inner, binds = self.c.bind_bounds(e.bounds, env)
+        # The bound variables and every slot the body uses (inlined operators'
+        # parameters, LETs): a branch of an earlier instance continues with them.
+        all_slots: list[int] = []
         rbinds = binds[::-1]
 
         def after(s: Any, t: Any, L: list) -> None:
@@ -216,6 +219,7 @@ class ActionCompiler:
             for sl, v in zip(all_slots, saved):  # a branch of an earlier element continues
                 L[sl] = v
         body = self.action(e.body, inner, after)
+        all_slots.extend(range(lo, env.frame.size))
 
         def forall(s: Any, t: Any, L: list) -> None:
             sets = [_enum_checked(b[0](s, t, L), b[3]) for b in binds]
