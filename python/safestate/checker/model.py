@@ -29,6 +29,7 @@ from ..tla.errors import EvalError, Loc, TlaError, UnsupportedError
 from ..tla.modules import (BuiltinSym, ConstSym, DefSym, ModuleLoader, Scope, VarSym, build_root_scope,
                            load_module, tlc_intern_order)
 from ..tla.parser import parse_text
+from ..tla.resolve import check_modules
 from ..tla.tlcget import RUNTIME
 from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order
 from .cfg import Config, ConfigEntry, parse_config
@@ -217,6 +218,7 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
     register_token_order(config.tokens)
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
+    check_modules(module, loader)
     register_token_order(tlc_intern_order(loader))
     constants, overrides = _constants(config, scope, module)
     compiler = Compiler(constants, overrides)

@@ -27,7 +27,7 @@ from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
-from .values import member, values_equal
+from .values import LazySet, member, values_equal
 
 Cont = Callable[[Any, Any, list], None]
 
@@ -345,7 +345,7 @@ class ActionCompiler:
         i, name = target
         if e.op == "=":
             return self._assign(i, self.c.expr(e.rhs, env), k, e.loc)
-        return self._assign_in(i, self.c.expr(e.rhs, env), k, e.rhs.loc)
+        return self._assign_in(i, self.c.expr(e.rhs, env), k, e.loc, env.init_mode)
 
     # ---------------------------------------------------------------- assignments
     def _target_var(self, lhs: A.Expr, env: Env) -> tuple[int, str] | None:
@@ -384,11 +384,17 @@ class ActionCompiler:
                 k(s, t, L)
         return assign
 
-    def _assign_in(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
+    def _assign_in(self, i: int, rhs: Code, k: Cont, loc: Loc, init: bool = False) -> Code:
+        # TLC's wording when the set is infinite (Nat, Seq(S), {x \in Nat : P} ...).
+        not_enumerable = (f"In computing {'initial' if init else 'next'} states, the right side of \\IN "
+                          f"is not enumerable.")
+
         def assign_in(s: Any, t: Any, L: list) -> None:
             S = rhs(s, t, L)
             cur = t[i]
             if cur is UNSET:
+                if isinstance(S, LazySet) and not S.finite:
+                    raise EvalError(not_enumerable, loc)
                 for v in _enum_checked(S, loc):
                     t[i] = v
                     k(s, t, L)

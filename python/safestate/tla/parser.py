@@ -227,8 +227,13 @@ class _Converter:
                 nm = c.child_by_field_name("name")
                 body = [x for x in self.named(c) if x.type not in ("identifier", "def_eq")][-1]
                 mod.assumes.append(A.Assume(self.expr(body), self.loc(c), self.text(nm) if nm else None))
-            elif t in ("theorem", "use_or_hide"):
-                continue  # proofs are not checked by TLC either
+            elif t == "theorem":
+                # Proofs are not checked by TLC either, but SANY resolves the statement.
+                nm, stmt = c.child_by_field_name("name"), c.child_by_field_name("statement")
+                if stmt is not None:
+                    mod.theorems.append((self.text(nm) if nm else None, self.expr(stmt), self.loc(c)))
+            elif t == "use_or_hide":
+                continue
             elif t == "module":
                 sub = self.module(c)
                 mod.submodules[sub.name] = sub
