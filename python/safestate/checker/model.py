@@ -257,8 +257,7 @@ def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str
     for name, (value, loc) in config.constants.items():
         sym = scope.lookup(name)
         if sym is None:
-            raise TlaError("config", f"In the configuration file, the identifier {name} does not appear in the "
-                           f"specification.", loc)
+            continue  # TLC ignores values for names the spec does not declare (r1 = r1)
         if isinstance(sym, ConstSym):
             values[name] = value
         else:

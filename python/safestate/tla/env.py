@@ -98,8 +98,8 @@ class Env:
     # Compiling the initial predicate: unprimed variables are the state being built.
     init_mode: bool = False
 
-    def bind(self, **bindings: Local) -> "Env":
-        return replace(self, locals={**self.locals, **bindings})
+    def bind(env, **bindings: Local) -> "Env":  # noqa: N805 - a TLA+ name may be `self`
+        return replace(env, locals={**env.locals, **bindings})
 
     def bind_all(self, bindings: dict[str, Local]) -> "Env":
         return replace(self, locals={**self.locals, **bindings})
