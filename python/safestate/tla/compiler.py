@@ -1410,14 +1410,17 @@ def all_names(e: Any) -> set[str]:
     def walk(x: Any) -> None:
         if isinstance(x, (A.Name, A.Apply)):
             out.add(x.name)
-        if isinstance(x, A.Let):
-            for d in x.defs:
-                if isinstance(d, A.OpDef):
-                    walk(d.body)
-        for c in _children(x):
+        for c in _subterms(x):
             walk(c)
     walk(e)
     return out
+
+
+def _subterms(e: Any) -> list:
+    """The children of `e`, and the bodies of its LET definitions."""
+    if isinstance(e, A.Let):
+        return [d.body for d in e.defs if isinstance(d, A.OpDef)] + _children(e)
+    return _children(e)
 
 
 def primed_names(body: A.Expr) -> frozenset[str]:
@@ -1428,27 +1431,13 @@ def primed_names(body: A.Expr) -> frozenset[str]:
         return hit[1]
     out: set[str] = set()
 
-    def names(e: Any) -> None:
-        if isinstance(e, (A.Name, A.Apply)):
-            out.add(e.name)
-        if isinstance(e, A.Let):
-            for d in e.defs:
-                if isinstance(d, A.OpDef):
-                    names(d.body)
-        for c in _children(e):
-            names(c)
-
     def walk(e: Any) -> None:
         if isinstance(e, A.Prime) or (isinstance(e, A.Unary) and e.op in ("UNCHANGED", "ENABLED")):
-            names(e)
+            out.update(all_names(e))
             return
         if isinstance(e, A.StepAction):
-            names(e.sub)
-        if isinstance(e, A.Let):
-            for d in e.defs:
-                if isinstance(d, A.OpDef):
-                    walk(d.body)
-        for c in _children(e):
+            out.update(all_names(e.sub))
+        for c in _subterms(e):
             walk(c)
     walk(body)
     result = frozenset(out)
