@@ -817,7 +817,7 @@ class Compiler:
                 local.env = env  # may call itself (RECURSIVE)
                 continue
             body_expr: A.Expr = A.FnLit(d.loc, d.fn_bounds, d.body) if d.fn_bounds else d.body
-            if d.fn_bounds and self._mentions(d.body, d.name):
+            if d.fn_bounds and d.name in all_names(d.body):
                 env, reset = self._let_recursive_function(d, env)
                 resets.append(reset)
                 continue
@@ -871,12 +871,6 @@ class Compiler:
             return f.materialize()
         holder.append(_guard(make, loc))
         return env, slot
-
-    @staticmethod
-    def _mentions(e: Any, name: str) -> bool:
-        if isinstance(e, (A.Name, A.Apply)) and e.name == name:
-            return True
-        return any(Compiler._mentions(c, name) for c in _children(e))
 
     # ---------------------------------------------------------------- quantifiers
     def bind_bounds(self, bounds: list[A.Bound], env: Env) -> tuple[Env, list[tuple[Code, list[int], bool, Loc]]]:
