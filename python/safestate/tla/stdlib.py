@@ -456,11 +456,17 @@ def subseteq(a: Value, b: Value) -> bool:
     return all(member(x, b) for x in iter_set(a))
 
 
-def union(s: Value) -> frozenset:
-    out: set = set()
-    for x in iter_set(s):
+def union(s: Value) -> Value:
+    parts = list(s) if type(s) is frozenset else list(iter_set(s))  # order is irrelevant here
+    for x in parts:
         if not is_set(x):
             raise EvalError(f"Attempted to apply UNION to a set containing the non-set {fmt(x)}")
+    if any(_infinite(x) for x in parts):
+        # UNION {[D -> Int]}: only membership can be tested, as TLC's UnionValue.
+        return FilteredSet(lambda v: any(member(v, x) for x in parts), "UNION {" + ", ".join(
+            x.describe() if isinstance(x, LazySet) else fmt(x) for x in parts) + "}")
+    out: set = set()
+    for x in parts:
         out |= as_set(x)
     return frozenset(out)
 
