@@ -123,10 +123,17 @@ def _run(args: argparse.Namespace, start: float) -> int:
 
 def _itf(model: Model, result: CheckResult) -> dict:
     assert result.trace is not None
-    desc = {"safety failure": f"invariant {result.violated} violated", "deadlock failure": "deadlock"}.get(
+    desc = {"safety failure": f"invariant {result.violated} violated", "deadlock failure": "deadlock",
+            "liveness failure": f"temporal property {result.violated} violated (a lasso)",
+            "action property failure": f"action property {result.violated} violated",
+            "init property failure": f"property {result.violated} violated by the initial state"}.get(
         result.result, "behaviour up to an evaluation error")
+    loop = None
+    if result.loop is not None:
+        # The state after the last one: trace[loop], or the last one again when it stutters.
+        loop = result.loop if result.loop_step is not None else len(result.trace) - 1
     return trace_to_itf(model.variables, [(s.state, s.action, s.params) for s in result.trace],
-                        os.path.basename(model.module.file), desc)
+                        os.path.basename(model.module.file), desc, loop)
 
 
 def _summary(model: Model, r: CheckResult, itf: dict | None, seconds: float) -> dict[str, Any]:
@@ -140,8 +147,25 @@ def _summary(model: Model, r: CheckResult, itf: dict | None, seconds: float) -> 
         "left_on_queue": r.left_on_queue,
     }
     if model.properties:
-        out["warnings"] = [f"liveness properties not supported yet, not checked: {', '.join(model.properties)}"]
+        out["properties"] = _property_summary(model, r)
     return out
+
+
+def _property_summary(model: Model, r: CheckResult) -> dict[str, Any]:
+    """The PROPERTY result: satisfied, violated (with the lasso's shape) or not
+    checked (the safety search stopped first)."""
+    violated = r.result in ("liveness failure", "action property failure", "init property failure")
+    if violated:
+        verdict = "violated"
+    elif r.result == "success":
+        verdict = "satisfied"
+    else:
+        verdict = "not checked"
+    lasso = None
+    if r.loop is not None and r.trace is not None:
+        lasso = {"length": len(r.trace), "loop": r.loop, "stuttering": r.loop_step is None}
+    names = r.violated_properties or ([r.violated] if violated else [])
+    return {"names": list(model.properties), "result": verdict, "violated": names, "lasso": lasso}
 
 
 def _second_opinion(args: argparse.Namespace, summary: dict, code: int) -> int:

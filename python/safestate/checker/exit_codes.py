@@ -29,4 +29,8 @@ BY_RESULT = {
     "success": SUCCESS,
     "safety failure": VIOLATION_SAFETY,
     "deadlock failure": VIOLATION_DEADLOCK,
+    # TLC exits with VIOLATION_LIVENESS for every kind of PROPERTY violation.
+    "liveness failure": VIOLATION_LIVENESS,
+    "action property failure": VIOLATION_LIVENESS,
+    "init property failure": VIOLATION_LIVENESS,
 }

@@ -70,6 +70,13 @@ class CheckResult:
     initial: list[int] | None = None
     edges: list[Edge] | None = None
     warnings: list[str] = field(default_factory=list)
+    # A liveness counterexample is a lasso: after the last state of `trace` the
+    # behaviour takes `loop_step` back to trace[loop], or stutters forever when
+    # `loop_step` is None.
+    loop: int | None = None
+    loop_step: Step | None = None
+    # Every property the liveness counterexample violates, in .cfg order (TLC names them all).
+    violated_properties: list[str] | None = None
 
 
 class _Stop(Exception):
@@ -119,6 +126,10 @@ class Explorer:
         self.next_check = 0
         self.last_progress = time.monotonic()
         self.head = 0
+        # The graph's steps as state ids, kept for liveness checking (compact arrays).
+        self.live_edges = bool(model.liveness)
+        self.edge_src = array("i")
+        self.edge_dst = array("i")
 
     # ---------------------------------------------------------------- bookkeeping
     def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
@@ -157,7 +168,7 @@ class Explorer:
             # As TLC's queue: the state being expanded (`self.head`) has been dequeued,
             # and a new successor violating an invariant is never enqueued.
             left -= 1
-            if result == "safety failure" and extra is None:
+            if result in ("safety failure", "action property failure") and extra is None:
                 left -= 1
         self.outcome = CheckResult(result, len(self.states), self.generated,
                                    self.max_level if self.generated else 0,
@@ -245,6 +256,12 @@ class Explorer:
                                                len(self.states), inv.name, [Step(st, "Init", {})],
                                                initial_violation=True)
                     raise _Stop()
+            for prop in m.init_properties:
+                if not m.holds(prop, st):
+                    self.outcome = CheckResult("init property failure", len(self.states), self.generated, 1,
+                                               len(self.states), prop.name, [Step(st, "Init", {})],
+                                               initial_violation=True)
+                    raise _Stop()
 
     def _expand_all(self) -> None:
         m = self.m
@@ -264,6 +281,7 @@ class Explorer:
         constrained = bool(m.constraints or m.action_constraints)
         keyed = m.view is not None or m.symmetry is not None
         graph = self.graph
+        action_properties = m.action_properties
         UNSET_ = _UNSET
         runtime = RUNTIME if RUNTIME.used else None
         if runtime is not None:
@@ -289,6 +307,9 @@ class Explorer:
                         runtime.pending = 1
                 else:
                     new = False
+            if self.live_edges and in_model:
+                self.edge_src.append(i)
+                self.edge_dst.append(idx)
             if graph and in_model:
                 self.edges.append(Edge(i, idx, m.leaves[leaf].name, m.leaf_params(leaf, L)))
             if new:
@@ -298,6 +319,8 @@ class Explorer:
                             self._finish("safety failure", inv.name, idx)
                         lf = m.leaves[leaf]
                         self._finish("safety failure", inv.name, i, Step(st, lf.name, m.leaf_params(leaf, L)))
+            if action_properties:
+                self._check_action_properties(i, cur, st, idx if new else -1, leaf, lambda: m.leaf_params(leaf, L))
             if runtime is not None:
                 runtime.pending, runtime.level = 0, next_level - 1
         try:
@@ -310,6 +333,16 @@ class Explorer:
             raise
         if self.generated == before and m.check_deadlock:
             self._finish("deadlock failure", None, i)
+
+    def _check_action_properties(self, i: int, cur: tuple, st: tuple, added: int, leaf: int,
+                                 params: Callable[[], dict]) -> None:
+        """TLC checks [][A]_v properties on every step, seen and constraint-violating ones too.
+        `added` is the id of `st` if this step added it to the graph (it is not queued then)."""
+        for prop in self.m.action_properties:
+            if not self.m.holds(prop, cur, st):
+                if added >= 0:
+                    self._finish("action property failure", prop.name, added)
+                self._finish("action property failure", prop.name, i, Step(st, self.m.leaves[leaf].name, params()))
 
 
 from ..tla.env import UNSET as _UNSET  # noqa: E402
@@ -325,6 +358,9 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
     result = explorer.run()
+    if result.result == "success" and model.liveness:
+        from .liveness_run import check_liveness
+        check_liveness(model, explorer, result)
     if result.result == "success" and model.postcondition is not None:
         _check_postcondition(model, result)
     result.seconds = time.monotonic() - start

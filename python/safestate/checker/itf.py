@@ -73,16 +73,20 @@ def state_from_itf(variables: list[str], obj: dict) -> tuple:
 
 
 def trace_to_itf(variables: list[str], steps: list[tuple[tuple, str, dict]], source: str,
-                 description: str) -> dict:
+                 description: str, loop: int | None = None) -> dict:
     """An ITF trace from (state, action, params) steps; #meta of each state carries
-    the action that produced it."""
+    the action that produced it.  A lasso (liveness counterexample) has `loop`: the
+    index of the state that follows the last one (the last itself when it stutters)."""
     states = []
     for i, (st, action, params) in enumerate(steps):
         meta = {"index": i, "action": action, "params": {k: value_to_itf(v) for k, v in params.items()}}
         states.append(state_to_itf(variables, st, meta))
-    return {
+    out = {
         "#meta": {"format": "ITF", "format-description": "https://apalache-mc.org/docs/adr/015adr-trace.html",
                   "source": source, "description": description},
         "vars": list(variables),
         "states": states,
     }
+    if loop is not None:
+        out["loop"] = loop
+    return out

@@ -34,6 +34,7 @@ from ..tla.tlcget import RUNTIME
 from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order
 from .cfg import Config, ConfigEntry, parse_config
 from .itf import state_from_itf, state_to_itf
+from .temporal import Fairness, Obligation, TemporalCompiler
 
 
 @dataclass
@@ -62,6 +63,12 @@ class Model:
     constraints: list[Named] = field(default_factory=list)
     action_constraints: list[Named] = field(default_factory=list)
     properties: list[str] = field(default_factory=list)
+    # From the specification and the PROPERTY conjuncts (see temporal.py).
+    fairness_exprs: list[A.Expr] = field(default_factory=list)
+    fairness: list[Fairness] = field(default_factory=list)
+    init_properties: list[Named] = field(default_factory=list)
+    action_properties: list[Named] = field(default_factory=list)
+    liveness: list[Obligation] = field(default_factory=list)
     view: Named | None = None
     # ALIAS: the record shown instead of the variables in a text counterexample.
     alias: Named | None = None
@@ -232,8 +239,7 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
     model.action_constraints = [_predicate(model, e, "action constraint", action=True)
                                 for e in config.action_constraints]
     model.properties = [p.name for p in config.properties]
-    for p in config.properties:
-        _lookup_def(model, p, "property")
+    _compile_properties(model)
     if config.view is not None:
         model.view = _predicate(model, config.view, "view", boolean=False)
     if config.symmetry is not None:
@@ -248,6 +254,27 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
                                    f"only constant-level postconditions (TLCGet, ...) are supported",
                                    config.postcondition.loc)
     return model
+
+
+def _compile_properties(model: Model) -> None:
+    """Sort the PROPERTY conjuncts as TLC does: state predicates are checked on the
+    initial states, []P joins the invariants, [][A]_v is checked on every step and
+    the rest is liveness, checked on the state graph under the spec's fairness."""
+    tc = TemporalCompiler(model)
+    if model.fairness_exprs:
+        model.fairness = tc.fairness(A.And(model.fairness_exprs[0].loc, model.fairness_exprs))
+    for entry in model.config.properties:
+        sym = _lookup_def(model, entry, "property")
+        for ob in tc.obligations(entry.name, A.Name(sym.defn.loc, entry.name), model.scope):
+            named = Named(entry.name, ob.p.loc, ob.p)
+            if ob.kind == "always":
+                model.invariants.append(Named(entry.name, ob.p.loc, lambda s, t, p=ob.p: p(s)))
+            elif ob.kind == "init":
+                model.init_properties.append(Named(entry.name, ob.p.loc, lambda s, t, p=ob.p: p(s)))
+            elif ob.kind == "action":
+                model.action_properties.append(named)
+            else:
+                model.liveness.append(ob)
 
 
 def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str, Value], dict[str, Any]]:
@@ -392,6 +419,7 @@ def _compile_behaviour(model: Model) -> None:
 def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
     """SPECIFICATION Spec with Spec == Init /\\ [][Next]_vars /\\ fairness."""
     sym = _lookup_def(model, entry, "specification")
+    tc = TemporalCompiler(model)
     inits: list[A.Expr] = []
     nexts: list[A.Expr] = []
 
@@ -402,7 +430,7 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
             return
         if isinstance(e, A.Name) and depth < 20:
             s = model.scope.lookup(e.name)
-            if isinstance(s, DefSym) and not s.defn.params and _is_temporal(s.defn.body, model, 0):
+            if isinstance(s, DefSym) and not s.defn.params and tc.is_temporal(s.defn.body, s.scope):
                 visit(s.defn.body, depth + 1)
                 return
         if isinstance(e, A.Unary) and e.op == "[]":
@@ -410,10 +438,11 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
                 nexts.append(e.arg.action)
                 return
             raise UnsupportedError("only [][Next]_vars is supported as the box formula of a specification", e.loc)
-        if _is_fairness(e, model, 0):
-            return  # fairness (also \\A p \\in S : WF_v(A(p))) does not affect safety checking
-        if _is_temporal(e, model, 0):
-            raise UnsupportedError("unsupported temporal formula in the specification", e.loc)
+        if tc.is_temporal(e, model.scope):
+            # Fairness (checked by TemporalCompiler.fairness, which refuses anything else):
+            # it does not affect safety checking.
+            model.fairness_exprs.append(e)
+            return
         inits.append(e)
 
     visit(sym.defn.body, 0)
@@ -425,35 +454,6 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
         raise TlaError("config", f"The specification {entry.name} has no initial predicate.", sym.defn.loc)
     init = inits[0] if len(inits) == 1 else A.And(inits[0].loc, inits)
     return init, nexts[0]
-
-
-def _is_fairness(e: Any, model: Model, depth: int) -> bool:
-    """WF/SF, or a conjunction or quantification of them (possibly through definitions)."""
-    if isinstance(e, A.Fairness):
-        return True
-    if isinstance(e, A.Quant):
-        return _is_fairness(e.body, model, depth)
-    if isinstance(e, A.And):
-        return all(_is_fairness(i, model, depth) for i in e.items)
-    if isinstance(e, (A.Name, A.Apply)) and depth < 20:
-        s = model.scope.lookup(e.name)
-        if isinstance(s, DefSym):
-            return _is_fairness(s.defn.body, model, depth + 1)
-    return False
-
-
-def _is_temporal(e: Any, model: Model, depth: int) -> bool:
-    if isinstance(e, A.Unary) and e.op in ("[]", "<>"):
-        return True
-    if isinstance(e, (A.Fairness, A.UnboundedQuant)) or (isinstance(e, A.Binary) and e.op == "~>"):
-        return True
-    if isinstance(e, A.And):
-        return any(_is_temporal(i, model, depth) for i in e.items)
-    if isinstance(e, A.Name) and depth < 20:
-        s = model.scope.lookup(e.name)
-        if isinstance(s, DefSym) and not s.defn.params:
-            return _is_temporal(s.defn.body, model, depth + 1)
-    return False
 
 
 def _symmetry(model: Model, entry: ConfigEntry) -> list[dict]:

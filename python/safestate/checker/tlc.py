@@ -19,6 +19,11 @@ class TlcSummary:
     depth: int | None
     violated: str | None
     exit_code: int
+    # A liveness counterexample: {"length": states printed, "loop": 0-based index the
+    # last state goes back to, "stuttering": bool}.
+    lasso: dict | None = None
+    # Every property TLC names as violated by its liveness counterexample.
+    violated_properties: list[str] | None = None
 
 
 def tlc_jar() -> str | None:
@@ -44,17 +49,43 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     stats = re.findall(r"^(\d+) states generated, (\d+) distinct states found", out, re.M)
     depth = re.findall(r"^The depth of the complete state graph search is (\d+)", out, re.M)
     viol = re.search(r"^Error: Invariant (\S+) is violated", out, re.M)
+    temporal = re.search(r"^Error: Temporal propert(?:y|ies) (\w+)", out, re.M)
+    action = re.search(r"^Error: Action property (\S+) is violated", out, re.M)
+    initial = re.search(r"^Error: Property (\S+) is violated by the initial state", out, re.M)
     if "Model checking completed. No error has been found." in out:
         result = "success"
     elif viol:
         result = "safety failure"
+    elif temporal or action or initial:
+        result = ("liveness failure" if temporal else "action property failure" if action
+                  else "init property failure")
+        viol = temporal or action or initial
     elif "Error: Deadlock reached." in out:
         result = "deadlock failure"
     else:
         result = "error"
     return TlcSummary(result,
                       int(stats[-1][1]) if stats else None, int(stats[-1][0]) if stats else None,
-                      int(depth[-1]) if depth else None, viol.group(1) if viol else None, exit_code)
+                      int(depth[-1]) if depth else None, viol.group(1) if viol else None, exit_code,
+                      _lasso(out) if temporal else None, _temporal_names(out) if temporal else None)
+
+
+def _temporal_names(out: str) -> list[str]:
+    m = re.search(r"^Error: Temporal propert(?:y (\w+) was|ies (.+) were) violated", out, re.M)
+    if m is None:
+        return []
+    return [m.group(1)] if m.group(1) else re.split(r",? and |, ", m.group(2))
+
+
+def _lasso(out: str) -> dict | None:
+    states = re.findall(r"^State (\d+): <", out, re.M)
+    back = re.search(r"^Back to state (\d+)", out, re.M)
+    stutter = re.search(r"^State (\d+): Stuttering", out, re.M)
+    if not states or not (back or stutter):
+        return None
+    length = int(states[-1])
+    loop = int(back.group(1)) - 1 if back else length - 1
+    return {"length": length, "loop": loop, "stuttering": back is None}
 
 
 def compare(ours: dict, tlc: TlcSummary) -> list[str]:

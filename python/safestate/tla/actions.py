@@ -566,6 +566,9 @@ def compile_enabled(compiler: Compiler, arg: A.Expr, env: Env) -> Code:
         try:
             act(s, t2, L)
         except _Found:
+            # One shared instance: each raise would chain its traceback (and the frames
+            # it holds) onto the previous ones.
+            _FOUND.__traceback__ = None
             return True
         return False
     return enabled

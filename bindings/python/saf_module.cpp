@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: Apache-2.0
+// safestate._saf: drives the C++ Safety service (safestate::saf) from Python, for the
+// conformance adapter (docs/design/safety-service.md §12). observe() returns the model's
+// variables under the model's names with the model's string values.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "safestate/saf/safety_service.hpp"
+
+namespace py = pybind11;
+using namespace safestate::saf;  // NOLINT
+
+namespace {
+
+/// Report Control holder used for the model's control = "OTHER" (design §12).
+constexpr std::uint32_t kOtherComponentId = 0x0009'0909;
+
+py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
+
+py::bytes to_bytes(const Encoded& e) {
+  return py::bytes(reinterpret_cast<const char*>(e.bytes.data()), e.size);
+}
+
+std::string field(const py::dict& inbox, const char* key) {
+  if (!inbox.contains(key)) throw py::key_error(std::string("inbox has no field '") + key + "'");
+  const py::handle v = inbox[key];
+  if (!py::isinstance<py::str>(v)) throw py::type_error(std::string("inbox.") + key + " must be a str");
+  return v.cast<std::string>();
+}
+
+[[noreturn]] void bad(const char* key, const std::string& value, const char* allowed) {
+  throw py::value_error(std::string("inbox.") + key + ": unknown value '" + value + "' (one of " + allowed + ")");
+}
+
+/// The model's inbox record -> the datagrams of one cycle, in the order of design §12.
+std::vector<Encoded> encode_inbox(const py::dict& inbox) {
+  std::vector<Encoded> out;
+  const std::string estop = field(inbox, "estop");
+  if (estop == "SET" || estop == "CLEAR") {
+    out.push_back(encode(Message::set_estop(estop == "SET")));
+  } else if (estop != "NONE") {
+    bad("estop", estop, "NONE, CLEAR, SET");
+  }
+  const std::string health = field(inbox, "health");
+  if (health == "NORMAL") out.push_back(encode(Message::report_health(Health::Normal)));
+  else if (health == "WARNING") out.push_back(encode(Message::report_health(Health::Warning)));
+  else if (health == "ERROR") out.push_back(encode(Message::report_health(Health::Error)));
+  else if (health == "FATAL") out.push_back(encode(Message::report_health(Health::Fatal)));
+  else if (health != "NONE") bad("health", health, "NONE, NORMAL, WARNING, ERROR, FATAL");
+  const std::string control = field(inbox, "control");
+  if (control == "ACCEPTED") out.push_back(encode(Message::confirm_control(ControlResponse::Accepted)));
+  else if (control == "REFUSED") out.push_back(encode(Message::confirm_control(ControlResponse::NotAvailable)));
+  else if (control == "OTHER") out.push_back(encode(Message::report_control(kOtherComponentId, 255)));
+  else if (control != "NONE") bad("control", control, "NONE, ACCEPTED, REFUSED, OTHER");
+  return out;
+}
+
+py::dict observe(const SafetyService& s) {
+  const Observable& o = s.observe();
+  py::dict d;
+  d["state"] = str(to_string(o.state));
+  d["estop"] = str(to_string(o.estop));
+  d["estop_age"] = o.estop_age;
+  d["health"] = str(to_string(o.health));
+  d["health_age"] = o.health_age;
+  d["control"] = str(to_string(o.control));
+  d["control_age"] = o.control_age;
+  d["out_request"] = str(to_string(o.out_request));
+  d["out_set_state"] = str(to_string(o.out_set_state));
+  return d;
+}
+
+py::dict result_dict(const CycleResult& r) {
+  py::dict d;
+  d["state_row"] = str(r.state_row);
+  d["control_row"] = str(r.control_row);
+  py::list out;
+  for (std::size_t i = 0; i < r.outbox.count; ++i) out.append(to_bytes(encode(r.outbox.messages[i])));
+  d["outbox"] = out;
+  return d;
+}
+
+CycleResult cycle_raw(SafetyService& s, const std::vector<py::bytes>& datagrams, bool hardware_fault) {
+  if (datagrams.size() > kMaxInboundPerCycle) {
+    throw py::value_error("at most " + std::to_string(kMaxInboundPerCycle) + " datagrams per cycle");
+  }
+  InboundBatch batch{};
+  for (const py::bytes& b : datagrams) {
+    const std::string_view v = b;
+    (void)batch.push(reinterpret_cast<const std::uint8_t*>(v.data()), v.size());
+  }
+  return s.cycle(batch, hardware_fault);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_saf, m) {
+  m.doc() = "The C++ Safety service (SAF-01..04), driven one scan cycle at a time.";
+  m.attr("MAX_INBOUND_PER_CYCLE") = kMaxInboundPerCycle;
+  m.attr("COMPONENT_ID") = kSafetyComponentId;
+
+  m.def("encode_inbox", [](const py::dict& inbox) {
+    py::list out;
+    for (const Encoded& e : encode_inbox(inbox)) out.append(to_bytes(e));
+    return out;
+  }, py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded.");
+
+  m.def("decode_error", [](const py::bytes& b) {
+    const std::string_view v = b;
+    return str(to_string(decode(reinterpret_cast<const std::uint8_t*>(v.data()), v.size()).error));
+  }, py::arg("datagram"), "NONE for a well-formed datagram, else the reject reason.");
+
+  py::class_<SafetyService>(m, "SafetyService")
+      .def(py::init([](std::uint32_t estop_timeout_cycles, std::uint32_t report_data_timeout_cycles,
+                       std::uint32_t message_interval_cycles, std::uint32_t check_interval_cycles,
+                       std::uint8_t authority_code) {
+             if (estop_timeout_cycles == 0 || report_data_timeout_cycles == 0 ||
+                 message_interval_cycles == 0 || check_interval_cycles == 0) {
+               throw py::value_error("every timer must be at least 1 cycle");
+             }
+             return SafetyService(Timing{estop_timeout_cycles, report_data_timeout_cycles,
+                                         message_interval_cycles, check_interval_cycles},
+                                  authority_code);
+           }),
+           py::arg("estop_timeout_cycles"), py::arg("report_data_timeout_cycles"),
+           py::arg("message_interval_cycles"), py::arg("check_interval_cycles") = 20,
+           py::arg("authority_code") = 225)
+      .def("cycle", [](SafetyService& s, const py::dict& inbox) {
+             const std::vector<Encoded> encoded = encode_inbox(inbox);
+             InboundBatch batch{};
+             for (const Encoded& e : encoded) (void)batch.push(e);
+             const py::handle hw = inbox.contains("hw_fault") ? inbox["hw_fault"] : py::handle(Py_False);
+             if (!py::isinstance<py::bool_>(hw)) throw py::type_error("inbox.hw_fault must be a bool");
+             return result_dict(s.cycle(batch, hw.cast<bool>()));
+           }, py::arg("inbox"), "One cycle with the model's inbox record (encoded per design §12).")
+      .def("cycle_raw", [](SafetyService& s, const std::vector<py::bytes>& datagrams, bool hardware_fault) {
+             return result_dict(cycle_raw(s, datagrams, hardware_fault));
+           }, py::arg("datagrams"), py::arg("hardware_fault") = false,
+           "One cycle with raw datagrams (the codec path; garbage allowed).")
+      .def("copy", [](const SafetyService& s) { return SafetyService(s); },
+           "An independent copy (the service is plain data): replay branches from one state.")
+      .def("observe", &observe, "The model's variables: state, estop, estop_age, ...")
+      .def("diagnostics", [](const SafetyService& s) {
+             const Diagnostics& d = s.diagnostics();
+             py::dict out;
+             out["cycles"] = d.cycles;
+             out["accepted"] = d.accepted;
+             py::dict rej;
+             for (std::size_t i = 1; i < kDecodeErrorCount; ++i) {
+               rej[str(to_string(static_cast<DecodeError>(i)))] = d.rejected[i];
+             }
+             out["rejected"] = rej;
+             return out;
+           });
+}

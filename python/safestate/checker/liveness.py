@@ -1,0 +1,380 @@
+"""Liveness checking on the explored state graph, under weak and strong fairness.
+
+Each liveness conjunct is checked through its negation, which for the supported
+forms is "eventually the behaviour enters a *tail* that it never leaves":
+
+=============  ==========================  =====================  ==================
+property       the tail starts at a state  every tail state       infinitely often
+=============  ==========================  =====================  ==================
+``<>P``        initial, with ~P            satisfies ~P           -
+``P ~> Q``     with P /\\ ~Q               satisfies ~Q           -
+``[]<>P``      with ~P                     satisfies ~P           -
+``<>[]P``      any                         any                    a state with ~P
+``[]<><<A>>_v``  any                       no <<A>>_v step        -
+``WF_v(A)``    with ENABLED <<A>>_v        ENABLED <<A>>_v,       -
+                                           no <<A>>_v step
+``SF_v(A)``    any                         no <<A>>_v step        ENABLED <<A>>_v
+=============  ==========================  =====================  ==================
+
+The behaviour graph is the product of the state graph with this two-phase
+automaton (phase 0: before the tail, phase 1: in it).  As TLC does, every state
+has a stuttering self-loop, so a behaviour may end by stuttering.  A counterexample
+is a strongly connected component (iterative Tarjan, `scc.py`) of phase 1 that is
+*fair*: every WF action that is enabled in all its states is taken in it, and
+every SF action that is enabled in one of its states is taken in it (states where
+an untaken SF action is enabled are removed and the rest split again, as in
+Emerson-Lei's algorithm).  "Taken" means an ``<<A>>_v`` step between two states of
+the component.
+
+The counterexample is a lasso: the shortest prefix to a fair component (0-1 BFS
+over the product), then a cycle inside it through the steps and states fairness
+needs (or stuttering in one state when it needs none); among the fair components
+the one giving the fewest states is taken.
+"""
+
+from __future__ import annotations
+
+from array import array
+from collections import deque
+from dataclasses import dataclass
+from typing import Callable, Iterable
+
+from ..tla.errors import TlaError
+from .scc import strongly_connected
+from .temporal import Fairness, Obligation
+
+
+@dataclass
+class Lasso:
+    """A behaviour: `nodes` in order, then back to ``nodes[loop]`` (or stuttering in
+    the last state when `stuttering`)."""
+
+    nodes: list[int]
+    loop: int
+    stuttering: bool
+
+
+class StateGraph:
+    """The explored graph in compressed rows: successors of v are
+    ``targets[offsets[v]:offsets[v + 1]]`` (distinct, self-loops dropped: every
+    state stutters anyway)."""
+
+    def __init__(self, n: int, src: array, dst: array) -> None:
+        self.n = n
+        self.offsets = array("q", [0]) * (n + 1)
+        self.targets = array("i")
+        # The search expands states in order, so the steps come grouped by source.
+        i, m = 0, len(src)
+        for v in range(n):
+            row: set[int] = set()
+            while i < m and src[i] == v:
+                w = dst[i]
+                i += 1
+                if w != v and w not in row:
+                    row.add(w)
+                    self.targets.append(w)
+            self.offsets[v + 1] = len(self.targets)
+        if i != m:
+            raise TlaError("internal", "liveness: the steps of the state graph are not grouped by source")
+
+    def succ(self, v: int) -> Iterable[int]:
+        return self.targets[self.offsets[v]:self.offsets[v + 1]]
+
+
+class LivenessChecker:
+    def __init__(self, graph: StateGraph, states: list[tuple], initial: list[int],
+                 fairness: list[Fairness], check_memory: Callable[[], None]) -> None:
+        self.check_memory = check_memory
+        self.g = graph
+        self.states = states
+        self.initial = initial
+        self.fairness = fairness
+        # ENABLED cache per fairness conjunct: 0 unknown, 1 disabled, 2 enabled.
+        self._enabled = [bytearray(graph.n) for _ in fairness]
+        # The steps a tail may take: all, or those of the current property's `forbid`.
+        self._forbid: Callable[[tuple, tuple], bool] | None = None
+        self._rows: dict[int, list[int]] = {}
+
+    def tail_succ(self, v: int) -> Iterable[int]:
+        """Successors of v by steps a tail may take (stuttering is always allowed)."""
+        forbid = self._forbid
+        if forbid is None:
+            return self.g.succ(v)
+        row = self._rows.get(v)
+        if row is None:
+            s = self.states[v]
+            row = self._rows[v] = [w for w in self.g.succ(v) if not forbid(s, self.states[w])]
+        return row
+
+    def enabled(self, fi: int, v: int) -> bool:
+        c = self._enabled[fi]
+        if not c[v]:
+            c[v] = 2 if self.fairness[fi].enabled(self.states[v]) else 1
+        return c[v] == 2
+
+    def taken_in(self, fi: int, comp: list[int], inside: set[int]) -> tuple[int, int] | None:
+        """A step of the component that is an <<A>>_v step of fairness conjunct fi."""
+        taken = self.fairness[fi].taken
+        for u in comp:
+            for w in self.tail_succ(u):
+                if w in inside and taken(self.states[u], self.states[w]):
+                    return u, w
+        return None
+
+    # ------------------------------------------------------------------ search
+    def counterexample(self, ob: Obligation) -> Lasso | None:
+        n = self.g.n
+        self._forbid = ob.forbid
+        self._rows = {}
+        stay, start, visit = self._masks(ob)
+        dist, parent = self._product_bfs(ob, stay, start)
+        self.check_memory()
+        tail = [v for v in sorted(range(n), key=lambda v: dist[2 * v + 1]) if dist[2 * v + 1] >= 0]
+        in_tail = bytearray(n)
+        for v in tail:
+            in_tail[v] = 1
+        best: tuple[int, int, list[int]] | None = None
+        comps = strongly_connected(tail, self.tail_succ, in_tail.__getitem__, n)
+        self.check_memory()
+        for comp in comps:
+            found = self._fair_part(comp, visit)
+            if found is None:
+                continue
+            part, needs = found
+            entry = min(part, key=lambda v: dist[2 * v + 1])
+            if best is not None and dist[2 * entry + 1] >= best[0]:
+                continue  # its lasso cannot be shorter
+            cycle = self._cycle(entry, part, needs)
+            length = dist[2 * entry + 1] + len(cycle)
+            if best is None or length < best[0]:
+                best = (length, entry, cycle)
+        if best is None:
+            return None
+        _, entry, cycle = best
+        prefix = self._path_to(2 * entry + 1, parent)
+        if not cycle:
+            return Lasso(prefix, len(prefix) - 1, True)
+        return Lasso(prefix + cycle, len(prefix) - 1, False)
+
+    def _masks(self, ob: Obligation) -> tuple[bytearray, bytearray, bytearray | None]:
+        n = self.g.n
+        stay = bytearray(n)
+        start = bytearray(n)
+        visit = None
+        p, q, states = ob.p, ob.q, self.states
+        for v in range(n):
+            s = states[v]
+            if ob.kind in ("stable", "sf", "infinitely_step"):
+                stay[v] = start[v] = 1
+            elif ob.kind == "wf":
+                stay[v] = start[v] = p(s)
+            elif ob.kind == "leadsto":
+                assert q is not None
+                stay[v] = not q(s)
+                start[v] = stay[v] and p(s)
+            else:
+                stay[v] = start[v] = not p(s)
+        if ob.kind == "stable":
+            visit = bytearray(not p(states[v]) for v in range(n))
+        elif ob.kind == "sf":
+            visit = bytearray(p(states[v]) for v in range(n))
+        return stay, start, visit
+
+    def _product_bfs(self, ob: Obligation, stay: bytearray, start: bytearray) -> tuple[array, array]:
+        """0-1 BFS over (state, phase) nodes 2v+phase; entering the tail costs nothing."""
+        n = self.g.n
+        dist = array("q", [-1]) * (2 * n)
+        parent = array("q", [-1]) * (2 * n)
+        dq: deque[int] = deque()
+        for v in self.initial:
+            node = 2 * v + 1 if ob.kind == "eventually" else 2 * v
+            if ob.kind == "eventually" and not start[v]:
+                continue
+            if dist[node] < 0:
+                dist[node] = 0
+                dq.append(node)
+        done = bytearray(2 * n)
+        while dq:
+            node = dq.popleft()
+            if done[node]:
+                continue
+            done[node] = 1
+            v, phase = divmod(node, 2)
+            if phase == 0 and start[v] and (dist[node + 1] < 0 or dist[node + 1] > dist[node]):
+                dist[node + 1] = dist[node]
+                parent[node + 1] = node
+                dq.appendleft(node + 1)
+            for w in (self.tail_succ(v) if phase == 1 else self.g.succ(v)):
+                if phase == 1 and not stay[w]:
+                    continue
+                nxt = 2 * w + phase
+                if dist[nxt] < 0 or dist[nxt] > dist[node] + 1:
+                    dist[nxt] = dist[node] + 1
+                    parent[nxt] = node
+                    dq.append(nxt)
+        return dist, parent
+
+    def _path_to(self, node: int, parent: array) -> list[int]:
+        path: list[int] = []
+        while node >= 0:
+            v = node // 2
+            if not path or path[-1] != v:
+                path.append(v)
+            node = parent[node]
+        path.reverse()
+        return path
+
+    def _fair_part(self, comp: list[int], visit: bytearray | None) -> tuple[list[int], list] | None:
+        """A fair sub-component of `comp` that visits `visit` states, with the steps
+        and states a fair cycle in it must pass through; None if there is none."""
+        work = [comp]
+        while work:
+            part = work.pop()
+            inside = set(part)
+            taken = [self.taken_in(fi, part, inside) for fi in range(len(self.fairness))]
+            bad = {v for fi, f in enumerate(self.fairness) if f.kind == "SF" and taken[fi] is None
+                   for v in part if self.enabled(fi, v)}
+            if bad:
+                rest = [v for v in part if v not in bad]
+                keep = set(rest)
+                work.extend(strongly_connected(rest, self.tail_succ, keep.__contains__, self.g.n))
+                continue
+            needs: list = []
+            fair = True
+            for fi, f in enumerate(self.fairness):
+                if f.kind == "WF":
+                    # Met by a step taking A or a state where A is disabled.  Taking A is
+                    # checked first: it is cheaper than ENABLED.
+                    if taken[fi] is None and all(self.enabled(fi, v) for v in part):
+                        fair = False
+                        break
+                    needs.append(("wf", fi))
+                elif taken[fi] is not None and any(self.enabled(fi, v) for v in part):
+                    needs.append(("step", fi))
+            if not fair:
+                continue
+            if visit is not None:
+                targets = [v for v in part if visit[v]]
+                if not targets:
+                    continue
+                needs.append(("state", targets))
+            return part, needs
+        return None
+
+    def _cycle(self, entry: int, part: list[int], needs: list) -> list[int]:
+        """States after `entry` on a cycle through `needs` inside `part`, ending just
+        before `entry` again; [] when stuttering in `entry` meets every need.  Greedy:
+        go to the nearest place that meets a need (the most needs among equals)."""
+        inside = set(part)
+        open_needs = [nd for nd in needs if not self._meets(nd, None, entry)]
+        cycle: list[int] = []
+        cur = entry
+        while open_needs:
+            path = self._nearest(cur, inside, open_needs)
+            for w in path:
+                open_needs = [nd for nd in open_needs if not self._meets(nd, cur, w)]
+                cur = w
+            cycle.extend(path)
+        if not cycle:
+            return []
+        full = cycle + self._bfs_path(cur, {entry}, inside)
+        return full[:-1]  # it ends with `entry`, where the lasso loops back to
+
+    def _meets(self, need: tuple, u: int | None, w: int) -> bool:
+        """Does arriving in state w (by the step u -> w, unless u is None) meet `need`?"""
+        kind, what = need
+        if kind == "state":
+            return w in what
+        if kind == "wf" and not self.enabled(what, w):
+            return True
+        return u is not None and self.fairness[what].taken(self.states[u], self.states[w])
+
+    def _nearest(self, src: int, inside: set[int], needs: list) -> list[int]:
+        """The shortest path from src (without it) whose last state or step meets a
+        need; among the shortest, one that meets the most."""
+        prev = {src: -1}
+        level = [src]
+        while level:
+            best: tuple[int, int] | None = None
+            best_score = 0
+            nxt: list[int] = []
+            for v in level:
+                for w in self.tail_succ(v):
+                    if w not in inside:
+                        continue
+                    score = sum(1 for nd in needs if self._meets(nd, v, w))
+                    if score > best_score:
+                        best, best_score = (v, w), score
+                    if w not in prev:
+                        prev[w] = v
+                        nxt.append(w)
+            if best is not None:
+                v, w = best
+                path = [w]
+                while v != src:
+                    path.append(v)
+                    v = prev[v]
+                path.reverse()
+                return path
+            level = nxt
+        raise TlaError("internal", "liveness: a need of a fair component is unreachable inside it")
+
+    def _bfs_path(self, src: int, goals: set[int], inside: set[int]) -> list[int]:
+        """Shortest path inside the component from src to a state of `goals`, without src."""
+        if src in goals:
+            return []
+        prev = {src: -1}
+        dq = deque([src])
+        while dq:
+            v = dq.popleft()
+            for w in self.tail_succ(v):
+                if w in inside and w not in prev:
+                    prev[w] = v
+                    if w in goals:
+                        path = [w]
+                        while prev[path[-1]] != src:
+                            path.append(prev[path[-1]])
+                        path.reverse()
+                        return path
+                    dq.append(w)
+        raise TlaError("internal", "liveness: no path inside a strongly connected component")
+
+
+def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], fairness: list[Fairness],
+                   obligations: list[Obligation],
+                   check_memory: Callable[[], None]) -> tuple[Obligation, Lasso] | None:
+    """The first liveness obligation (in .cfg order) with a fair counterexample."""
+    checker = LivenessChecker(graph, states, initial, fairness, check_memory)
+    for ob in obligations:
+        check_memory()
+        lasso = checker.counterexample(ob)
+        if lasso is not None:
+            return ob, lasso
+    return None
+
+
+def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) -> bool:
+    """Does the lasso (`states`, then back to states[loop], or stuttering in the last
+    state) violate the liveness obligation?  TLC names every property its
+    counterexample violates."""
+    cycle = states[loop:]
+    steps = [] if stutters else list(zip(cycle, cycle[1:] + cycle[:1]))
+    p, q = ob.p, ob.q
+    forbid = ob.forbid
+    if ob.kind == "eventually":
+        return not any(p(s) for s in states)
+    if ob.kind == "leadsto":
+        assert q is not None
+        later_q = any(q(s) for s in cycle)
+        return not later_q and any(p(s) and not any(q(x) for x in states[i:]) for i, s in enumerate(states))
+    if ob.kind == "infinitely":
+        return not any(p(s) for s in cycle)
+    if ob.kind == "stable":
+        return not all(p(s) for s in cycle)
+    assert forbid is not None
+    taken = any(forbid(s, t) for s, t in steps)
+    if ob.kind == "infinitely_step":
+        return not taken
+    if ob.kind == "wf":
+        return not taken and all(p(s) for s in cycle)
+    return not taken and any(p(s) for s in cycle)  # sf

@@ -1,0 +1,80 @@
+"""Runs the liveness check after a successful safety search and turns a
+counterexample lasso into the result's trace (with the action of every step)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..tla.errors import TlaError
+from .liveness import Lasso, StateGraph, find_violation, violated_on
+
+if TYPE_CHECKING:
+    from .explore import CheckResult, Explorer
+    from .model import Model
+
+
+def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> None:
+    """Check the model's liveness properties on the explored graph; on a violation
+    set `result` to a "liveness failure" with the lasso as its trace."""
+    from .explore import _rss_mb
+
+    def check_memory() -> None:
+        if _rss_mb() > explorer.max_memory_mb:
+            raise TlaError("memory", f"memory limit of {explorer.max_memory_mb} MB exceeded while checking "
+                           f"liveness on {len(explorer.states)} states; raise it with --max-memory or add a "
+                           f"state constraint")
+    try:
+        check_memory()
+        graph = StateGraph(len(explorer.states), explorer.edge_src, explorer.edge_dst)
+        check_memory()
+        found = find_violation(graph, explorer.states, explorer.initial, model.fairness, model.liveness,
+                               check_memory)
+    except TlaError as e:
+        result.result = "error"
+        result.error = e
+        return
+    if found is None:
+        return
+    ob, lasso = found
+    result.result = "liveness failure"
+    result.violated = ob.name
+    lasso_states = [explorer.states[v] for v in lasso.nodes]
+    names: list[str] = []
+    for other in model.liveness:
+        if other.name not in names and (other is ob or violated_on(other, lasso_states, lasso.loop,
+                                                                    lasso.stuttering)):
+            names.append(other.name)
+    result.violated_properties = names
+    steps = lasso_steps(model, explorer, lasso)
+    result.loop = lasso.loop
+    if not lasso.stuttering:
+        result.loop_step = steps.pop()
+    result.trace = steps
+
+
+def lasso_steps(model: Model, explorer: Explorer, lasso: Lasso) -> list:
+    """The lasso's states with the action of each step, followed (unless the lasso
+    stutters) by the step that closes the loop."""
+    from .explore import Step
+    states = explorer.states
+    nodes = lasso.nodes
+    steps = explorer.trace(nodes[0])
+    hops = list(zip(nodes, nodes[1:]))
+    if not lasso.stuttering:
+        hops.append((nodes[-1], nodes[lasso.loop]))
+    for u, v in hops:
+        action, params = _step_label(model, states[u], states[v])
+        steps.append(Step(states[v], action, params))
+    return steps
+
+
+def _step_label(model: Model, src: tuple, dst: tuple) -> tuple[str, dict]:
+    """The first (action, params) of Next, in TLC order, that goes from src to dst."""
+    want = model.key(dst)
+    found: list[tuple[str, dict]] = []
+
+    def on_succ(st: tuple, leaf: int, L: list) -> None:
+        if not found and (st == dst or model.key(st) == want):
+            found.append((model.leaves[leaf].name, model.leaf_params(leaf, L)))
+    model.run_next(src, on_succ)
+    return found[0] if found else (model.next_name, {})

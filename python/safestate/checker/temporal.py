@@ -1,0 +1,237 @@
+"""The temporal formulas of a model, in the forms the checker handles (as TLC's
+`SpecProcessor` sorts them):
+
+* the fairness conjuncts of the specification: ``WF_v(A)``, ``SF_v(A)``, their
+  conjunctions and ``\\A p \\in S : ...`` over them, through definitions with or
+  without parameters;
+* the conjuncts of each PROPERTY, with ``/\\``, definitions (also ``M!Op`` of a
+  non-parameterised instance) and bounded ``\\A`` expanded over their (constant) values:
+
+  - a state predicate ``P`` (checked on the initial states),
+  - ``[]P`` (an implied invariant, reported as "Invariant X is violated"),
+  - ``[][A]_v`` (an action property, checked on every transition),
+  - ``<>P``, ``P ~> Q``, ``[]<>P``, ``<>[]P``, ``[]<><<A>>_v``, ``WF_v(A)`` and
+    ``SF_v(A)`` (liveness, see `liveness.py`),
+
+  where P and Q are state predicates.  Any other temporal formula is refused with
+  an "unsupported" error at its position, never guessed at.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from ..tla import ast as A
+from ..tla.compiler import check_bool
+from ..tla.env import Env, Frame, SlotLocal
+from ..tla.errors import Loc, TlaError, UnsupportedError
+from ..tla.modules import DefSym, InstanceSym, Scope
+from ..tla.values import Value, as_set
+
+
+@dataclass
+class Pred:
+    """A compiled state predicate (``t`` is None) or action predicate over (s, t)."""
+
+    code: Callable[[Any, Any, list], Value]
+    base: list
+    loc: Loc
+
+    def __call__(self, s: tuple, t: tuple | None = None) -> bool:
+        v = self.code(s, t, self.base.copy())
+        if v is True or v is False:
+            return v
+        return check_bool(v, self.loc, "temporal formula")
+
+
+@dataclass
+class Fairness:
+    """``WF_v(A)`` / ``SF_v(A)`` for one value of its bound parameters."""
+
+    kind: str            # "WF" or "SF"
+    enabled: Pred        # ENABLED <<A>>_v, a state predicate
+    taken: Pred          # <<A>>_v, an action predicate
+    loc: Loc
+
+
+@dataclass
+class Obligation:
+    """One conjunct of a PROPERTY.
+
+    kind: "init" (pred on initial states), "always" ([]pred), "action" ([][pred]_v,
+    pred is the whole step predicate), or a liveness form "eventually" (<>p),
+    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p), "infinitely_step"
+    ([]<><<A>>_v), "wf" / "sf" (WF_v(A) / SF_v(A), p is ENABLED <<A>>_v)."""
+
+    name: str
+    kind: str
+    p: Pred
+    q: Pred | None = None
+    # For "wf", "sf" and "infinitely_step": <<A>>_v, a step the tail never takes.
+    forbid: Pred | None = None
+
+
+LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "infinitely_step", "wf", "sf")
+
+
+class TemporalCompiler:
+    """Expands temporal formulas into `Fairness` and `Obligation` instances."""
+
+    def __init__(self, model: Any) -> None:
+        self.model = model
+        self.compiler = model.compiler
+        self._temporal_defs: dict[int, bool] = {}
+
+    # ------------------------------------------------------------ classification
+    def is_temporal(self, e: Any, scope: Scope) -> bool:
+        """Does `e` contain [], <>, ~>, WF/SF or \\AA/\\EE (also through definitions)?"""
+        if isinstance(e, A.Unary) and e.op in ("[]", "<>"):
+            return True
+        if isinstance(e, (A.Fairness, A.UnboundedQuant)) or (isinstance(e, A.Binary) and e.op in ("~>", "-+->")):
+            return True
+        if isinstance(e, (A.Name, A.Apply, A.Prefixed)):
+            sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
+            if isinstance(sym, DefSym):
+                key = id(sym)
+                if key not in self._temporal_defs:
+                    self._temporal_defs[key] = False  # recursion guard
+                    self._temporal_defs[key] = self.is_temporal(sym.defn.body, sym.scope)
+                if self._temporal_defs[key]:
+                    return True
+            if isinstance(e, A.Name):
+                return False
+        if isinstance(e, A.Expr):
+            for f in dataclasses.fields(e):
+                v = getattr(e, f.name)
+                items = v if isinstance(v, list) else [v]
+                for x in items:
+                    if isinstance(x, A.Expr) and self.is_temporal(x, scope):
+                        return True
+                    if isinstance(x, A.Bound) and self.is_temporal(x.set, scope):
+                        return True
+        return False
+
+    @staticmethod
+    def _instance_def(e: A.Prefixed, scope: Scope) -> object:
+        """The definition M!Op names; its scope carries the instance's substitutions."""
+        for step in e.path:
+            sym = scope.lookup(step.name)
+            if not isinstance(sym, InstanceSym):
+                return None
+            scope = sym.scope
+        return scope.lookup(e.name)
+
+    # ------------------------------------------------------------ expansion
+    def fairness(self, e: A.Expr) -> list[Fairness]:
+        out: list[Fairness] = []
+        self._expand(e, self.model.scope, {}, lambda x, sc, b: out.append(self._fair(x, sc, b)))
+        return out
+
+    def obligations(self, name: str, e: A.Expr, scope: Scope) -> list[Obligation]:
+        out: list[Obligation] = []
+        self._expand(e, scope, {}, lambda x, sc, b: out.append(self._obligation(name, x, sc, b)))
+        return out
+
+    def _expand(self, e: A.Expr, scope: Scope, binds: dict[str, Value],
+                leaf: Callable[[A.Expr, Scope, dict], None]) -> None:
+        """Calls `leaf` on each conjunct, with conjunctions, temporal definitions and
+        bounded \\A over temporal formulas expanded."""
+        if isinstance(e, A.And):
+            for item in e.items:
+                self._expand(item, scope, binds, leaf)
+            return
+        if isinstance(e, (A.Name, A.Apply, A.Prefixed)) and e.name not in binds:
+            sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
+            if isinstance(sym, DefSym) and self.is_temporal(e, scope):
+                if isinstance(e, A.Prefixed) and any(step.args for step in e.path):
+                    raise UnsupportedError("a temporal formula of a parameterised instance (M(p)!Op) is not "
+                                           "supported", e.loc)
+                args = e.args if isinstance(e, (A.Apply, A.Prefixed)) else []
+                if len(args) != len(sym.defn.params):
+                    raise TlaError("semantic", f"{e.name} expects {len(sym.defn.params)} arguments", e.loc)
+                values = {p.name: self._constant(a, scope, binds) for p, a in zip(sym.defn.params, args)}
+                self._expand(sym.defn.body, sym.scope, values, leaf)
+                return
+        if isinstance(e, A.Quant) and e.kind == "\\A" and self.is_temporal(e.body, scope):
+            names: list[str] = []
+            sets: list[list[Value]] = []
+            for b in e.bounds:
+                if b.tuple:
+                    raise UnsupportedError("a tuple binder <<..>> \\in S over a temporal formula", b.set.loc)
+                for n in b.names:
+                    names.append(n)
+                    sets.append(list(as_set(self._constant(b.set, scope, binds))))
+            for combo in itertools.product(*sets):
+                self._expand(e.body, scope, {**binds, **dict(zip(names, combo))}, leaf)
+            return
+        leaf(e, scope, binds)
+
+    # ------------------------------------------------------------ leaves
+    def _fair(self, e: A.Expr, scope: Scope, binds: dict) -> Fairness:
+        if not isinstance(e, A.Fairness):
+            raise UnsupportedError("this temporal conjunct of the specification is not supported: only "
+                                   "WF_v(A), SF_v(A), their conjunctions and \\A over them are", e.loc)
+        step = A.StepAction(e.loc, e.action, e.sub, False)
+        return Fairness(e.kind, self.pred(A.Unary(e.loc, "ENABLED", step), scope, binds),
+                        self.pred(step, scope, binds), e.loc)
+
+    def _obligation(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
+        if not self.is_temporal(e, scope):
+            return Obligation(name, "init", self._state(e, scope, binds))
+        if isinstance(e, A.Unary) and e.op == "[]":
+            arg = e.arg
+            if isinstance(arg, A.StepAction) and arg.stutter:
+                return Obligation(name, "action", self.pred(arg, scope, binds))
+            if isinstance(arg, A.Unary) and arg.op == "<>" and not self.is_temporal(arg.arg, scope):
+                inner = arg.arg
+                if isinstance(inner, A.StepAction) and not inner.stutter:
+                    return Obligation(name, "infinitely_step", self.pred(inner, scope, binds),
+                                      forbid=self.pred(inner, scope, binds))
+                return Obligation(name, "infinitely", self._state(inner, scope, binds))
+            if not self.is_temporal(arg, scope):
+                return Obligation(name, "always", self._state(arg, scope, binds))
+        if isinstance(e, A.Unary) and e.op == "<>":
+            arg = e.arg
+            if isinstance(arg, A.Unary) and arg.op == "[]" and not self.is_temporal(arg.arg, scope):
+                return Obligation(name, "stable", self._state(arg.arg, scope, binds))
+            if not self.is_temporal(arg, scope):
+                return Obligation(name, "eventually", self._state(arg, scope, binds))
+        if isinstance(e, A.Fairness):
+            fair = self._fair(e, scope, binds)
+            return Obligation(name, e.kind.lower(), fair.enabled, forbid=fair.taken)
+        if isinstance(e, A.Binary) and e.op == "~>":
+            if not self.is_temporal(e.lhs, scope) and not self.is_temporal(e.rhs, scope):
+                return Obligation(name, "leadsto", self._state(e.lhs, scope, binds),
+                                  self._state(e.rhs, scope, binds))
+        raise UnsupportedError(f"the temporal formula in property {name} is not supported: only []P, <>P, "
+                               f"P ~> Q, []<>P, <>[]P (P, Q state predicates), [][A]_v, []<><<A>>_v, WF_v(A), "
+                               f"SF_v(A), conjunctions and \\A over them are checked", e.loc)
+
+    # ------------------------------------------------------------ compilation
+    def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:
+        frame = Frame()
+        slots = [(frame.alloc(), v) for v in binds.values()]
+        local = {n: SlotLocal(sl) for n, (sl, _) in zip(binds, slots)}
+        return Env(scope, frame, local), slots
+
+    def pred(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:
+        env, slots = self._env(scope, binds)
+        code = self.compiler.expr(e, env)
+        base: list = [None] * env.frame.size
+        for sl, v in slots:
+            base[sl] = v
+        return Pred(code, base, e.loc)
+
+    def _state(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:
+        env, _ = self._env(scope, binds)
+        if self.compiler.info(e, env).action:
+            raise UnsupportedError("an action-level formula is not supported here: this position of a "
+                                   "property takes a state predicate", e.loc)
+        return self.pred(e, scope, binds)
+
+    def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:
+        p = self.pred(e, scope, binds)
+        return p.code(None, None, p.base.copy())

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: Apache-2.0
+// The wire format of design §10: u64 id, u16 payload length, payload; little-endian.
+#include "safestate/saf/codec.hpp"
+
+namespace safestate::saf {
+namespace {
+
+std::uint64_t read_u64(const std::uint8_t* p) noexcept {
+  std::uint64_t v = 0;
+  for (int i = 7; i >= 0; --i) v = (v << 8U) | p[i];
+  return v;
+}
+std::uint32_t read_u32(const std::uint8_t* p) noexcept {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8U) | p[i];
+  return v;
+}
+std::uint16_t read_u16(const std::uint8_t* p) noexcept {
+  return static_cast<std::uint16_t>(p[0] | (p[1] << 8U));
+}
+void write_le(std::uint8_t* p, std::uint64_t v, std::size_t n) noexcept {
+  for (std::size_t i = 0; i < n; ++i) p[i] = static_cast<std::uint8_t>(v >> (8U * i));
+}
+
+DecodeResult reject(DecodeError e) noexcept {
+  DecodeResult r{};
+  r.error = e;
+  return r;
+}
+
+/// The payload's fields, range-checked.
+DecodeResult decode_payload(MessageId id, const std::uint8_t* p) noexcept {
+  DecodeResult r{};
+  r.message.id = id;
+  switch (id) {
+    case MessageId::SetEstop:
+      if (p[0] > 1) return reject(DecodeError::FieldRange);
+      r.message.emergency = p[0] == 1;
+      break;
+    case MessageId::ReportHealthSummary:
+      if (p[0] > kHealthMax) return reject(DecodeError::FieldRange);
+      r.message.health = static_cast<Health>(p[0]);
+      break;
+    case MessageId::ConfirmControl:
+      if (p[0] > kControlResponseMax) return reject(DecodeError::FieldRange);
+      r.message.response = static_cast<ControlResponse>(p[0]);
+      break;
+    case MessageId::ReportControl:
+      r.message.component_id = read_u32(p);
+      r.message.authority = p[4];
+      break;
+    case MessageId::ReportSubsystemState:
+    case MessageId::SetSubsystemState:
+      if (p[0] > kSubsystemStateMax) return reject(DecodeError::FieldRange);
+      r.message.subsystem_state = static_cast<SubsystemState>(p[0]);
+      break;
+    case MessageId::RequestControl:
+      if (p[0] > kControlActionMax) return reject(DecodeError::FieldRange);
+      r.message.action = static_cast<ControlAction>(p[0]);
+      r.message.authority = p[1];
+      r.message.component_id = read_u32(p + 2);
+      break;
+    case MessageId::QueryHealthSummary:
+    case MessageId::QueryControl:
+      break;
+  }
+  return r;
+}
+
+}  // namespace
+
+DecodeResult decode(const std::uint8_t* data, std::size_t size) noexcept {
+  if (size > kMaxDatagram) return reject(DecodeError::Oversized);
+  if (data == nullptr || size < kHeaderSize) return reject(DecodeError::Truncated);
+  const std::uint16_t length = read_u16(data + 8);
+  if (size < kHeaderSize + length) return reject(DecodeError::Truncated);
+  if (size > kHeaderSize + length) return reject(DecodeError::TrailingBytes);
+  const auto spec = find_spec(read_u64(data));
+  if (!spec) return reject(DecodeError::UnknownId);
+  if (length != spec->payload_size) return reject(DecodeError::BadLength);
+  return decode_payload(spec->id, data + kHeaderSize);
+}
+
+Encoded encode(const Message& m) noexcept {
+  Encoded e{};
+  const MessageSpec spec = spec_of(m.id);
+  std::uint8_t* p = e.bytes.data();
+  write_le(p, static_cast<std::uint64_t>(m.id), 8);
+  write_le(p + 8, spec.payload_size, 2);
+  std::uint8_t* q = p + kHeaderSize;
+  switch (m.id) {
+    case MessageId::SetEstop: q[0] = m.emergency ? 1 : 0; break;
+    case MessageId::ReportHealthSummary: q[0] = static_cast<std::uint8_t>(m.health); break;
+    case MessageId::ConfirmControl: q[0] = static_cast<std::uint8_t>(m.response); break;
+    case MessageId::ReportControl:
+      write_le(q, m.component_id, 4);
+      q[4] = m.authority;
+      break;
+    case MessageId::ReportSubsystemState:
+    case MessageId::SetSubsystemState: q[0] = static_cast<std::uint8_t>(m.subsystem_state); break;
+    case MessageId::RequestControl:
+      q[0] = static_cast<std::uint8_t>(m.action);
+      q[1] = m.authority;
+      write_le(q + 2, m.component_id, 4);
+      break;
+    case MessageId::QueryHealthSummary:
+    case MessageId::QueryControl: break;
+  }
+  e.size = kHeaderSize + spec.payload_size;
+  return e;
+}
+
+}  // namespace safestate::saf
