@@ -44,3 +44,9 @@ def test_checker_missing_cfg_is_a_clear_error(tla_dir) -> None:
 def test_checker_unknown_file_is_a_clear_error(tmp_path) -> None:
     p = run_safestate("check", str(tmp_path / "Missing.tla"))
     assert p.returncode != 0 and "Traceback" not in p.stderr
+
+
+@pytest.mark.parametrize("name", sorted(n for n, w in EXPECTED.items() if w["kind"] != "unsupported"))
+def test_checker_error_exit_code_is_tlc_exit_code(name: str) -> None:
+    p = run_safestate("check", str(ERRORS / f"{name}.tla"))
+    assert p.returncode == EXPECTED[name]["tlc_exit_code"], p.stdout + p.stderr

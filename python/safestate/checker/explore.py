@@ -33,6 +33,7 @@ from typing import Any, Callable
 from ..tla.errors import EvalError, TlaError
 from ..tla.tlcget import RUNTIME
 from .model import Model
+from .deep_stack import call_with_deep_stack
 
 PROGRESS_SECONDS = 5.0
 
@@ -77,6 +78,10 @@ class CheckResult:
     loop_step: Step | None = None
     # Every property the liveness counterexample violates, in .cfg order (TLC names them all).
     violated_properties: list[str] | None = None
+
+
+class _Found(Exception):
+    """Ends the replay of a state's successors in `Explorer._step_params`."""
 
 
 class _Stop(Exception):
@@ -168,7 +173,7 @@ class Explorer:
             # As TLC's queue: the state being expanded (`self.head`) has been dequeued,
             # and a new successor violating an invariant is never enqueued.
             left -= 1
-            if result in ("safety failure", "action property failure") and extra is None:
+            if result in ("safety failure", "action property failure", "error") and extra is None:
                 left -= 1
         self.outcome = CheckResult(result, len(self.states), self.generated,
                                    self.max_level if self.generated else 0,
@@ -186,19 +191,25 @@ class Explorer:
         steps = [Step(self.states[path[0]], "Init", {})]
         for a, b in zip(path, path[1:]):
             want, leaf = self.states[b], self.leaf[b]
-            action, params = self.m.leaves[leaf].name, {}
-            for tr_leaf, tr_params, st in self._successors_with_leaf(self.states[a]):
-                if tr_leaf == leaf and st == want:
-                    params = tr_params
-                    break
-            steps.append(Step(want, action, params))
+            steps.append(Step(want, self.m.leaves[leaf].name, self._step_params(self.states[a], leaf, want)))
         return steps
 
-    def _successors_with_leaf(self, state: tuple) -> list[tuple[int, dict, tuple]]:
-        out = []
+    def _step_params(self, state: tuple, leaf: int, want: tuple) -> dict:
+        """The parameters of the step `state` -> `want` by action `leaf`: the successors
+        are generated again up to that step only, so an action after it that fails to
+        evaluate (TLC never got there) cannot turn a violation into an error."""
         m = self.m
-        m.run_next(state, lambda st, leaf, L: out.append((leaf, m.leaf_params(leaf, L), st)))
-        return out
+        found: list[dict] = []
+
+        def match(st: tuple, lf: int, L: list) -> None:
+            if lf == leaf and st == want:
+                found.append(m.leaf_params(lf, L))
+                raise _Found()
+        try:
+            m.run_next(state, match)
+        except _Found:
+            return found[0]
+        return {}
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
@@ -217,6 +228,15 @@ class Explorer:
                                f"add a state constraint")
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
                                            len(self.states) - self.head, error=err)
+        except RecursionError:
+            # TLC: "This was a Java StackOverflowError" (a recursion that does not end).
+            msg = ("recursion too deep while computing states (TLC: StackOverflowError): a recursive "
+                   "operator or function probably does not terminate")
+            # TLC exits with 75 when this happens in Init, with 255 (a system error) after.
+            e = EvalError(msg) if not self.states else TlaError("stack overflow", msg)
+            self.outcome = CheckResult("error", len(self.states), self.generated,
+                                       self.max_level if self.generated else 0,
+                                       len(self.states) - self.head, error=e)
         except TlaError as e:
             # An evaluation error while computing Init or successors.
             self.outcome = CheckResult("error", len(self.states), self.generated,
@@ -249,7 +269,7 @@ class Explorer:
                 new = False
         if new:
             for inv in m.invariants:
-                if not m.holds(inv, st):
+                if not self._invariant_holds(inv, st, idx, -1, -1, L):
                     if idx >= 0:
                         self._finish("safety failure", inv.name, idx, initial=True)
                     self.outcome = CheckResult("safety failure", len(self.states), self.generated, 1,
@@ -262,6 +282,28 @@ class Explorer:
                                                len(self.states), prop.name, [Step(st, "Init", {})],
                                                initial_violation=True)
                     raise _Stop()
+
+    def _invariant_holds(self, inv: Any, st: tuple, idx: int, parent: int, leaf: int, L: list) -> bool:
+        """`inv` on the new state `st` (stored at `idx`, or a successor of `parent` that
+        a constraint excluded).  An evaluation error (a failed Assert too) is TLC's
+        "Evaluating invariant Inv failed" (exit 76), with the trace up to `st`."""
+        try:
+            return self.m.holds(inv, st)
+        except TlaError as e:
+            if not (isinstance(e, EvalError) or e.kind in ("eval", "assert")):
+                raise
+            if parent < 0:
+                # In an initial state TLC reports the error itself (exit 75), with statistics.
+                err = TlaError("eval", f"{e.message}\nWhile working on the initial state", e.loc)
+                self.outcome = CheckResult("error", len(self.states), self.generated, 1,
+                                           len(self.states) - self.head, None, [Step(st, "Init", {})], err)
+                raise _Stop()
+            err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
+            if idx >= 0:
+                self._finish("error", None, idx, error=err)
+            lf = self.m.leaves[leaf]
+            self._finish("error", None, parent, Step(st, lf.name, self.m.leaf_params(leaf, L)), error=err)
+            raise  # not reached: _finish raises _Stop
 
     def _expand_all(self) -> None:
         m = self.m
@@ -314,7 +356,7 @@ class Explorer:
                 self.edges.append(Edge(i, idx, m.leaves[leaf].name, m.leaf_params(leaf, L)))
             if new:
                 for inv in invariants:
-                    if not holds(inv, st):
+                    if not self._invariant_holds(inv, st, idx, i, leaf, L):
                         if idx >= 0:
                             self._finish("safety failure", inv.name, idx)
                         lf = m.leaves[leaf]
@@ -357,10 +399,10 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
-    result = explorer.run()
+    result = call_with_deep_stack(explorer.run)
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness
-        check_liveness(model, explorer, result)
+        call_with_deep_stack(lambda: check_liveness(model, explorer, result))
     if result.result == "success" and model.postcondition is not None:
         _check_postcondition(model, result)
     result.seconds = time.monotonic() - start

@@ -31,7 +31,7 @@ from ..tla.modules import (BuiltinSym, ConstSym, DefSym, ModuleLoader, Scope, Va
 from ..tla.parser import parse_text
 from ..tla.resolve import check_modules
 from ..tla.tlcget import RUNTIME
-from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order
+from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order, reset_token_order
 from .cfg import Config, ConfigEntry, parse_config
 from .itf import state_from_itf, state_to_itf
 from .temporal import Fairness, Obligation, TemporalCompiler
@@ -221,7 +221,14 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
     if not os.path.exists(cfg_path):
         raise TlaError("config", f"configuration file {os.path.basename(cfg_path)} not found (give one with "
                        f"--config)", Loc(cfg_path, 0, 0))
-    config = parse_config(cfg_path)
+    try:
+        config = parse_config(cfg_path)
+    except TlaError as e:
+        # TLC: a cfg that does not parse is a ConfigFileException, exit 255 (not 151).
+        if e.kind != "config":
+            raise
+        raise TlaError("cfg syntax", e.message, e.loc) from None
+    reset_token_order()
     register_token_order(config.tokens)
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
@@ -284,7 +291,7 @@ def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str
     for name, (value, loc) in config.constants.items():
         sym = scope.lookup(name)
         if sym is None:
-            continue  # TLC ignores values for names the spec does not declare (r1 = r1)
+            continue  # TLC ignores a value for a name the spec does not have (not so for `<-`)
         if isinstance(sym, ConstSym):
             values[name] = value
         else:
@@ -362,9 +369,23 @@ def _predicate(model: Model, entry: ConfigEntry, what: str, action: bool = False
                        sym.defn.loc)
     code, size = model.compiler.compile_unit(A.Name(sym.defn.loc, entry.name), model.scope)
     loc = sym.defn.loc
+    if boolean and not info.vars and not info.action:
+        _constant_predicate(entry, what, code, size)
     if action:
         return Named(entry.name, loc, lambda s, t: code(s, t, [None] * size))
     return Named(entry.name, loc, lambda s, t: code(s, None, [None] * size))
+
+
+def _constant_predicate(entry: ConfigEntry, what: str, code: Any, size: int) -> None:
+    """TLC evaluates constant definitions at start-up; an invariant or constraint
+    that is then anything but TRUE is a cfg error (`TLC_CONFIG_ID_HAS_VALUE`).  An
+    evaluation error is left to be reported during the search, as TLC does."""
+    try:
+        v = code(None, None, [None] * size)
+    except EvalError:
+        return
+    if v is not True:
+        raise TlaError("config", f"The {what} of {entry.name} is equal to {fmt(v)}", entry.loc)
 
 
 # ---------------------------------------------------------------------- Init / Next

@@ -100,13 +100,10 @@ class ParallelExplorer(Explorer):
                         if idx >= 0:
                             self._finish("safety failure", inv.name, idx)
                         # A constraint-violating successor (not stored): recover its action parameters.
-                        params = self._params_of(cur, leaf, st)
+                        params = self._step_params(cur, leaf, st)
                         self._finish("safety failure", inv.name, i, Step(st, m.leaves[leaf].name, params))
             if m.action_properties:
                 self._check_action_properties(i, cur, st, idx if new else -1, leaf,
-                                              lambda: self._params_of(cur, leaf, st))
+                                              lambda: self._step_params(cur, leaf, st))
         if not successors and m.check_deadlock:
             self._finish("deadlock failure", None, i)
-
-    def _params_of(self, cur: tuple, leaf: int, st: tuple) -> dict:
-        return next((pr for lf, pr, s in self._successors_with_leaf(cur) if lf == leaf and s == st), {})

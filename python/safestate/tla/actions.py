@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from . import ast as A
-from .compiler import Compiler, _enum_checked, _prefix, check_bool, primed_names
+from .compiler import Compiler, _enum_checked, _prefix, all_names, check_bool
 from .compiler import _assign as assign_binder
 from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
@@ -60,7 +60,7 @@ class ActionCompiler:
             body = self.split(e.body, inner, label, label_loc, params + names, make_k)
             return _exists(binds, body)
         if isinstance(e, A.Let):
-            env2, resets = self.c.bind_let(e.defs, env, primed_names(e))
+            env2, resets = self.c.bind_let(e.defs, env)
             return _let(resets, self.split(e.body, env2, label, label_loc, params, make_k))
         if isinstance(e, (A.Name, A.Apply)) and e.name not in env.locals:
             sym = env.scope.lookup(e.name)
@@ -97,6 +97,7 @@ class ActionCompiler:
                 k(s, t, L)
             elif v is not False:
                 check_bool(v, loc, "action conjunct")
+        guard.cont = k  # type: ignore[attr-defined]  # for _plain_guard
         return guard
 
     def a_Bool(self, e: A.Bool, env: Env, k: Cont) -> Code:
@@ -124,8 +125,24 @@ class ActionCompiler:
                 i, rhs, loc = run[0]
                 k = self._assign(i, rhs, k, loc)
             if items:
-                k = self.action(items.pop(), env, k)
+                item = items.pop()
+                act = self.action(item, env, k)
+                # TLC (Tool.getNextStatesAllAssigned, getInitStates): once every variable
+                # has a value, the remaining conjuncts are evaluated as booleans, so a
+                # disjunction or \E among them yields one successor, not one per branch.
+                k = act if not items or _plain_guard(act) else self._all_assigned_guard(item, env, act, k)
         return k
+
+    def _all_assigned_guard(self, e: A.Expr, env: Env, act: Code, k: Cont) -> Code:
+        test = self.guard(e, env, k)
+
+        def conjunct(s: Any, t: Any, L: list) -> None:
+            for v in t:
+                if v is UNSET:
+                    act(s, t, L)
+                    return
+            test(s, t, L)
+        return conjunct
 
     def _plain_assignments(self, e: A.Expr, env: Env) -> list[tuple[int, Code, Loc]] | None:
         """``x' = e`` or ``UNCHANGED <<x, y>>`` as (variable, value code, loc) triples."""
@@ -145,89 +162,53 @@ class ActionCompiler:
 
     def a_Quant(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
         if e.kind != "\\E":
-            if self.c.info(e.body, env).action or self.may_branch(e.body, env):
-                return self._forall_action(e, env, k)
-            return None
+            return self._forall(e, env, k)
         inner, binds = self.c.bind_bounds(e.bounds, env)
         return _exists(binds, self.action(e.body, inner, k))
 
-    def may_branch(self, e: Any, env: Env, depth: int = 0) -> bool:
-        """Can `e`, in an action, produce a step more than once (a disjunction or \\E in
-        action position, possibly inside definitions)?  If not, evaluating it as an
-        expression gives the same steps.  Conservative: True when unsure."""
-        if depth > 30:
-            return True
-        if isinstance(e, A.Or):
-            return len(e.items) > 1
-        if isinstance(e, A.Quant):
-            return e.kind == "\\E" or self.may_branch(e.body, env, depth + 1)
-        if isinstance(e, A.And):
-            return any(self.may_branch(i, env, depth + 1) for i in e.items)
-        if isinstance(e, A.If):
-            return self.may_branch(e.then, env, depth + 1) or self.may_branch(e.other, env, depth + 1)
-        if isinstance(e, A.Case):
-            return any(self.may_branch(v, env, depth + 1) for _, v in e.arms) or (
-                e.other is not None and self.may_branch(e.other, env, depth + 1))
-        if isinstance(e, A.Let):
-            return True
-        if isinstance(e, A.Binary):
-            if e.op == "=>":
-                return self.may_branch(e.rhs, env, depth + 1)
-            return e.op == "\\in" and isinstance(e.lhs, A.Prime)
-        if isinstance(e, (A.Prefixed, A.StepAction)):
-            return True
-        if isinstance(e, (A.Name, A.Apply)):
-            local = env.locals.get(e.name)
-            if isinstance(local, (ByNameLocal, LazyLocal)):
-                return local.expr is None or self.may_branch(local.expr, local.env, depth + 1)
-            if isinstance(local, LetOpLocal):
-                return self.may_branch(local.defn.body, local.env, depth + 1)
-            if local is not None:
-                return False
-            sym = env.scope.lookup(e.name)
-            sym = self.c.sym_overrides.get(id(sym), sym)
-            if isinstance(sym, DefSym):
-                if sym.recursive or sym.defn.fn_bounds is not None:
-                    return False  # TLC evaluates these as expressions
-                return self.may_branch(sym.defn.body, Env(sym.scope, env.frame), depth + 1)
-            return isinstance(sym, SubstSym)
-        return False
-
-    def _forall_action(self, e: A.Quant, env: Env, k: Cont) -> Code:
-        """``\\A x \\in S : A(x)`` in an action: the conjunction of A(x) over S.  TLC
-        (Tool.getNextStates, OPCODE_bf) takes the first element, then pushes the others
-        on its stack of pending conjuncts, so they run in the order x1, xn, ..., x2."""
-        state_slot = env.frame.alloc()  # (elements in TLC's order, position)
-        lo = env.frame.size
+    def _forall(self, e: A.Quant, env: Env, k: Cont) -> Code | None:
+        """``\\A x \\in S : A`` in an action is the conjunction of A for each x, as in
+        TLC (Tool.getNextStates, OPCODE_bf): A with the first binding, then the others
+        as pending conjuncts, which TLC's list takes last-first (x1, xn, ..., x2);
+        pending ones are booleans once every variable is assigned."""
         inner, binds = self.c.bind_bounds(e.bounds, env)
-        # The bound variables and every slot the body uses (inlined operators'
-        # parameters, LETs): a branch of an earlier instance continues with them.
-        all_slots: list[int] = []
-        rbinds = binds[::-1]
+        slot = env.frame.alloc()
+        lo = env.frame.size
+        body_slots: list[int] = []  # slots the body uses (inlined parameters, LETs)
 
         def after(s: Any, t: Any, L: list) -> None:
-            elems, pos = L[state_slot]
-            if pos == len(elems):
+            order, pos = L[slot]
+            if pos + 1 >= len(order):
                 k(s, t, L)
                 return
-            saved = [L[sl] for sl in all_slots]
-            for (_, slots, is_tuple, sloc), v in zip(rbinds, elems[pos]):
-                assign_binder(L, slots, is_tuple, v, sloc)
-            L[state_slot] = (elems, pos + 1)
-            body(s, t, L)
-            L[state_slot] = (elems, pos)
-            for sl, v in zip(all_slots, saved):  # a branch of an earlier element continues
+            # A later branch of this instance continues with its own slot values.
+            saved = [L[sl] for sl in body_slots]
+            L[slot] = (order, pos + 1)
+            _bind_combo(L, binds, order[pos + 1])
+            if UNSET in t:
+                body(s, t, L)
+            else:
+                test(s, t, L)
+            L[slot] = (order, pos)
+            _bind_combo(L, binds, order[pos])
+            for sl, v in zip(body_slots, saved):
                 L[sl] = v
         body = self.action(e.body, inner, after)
-        all_slots.extend(range(lo, env.frame.size))
+        if _plain_guard(body, after):
+            return None  # a plain boolean \\A: the same successors, evaluated once
+        test = self.guard(e.body, inner, after)
+        body_slots.extend(range(lo, env.frame.size))
 
         def forall(s: Any, t: Any, L: list) -> None:
-            sets = [_enum_checked(b[0](s, t, L), b[3]) for b in binds]
-            combos = list(itertools.product(*sets[::-1]))
-            saved = L[state_slot]
-            L[state_slot] = (combos[:1] + combos[:0:-1], 0)
-            after(s, t, L)
-            L[state_slot] = saved
+            combos = _combos(binds, s, t, L)
+            if not combos:
+                k(s, t, L)
+                return
+            saved = L[slot]
+            L[slot] = ([combos[0]] + combos[:0:-1], 0)
+            _bind_combo(L, binds, combos[0])
+            body(s, t, L)
+            L[slot] = saved
         return forall
 
     def a_If(self, e: A.If, env: Env, k: Cont) -> Code | None:
@@ -264,7 +245,7 @@ class ActionCompiler:
         return case
 
     def a_Let(self, e: A.Let, env: Env, k: Cont) -> Code:
-        env2, resets = self.c.bind_let(e.defs, env, primed_names(e))
+        env2, resets = self.c.bind_let(e.defs, env)
         return _let(resets, self.action(e.body, env2, k))
 
     def a_Name(self, e: A.Name, env: Env, k: Cont) -> Code | None:
@@ -279,22 +260,21 @@ class ActionCompiler:
             if isinstance(local, ByNameLocal) and not args:
                 return self.action(local.expr, local.env, k)
             # TLC expands a LET definition used as a conjunct (getNextStatesAppl), so a
-            # disjunction or \E inside it branches; without one, evaluating it is the same.
-            if isinstance(local, LazyLocal) and local.expr is not None and not args and \
-                    self.may_branch(local.expr, local.env):
-                return self.action(local.expr, local.env, k)
-            if isinstance(local, LetOpLocal) and self.may_branch(local.defn.body, local.env):
-                self.c._arity(e.name, len(local.defn.params), args, e.loc)
-                bindings, pre = self.c.bind_params(local.defn.params, args, env, e.loc,
-                                                   primed_names(local.defn.body))
-                body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings}, env.init_mode)
-                return _prefix_act(pre, self.action(local.defn.body, body_env, k))
+            # disjunction or \\E inside it branches; if nothing branches, its value is the same.
+            if isinstance(local, LazyLocal) and local.body is not None and not args:
+                code = self.action(local.body[0], local.body[1], k)
+                return None if _plain_guard(code, k) else code
+            if isinstance(local, LetOpLocal) and e.name not in all_names(local.defn.body):
+                # Like a user operator: descend into its body (TLC does).
+                pre, code = self.c.inline_let_op(e.name, local, args, env, e.loc,
+                                                 lambda b, benv: self.action(b, benv, k))
+                return _prefix_act(pre, code)
             return None
         sym = env.scope.lookup(e.name)
         sym = self.c.sym_overrides.get(id(sym), sym)  # C <- Op: expand Op
         if isinstance(sym, SubstSym) and not args:
             inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
-            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode), k)
+            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode, env.primed), k)
         # TLC evaluates every user-defined operator in action position by descending
         # into its body (so a disjunction inside it branches), except recursive ones.
         if not isinstance(sym, DefSym) or sym.defn.fn_bounds is not None or sym.recursive:
@@ -348,28 +328,50 @@ class ActionCompiler:
         return self._assign_in(i, self.c.expr(e.rhs, env), k, e.loc, env.init_mode)
 
     # ---------------------------------------------------------------- assignments
-    def _target_var(self, lhs: A.Expr, env: Env) -> tuple[int, str] | None:
-        """The variable assigned by ``lhs = ...``: ``x'`` in actions, ``x`` in Init."""
-        local = env.locals.get(lhs.name) if isinstance(lhs, A.Name) else None
-        if isinstance(local, ByNameLocal):  # an operator parameter given x' (TLC expands it)
-            return self._target_var(local.expr, local.env)
+    def _target_var(self, lhs: A.Expr, env: Env, depth: int = 0) -> tuple[int, str] | None:
+        """The variable assigned by ``lhs = ...``: ``x'`` in actions, ``x`` in Init.
+        As TLC (`Tool.getPrimedVar`), names of arguments and definitions without
+        parameters are followed: ``q' = e`` assigns ``a'`` when ``q`` stands for ``a``,
+        and ``P = e`` assigns ``a'`` when ``P == a'``."""
         if env.init_mode:
             return self._var_of(lhs, env)
         if isinstance(lhs, A.Prime):
             return self._var_of(lhs.arg, env)
+        named = self._named_expr(lhs, env)
+        if named is not None and depth < 20:
+            return self._target_var(named[0], named[1], depth + 1)
         return None
 
-    def _var_of(self, e: A.Expr, env: Env) -> tuple[int, str] | None:
-        local = env.locals.get(e.name) if isinstance(e, A.Name) else None
-        if isinstance(local, ByNameLocal):  # a parameter given a variable (Lose(q) with q' = ...)
-            return self._var_of(local.expr, local.env)
-        if not isinstance(e, A.Name) or e.name in env.locals:
+    def _var_of(self, e: A.Expr, env: Env, depth: int = 0) -> tuple[int, str] | None:
+        """The state variable `e` stands for (`Tool.getVar`), if any."""
+        if isinstance(e, A.Name) and e.name not in env.locals:
+            sym = env.scope.lookup(e.name)
+            if isinstance(sym, VarSym):
+                return sym.index, sym.name
+        named = self._named_expr(e, env)
+        if named is not None and depth < 20:
+            return self._var_of(named[0], named[1], depth + 1)
+        return None
+
+    @staticmethod
+    def _named_expr(e: A.Expr, env: Env) -> tuple[A.Expr, Env] | None:
+        """The expression a name without arguments stands for: an operator
+        argument or LET definition reading state, a definition, a substitution."""
+        if not isinstance(e, A.Name):
+            return None
+        local = env.locals.get(e.name)
+        if local is not None:
+            if isinstance(local, ByNameLocal):
+                return local.expr, local.env
+            if isinstance(local, (SlotLocal, LazyLocal)) and local.source is not None:
+                return local.source
             return None
         sym = env.scope.lookup(e.name)
-        while isinstance(sym, SubstSym) and isinstance(sym.expr, A.Name):
-            sym = sym.scope.lookup(sym.expr.name)
-        if isinstance(sym, VarSym):
-            return sym.index, sym.name
+        if isinstance(sym, DefSym) and not sym.defn.params and sym.defn.fn_bounds is None:
+            return sym.defn.body, Env(sym.scope, env.frame, {}, env.init_mode)
+        if isinstance(sym, SubstSym):
+            return sym.expr, Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
+                                                        if p in env.locals}, env.init_mode)
         return None
 
     def _assign(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
@@ -408,16 +410,30 @@ class ActionCompiler:
                     k(s, t, L)
         return assign_in
 
-    def unchanged(self, e: A.Expr, env: Env, k: Cont) -> Code:
+    def unchanged(self, e: A.Expr, env: Env, k: Cont, depth: int = 0) -> Code:
+        """``UNCHANGED e`` as TLC (`Tool.processUnchanged`): a variable is assigned
+        (or tested), a tuple is taken element by element, names without
+        arguments are expanded; anything else (an operator application too)
+        compares e with e'."""
         idx = self._unchanged_vars(e, env, 0)
-        if idx is None:
-            same = self.c._unchanged_expr(e, env)
-            return lambda s, t, L: k(s, t, L) if same(s, t, L) else None
-        for i in reversed(idx):
-            k = self._assign(i, (lambda i: lambda s, t, L: s[i])(i), k, e.loc)
-        return k
+        if idx is not None:
+            for i in reversed(idx):
+                k = self._assign(i, var_read(i), k, e.loc)
+            return k
+        if depth < 20:
+            if isinstance(e, A.TupleLit):
+                for x in reversed(e.elems):
+                    k = self.unchanged(x, env, k, depth + 1)
+                return k
+            named = self._named_expr(e, env)
+            if named is not None:
+                return self.unchanged(named[0], named[1], k, depth + 1)
+        same = self.c._unchanged_expr(e, env)
+        return lambda s, t, L: k(s, t, L) if same(s, t, L) else None
 
     def _unchanged_vars(self, e: A.Expr, env: Env, depth: int) -> list[int] | None:
+        """The variables of ``UNCHANGED e`` when e is a variable or a tuple of them,
+        possibly through names (see `_named_expr`)."""
         if depth > 20:
             return None
         if isinstance(e, A.TupleLit):
@@ -428,19 +444,24 @@ class ActionCompiler:
                     return None
                 out.extend(sub)
             return out
-        if isinstance(e, A.Name) and e.name not in env.locals:
-            sym = env.scope.lookup(e.name)
-            while isinstance(sym, SubstSym) and isinstance(sym.expr, A.Name):
-                env = Env(sym.scope, env.frame)
-                e = sym.expr
-                sym = sym.scope.lookup(sym.expr.name)
-            if isinstance(sym, VarSym):
-                return [sym.index]
-            if isinstance(sym, DefSym) and not sym.defn.params and sym.defn.fn_bounds is None:
-                return self._unchanged_vars(sym.defn.body, Env(sym.scope, env.frame), depth + 1)
-            if isinstance(sym, SubstSym):
-                return self._unchanged_vars(sym.expr, Env(sym.scope, env.frame), depth + 1)
+        var = self._var_of(e, env)
+        if var is not None:
+            return [var[0]]
+        named = self._named_expr(e, env)
+        if named is not None:
+            return self._unchanged_vars(named[0], named[1], depth + 1)
         return None
+
+
+def _plain_guard(code: Code, k: Cont | None = None) -> bool:
+    """Is `code` a boolean guard (made by `ActionCompiler.guard`)?  With `k`: a chain of
+    guards ending in `k`, which never branches (a guard may continue with a branching
+    conjunct, as in ``/\\ P /\\ (Q \\/ R)``)."""
+    while getattr(code, "__name__", "") == "guard":
+        code = code.cont  # type: ignore[attr-defined]
+        if k is None or code is k:
+            return True
+    return False
 
 
 def assign_run(run: list[tuple[int, Code, Loc]], k: Cont) -> Code:
@@ -525,6 +546,17 @@ def _exists(binds: list, body: Code) -> Code:
                 assign_binder(L, slots, is_tuple, v, sloc)
             body(s, t, L)
     return exists_n
+
+
+def _combos(binds: list, s: Any, t: Any, L: list) -> list[tuple]:
+    """Every binding of `binds` in TLC's ContextEnumerator order (first binder fastest)."""
+    elems = [list(_enum_checked(b[0](s, t, L), b[3])) for b in binds]
+    return [combo[::-1] for combo in itertools.product(*elems[::-1])]
+
+
+def _bind_combo(L: list, binds: list, combo: tuple) -> None:
+    for (_, slots, is_tuple, sloc), v in zip(binds, combo):
+        assign_binder(L, slots, is_tuple, v, sloc)
 
 
 def _let(resets: list[int], body: Code) -> Code:

@@ -283,6 +283,10 @@ class Compiler:
         return self._symbol_ref(name, sym, args, env, loc)
 
     def _local_ref(self, name: str, local: Any, args: list[A.Expr], env: Env, loc: Loc) -> Code:
+        if env.primed:
+            primed = self._primed_local(name, local, args, env, loc)
+            if primed is not None:
+                return primed
         if isinstance(local, SlotLocal):
             self._arity(name, 0, args, loc)
             return slot_read(local.slot)
@@ -291,15 +295,50 @@ class Compiler:
             return lazy_read(local.slot, local.code)
         if isinstance(local, ByNameLocal):
             self._arity(name, 0, args, loc)
-            return self.expr(local.expr, local.env)
+            return self.expr(local.expr, replace(local.env, primed=local.env.primed or env.primed))
         if isinstance(local, OpLocal):
             self._arity(name, local.arity, args, loc)
             slot = local.slot
             arg_codes = [self.expr(a, env) for a in args]
             return lambda s, t, L: L[slot](*[a(s, t, L) for a in arg_codes])
         if isinstance(local, LetOpLocal):
+            if self.info(local.defn.body, local.env).action:
+                pre, body = self.inline_let_op(name, local, args, env, loc, self.expr)
+                return _prefix(pre, body)
             return self._let_op_call(name, local, args, env, loc)
         raise TlaError("semantic", f"cannot use {name} here", loc)
+
+    def _primed_local(self, name: str, local: Any, args: list[A.Expr], env: Env, loc: Loc) -> Code | None:
+        """A local inside ``e'`` that stands for an expression reading state (an
+        operator argument, a LET definition): that expression, primed (TLC
+        substitutes arguments and definitions by name).  None if the local is a
+        plain value (a bound variable), which priming leaves unchanged."""
+        if isinstance(local, (SlotLocal, LazyLocal)) and local.source is not None:
+            self._arity(name, 0, args, loc)
+            src, src_env = local.source
+            return self.expr(src, replace(src_env, primed=True))
+        if isinstance(local, LetOpLocal):
+            pre, body = self.inline_let_op(name, local, args, env, loc, self.expr)
+            return _prefix(pre, body)
+        if isinstance(local, OpLocal):
+            raise UnsupportedError(f"priming an expression that applies the operator argument {name}", loc)
+        return None
+
+    def inline_let_op(self, name: str, local: LetOpLocal, args: list[A.Expr], env: Env, loc: Loc,
+                      compile_body: Callable[[A.Expr, Env], Any]) -> Any:
+        """Expand a LET operator at its call site (under a prime, or in an action)."""
+        d = local.defn
+        self._arity(name, len(d.params), args, loc)
+        self._inline_depth += 1
+        if self._inline_depth > 60:
+            raise UnsupportedError(f"recursive action-level operator {name}", loc)
+        try:
+            bindings, pre = self.bind_params(d.params, args, env, loc)
+            body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings},
+                           env.init_mode, env.primed)
+            return pre, compile_body(d.body, body_env)
+        finally:
+            self._inline_depth -= 1
 
     def _arity(self, name: str, arity: int, args: list[A.Expr], loc: Loc) -> None:
         if len(args) != arity:
@@ -319,6 +358,8 @@ class Compiler:
             i = sym.index
             if env.init_mode:
                 return self._next_var(i, name, loc, init=True)
+            if env.primed:
+                return self._next_var(i, name, loc)
             return var_read(i)
         if isinstance(sym, ConstSym):
             if name not in self.constants:
@@ -333,7 +374,7 @@ class Compiler:
             return self._call_builtin(sym, args, env, loc)
         if isinstance(sym, SubstSym):
             sub_env = Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
-                                                  if p in env.locals}, env.init_mode)
+                                                  if p in env.locals}, env.init_mode, env.primed)
             if args:
                 return self._apply_operator_expr(sym.expr, args, sub_env, env, loc)
             return self.expr(sym.expr, sub_env)
@@ -364,8 +405,21 @@ class Compiler:
         for i, a in enumerate(args):
             slot = env.frame.alloc()
             pre.append((slot, self.expr(a, env)))
-            bindings[f"$arg{i}"] = SlotLocal(slot)
+            bindings[f"$arg{i}"] = SlotLocal(slot, self.state_source(a, env))
         return bindings, pre
+
+    def state_source(self, a: A.Expr, env: Env) -> tuple[A.Expr, Env] | None:
+        """`a` and its environment if `a` reads state (see `SlotLocal.source`)."""
+        if env.primed or env.init_mode:
+            return None  # already evaluated in the state that a prime would select
+        return (a, env) if self._reads_state(a, env) else None
+
+    def _reads_state(self, a: A.Expr, env: Env) -> bool:
+        if self.info(a, env).vars:
+            return True
+        # A name bound to a state-reading argument reads state too.
+        locs = [env.locals.get(n) for n in all_names(a)]
+        return any(isinstance(l, (SlotLocal, LazyLocal)) and l.source is not None for l in locs)
 
     def _inline_lambda(self, lam: A.Lambda, args: list[A.Expr], lam_env: Env, env: Env, loc: Loc) -> Code:
         self._arity("LAMBDA", len(lam.params), args, loc)
@@ -373,8 +427,8 @@ class Compiler:
         for p, a in zip(lam.params, args):
             slot = env.frame.alloc()
             pre.append((slot, self.expr(a, env)))
-            bindings[p] = SlotLocal(slot)
-        body = self.expr(lam.body, Env(lam_env.scope, env.frame, {**lam_env.locals, **bindings}, env.init_mode))
+            bindings[p] = SlotLocal(slot, self.state_source(a, env))
+        body = self.expr(lam.body, Env(lam_env.scope, env.frame, {**lam_env.locals, **bindings}, env.init_mode, env.primed))
         return _prefix(pre, body)
 
     def _call_symbol_op(self, name: str, args: list[A.Expr], env: Env, loc: Loc, op_env: Env) -> Code:
@@ -398,13 +452,14 @@ class Compiler:
         elif args:
             raise TlaError("semantic", f"{d.name} is a function; apply it with {d.name}[...]", loc)
         info = self.def_info(sym)
-        # In Init, unprimed variables are the state being built, so a definition that
-        # reads them is expanded; a recursive one reading none is called as usual.
-        init_inline = env.init_mode and not (sym.recursive and not info.vars)
+        # Under a prime the body must be compiled with its variables primed.
+        # In Init only bodies that read variables need the state being built (and a
+        # recursive one cannot be expanded).
+        init = env.init_mode and (info.vars or not sym.recursive)
         # An action-level argument (Send(p, x, x')) is passed by name, as TLC expands
         # the operator: its body may assign the primed variable.
         action_arg = any(self.info(a, env).action for a in args if not isinstance(a, A.Lambda))
-        if info.action or sym.scope.parameterised or init_inline or action_arg:
+        if info.action or sym.scope.parameterised or init or action_arg or (env.primed and info.vars):
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
         if d.fn_bounds is not None:
@@ -460,9 +515,9 @@ class Compiler:
         if self._inline_depth > 60:
             raise UnsupportedError(f"recursive action-level operator {d.name}", loc)
         try:
-            bindings, pre = self.bind_params(d.params, args, env, loc, primed_names(d.body))
+            bindings, pre = self.bind_params(d.params, args, env, loc)
             inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
-            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode)
+            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed)
             if d.fn_bounds is not None:
                 body = compile_body(A.FnLit(d.loc, d.fn_bounds, d.body), body_env)
             else:
@@ -471,11 +526,10 @@ class Compiler:
             self._inline_depth -= 1
         return pre, body
 
-    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc,
-                    primed: frozenset[str] = frozenset()) -> tuple[dict, list]:
-        """Bind operator parameters: by value into fresh slots, or by name for
-        action-level arguments and for parameters that the body primes (Lose(q) ==
-        ... q' = ...: TLC substitutes the argument, so q' is msgQ')."""
+    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc) -> tuple[dict, list]:
+        """Bind operator parameters: by value into fresh slots (remembering an argument
+        that reads state, which a prime in the body primes), or by name for
+        action-level arguments (which the body must see unevaluated)."""
         bindings: dict[str, Any] = {}
         pre: list[tuple[int, Code]] = []
         for p, a in zip(params, args):
@@ -483,12 +537,12 @@ class Compiler:
                 slot = env.frame.alloc()
                 pre.append((slot, self._arg(a, p.arity, env, loc)))
                 bindings[p.name] = OpLocal(slot, p.arity)
-            elif self.info(a, env).action or env.init_mode or p.name in primed:
+            elif self.info(a, env).action or env.init_mode:
                 bindings[p.name] = ByNameLocal(a, env)
             else:
                 slot = env.frame.alloc()
                 pre.append((slot, self.expr(a, env)))
-                bindings[p.name] = SlotLocal(slot)
+                bindings[p.name] = SlotLocal(slot, self.state_source(a, env))
         return bindings, pre
 
     def _arg(self, a: A.Expr, arity: int, env: Env, loc: Loc) -> Code:
@@ -668,14 +722,14 @@ class Compiler:
         # Operator arguments are compiled in the caller's environment, by value.
         arg_bindings, arg_pre = self._bind_args_by_value(e.args, env)
         fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
-        inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode)
+        inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed)
         pre = pre + arg_pre
         if isinstance(sym, DefSym) and compile_body != self.expr:
             d = sym.defn
             self._arity(d.name, len(d.params), fake, e.loc)
-            pb, pp = self.bind_params(d.params, fake, inner_env, e.loc, primed_names(d.body))
+            pb, pp = self.bind_params(d.params, fake, inner_env, e.loc)
             inst = {p: inner_env.locals[p] for p in sym.scope.instance_params if p in inner_env.locals}
-            body = compile_body(d.body, Env(sym.scope, env.frame, {**inst, **arg_bindings, **pb}, env.init_mode))
+            body = compile_body(d.body, Env(sym.scope, env.frame, {**inst, **arg_bindings, **pb}, env.init_mode, env.primed))
             return pre + pp, body
         code = self._symbol_ref(e.name, sym, fake, inner_env, e.loc)
         if compile_body != self.expr:
@@ -792,7 +846,7 @@ class Compiler:
         return case
 
     def c_Let(self, e: A.Let, env: Env) -> Code:
-        env2, resets = self.bind_let(e.defs, env, primed_names(e))
+        env2, resets = self.bind_let(e.defs, env)
         body = self.expr(e.body, env2)
         if not resets:
             return body
@@ -803,9 +857,7 @@ class Compiler:
             return body(s, t, L)
         return let
 
-    def bind_let(self, defs: list[A.OpDef], env: Env, primed: frozenset[str] = frozenset()) -> tuple[Env, list[int]]:
-        """Bind LET definitions; those in `primed` (primed somewhere in the LET) are
-        bound by name, since q' must re-evaluate q's body in the next state."""
+    def bind_let(self, defs: list[A.OpDef], env: Env) -> tuple[Env, list[int]]:
         resets: list[int] = []
         for d in defs:
             if isinstance(d, A.InstanceDef):
@@ -821,12 +873,13 @@ class Compiler:
                 env, reset = self._let_recursive_function(d, env)
                 resets.append(reset)
                 continue
-            if self.info(body_expr, env).action or env.init_mode or d.name in primed:
+            if self.info(body_expr, env).action or env.init_mode:
                 env = env.bind(**{d.name: ByNameLocal(body_expr, env)})
                 continue
             slot = env.frame.alloc()
             code = self.expr(body_expr, env)
-            env = env.bind(**{d.name: LazyLocal(slot, code, body_expr, env)})
+            env = env.bind(**{d.name: LazyLocal(slot, code, (body_expr, env),
+                                                self.state_source(body_expr, env) is not None)})
             resets.append(slot)
         return env, resets
 
@@ -1318,21 +1371,11 @@ class Compiler:
             sym = env.scope.lookup(arg.name)
             if isinstance(sym, VarSym):
                 return self._next_var(sym.index, sym.name, e.loc)
-        info = self.info(arg, env)
-        if info.action:
+        if env.primed or self.info(arg, env).action:
             raise TlaError("semantic", "a primed expression may not contain primes or actions", e.loc)
-        code = self.expr(arg, env)
-        deps = sorted(i for i in info.vars if i != SEARCH_STATE)
-        loc = e.loc
-
-        def primed(s: Any, t: Any, L: list) -> Value:
-            if t is None:
-                raise EvalError("primed expression evaluated outside an action", loc)
-            for i in deps:
-                if t[i] is UNSET:
-                    raise EvalError(f"The variable {self.var_names[i]}' is used before it is assigned a value", loc)
-            return code(t, None, L)
-        return primed
+        # e' is e with every variable primed, through operator arguments, LET
+        # definitions and operator bodies (see `_primed_local`).
+        return self.expr(arg, replace(env, primed=True))
 
     var_names: list[str] = []
 
@@ -1394,9 +1437,6 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 # ------------------------------------------------------------------ helpers
 
 
-_PRIMED_CACHE: dict[int, tuple[A.Expr, frozenset[str]]] = {}
-
-
 def all_names(e: Any) -> set[str]:
     """Every name referred to in `e`, LET definitions included."""
     out: set[str] = set()
@@ -1415,28 +1455,6 @@ def _subterms(e: Any) -> list:
     if isinstance(e, A.Let):
         return [d.body for d in e.defs if isinstance(d, A.OpDef)] + _children(e)
     return _children(e)
-
-
-def primed_names(body: A.Expr) -> frozenset[str]:
-    """Names that occur under a prime, UNCHANGED, ENABLED or a [A]_v subscript in
-    `body` (LET definitions included)."""
-    hit = _PRIMED_CACHE.get(id(body))
-    if hit is not None and hit[0] is body:
-        return hit[1]
-    out: set[str] = set()
-
-    def walk(e: Any) -> None:
-        if isinstance(e, A.Prime) or (isinstance(e, A.Unary) and e.op in ("UNCHANGED", "ENABLED")):
-            out.update(all_names(e))
-            return
-        if isinstance(e, A.StepAction):
-            out.update(all_names(e.sub))
-        for c in _subterms(e):
-            walk(c)
-    walk(body)
-    result = frozenset(out)
-    _PRIMED_CACHE[id(body)] = (body, result)
-    return result
 
 
 def _children(e: Any) -> list:

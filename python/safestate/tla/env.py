@@ -45,20 +45,31 @@ class Frame:
 
 @dataclass(eq=False)
 class SlotLocal:
-    """A bound variable or by-value operator argument stored in ``L[slot]``."""
+    """A bound variable or by-value operator argument stored in ``L[slot]``.
+
+    `source` is the argument expression (and its environment) of an operator
+    argument that reads state: priming the parameter primes that expression."""
 
     slot: int
+    source: "tuple[A.Expr, Env] | None" = None
 
 
 @dataclass(eq=False)
 class LazyLocal:
-    """A zero-argument LET definition, evaluated on first use into ``L[slot]``.  In an
-    action, its body `expr` (in `env`) is expanded instead, as TLC does."""
+    """A zero-argument LET definition, evaluated on first use into ``L[slot]``.
+
+    `body` is the definition's body and its environment: in an action TLC expands a
+    LET name used as a conjunct, so a disjunction inside it branches.  `source` is the
+    same when the body reads state: priming the name primes that expression."""
 
     slot: int
     code: Code
-    expr: A.Expr | None = None
-    env: "Env | None" = None
+    body: "tuple[A.Expr, Env] | None" = None
+    reads_state: bool = False
+
+    @property
+    def source(self) -> "tuple[A.Expr, Env] | None":
+        return self.body if self.reads_state else None
 
 
 @dataclass(eq=False)
@@ -97,9 +108,12 @@ class Env:
     locals: dict[str, Local] = field(default_factory=dict)
     # Compiling the initial predicate: unprimed variables are the state being built.
     init_mode: bool = False
+    # Compiling the inside of ``e'``: variables (and operator arguments and LET
+    # definitions that read them) denote their values in the next state `t`.
+    primed: bool = False
 
-    def bind(env, **bindings: Local) -> "Env":  # noqa: N805 - a TLA+ name may be `self`
-        return replace(env, locals={**env.locals, **bindings})
+    def bind(self, /, **bindings: Local) -> "Env":  # positional-only: a TLA+ name may be `self`
+        return replace(self, locals={**self.locals, **bindings})
 
     def bind_all(self, bindings: dict[str, Local]) -> "Env":
         return replace(self, locals={**self.locals, **bindings})

@@ -24,14 +24,23 @@ from .parser import parse_text
 from .stdlib import STANDARD_MODULES, UNSUPPORTED_MODULES, Builtin
 
 
+def decode_source(raw: bytes) -> str:
+    """A module's text: UTF-8, or else Latin-1 (TLC reads any bytes; non-ASCII can only
+    appear in comments and strings, e.g. an accented name in a header comment)."""
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return raw.decode("latin-1")
+
+
 def load_module(path: str) -> A.Module:
     """Parse the .tla file at `path`; returns its (first) module."""
     try:
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
+        with open(path, "rb") as f:
+            raw = f.read()
     except OSError as e:
         raise TlaError("semantic", f"cannot read module file: {e.strerror}", Loc(path, 0, 0)) from None
-    modules = parse_text(text, path)
+    modules = parse_text(decode_source(raw), path)
     root = modules[0]
     for extra in modules[1:]:
         root.submodules.setdefault(extra.name, extra)

@@ -150,6 +150,12 @@ class _Converter:
                 raise TlaError("syntax", f"parse error: expected {n.type.replace('_', ' ')} before this token",
                                self.next_token_loc(n.start_byte))
             if n.type == "ERROR":
+                if n.start_point == root.start_point:
+                    # The whole module failed to parse: find the cause in the text.
+                    from .syntax_hints import locate
+                    hint = locate(self.file, self.data)
+                    if hint is not None:
+                        raise TlaError("syntax", hint[0], hint[1])
                 snippet = self.text(n).strip().splitlines()[0][:40] if self.text(n).strip() else ""
                 raise self.syntax(f"parse error: unexpected input {snippet!r}", n)
             if n.has_error:
