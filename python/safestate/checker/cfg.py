@@ -3,7 +3,7 @@
 Supported statements: INIT, NEXT, SPECIFICATION, INVARIANT(S), PROPERTY/PROPERTIES,
 CONSTANT(S) (``N = 3``, ``S = {a, b}``, ``a = a`` for model values, ``C <- Op``),
 CONSTRAINT(S), ACTION_CONSTRAINT(S), CHECK_DEADLOCK TRUE/FALSE, SYMMETRY, VIEW,
-POSTCONDITION and ALIAS are rejected as unsupported.  Comments ``\\*`` and ``(* *)``.
+ALIAS and POSTCONDITION.  Comments ``\\*`` and ``(* *)``.
 Constant values are integers, strings, TRUE/FALSE, model values (identifiers),
 and sets / tuples of those.
 """
@@ -44,6 +44,8 @@ class Config:
     action_constraints: list[ConfigEntry] = field(default_factory=list)
     symmetry: ConfigEntry | None = None
     view: ConfigEntry | None = None
+    alias: ConfigEntry | None = None
+    postcondition: ConfigEntry | None = None
     check_deadlock: bool = True
     # CONSTANT name -> (value, loc); substitutions name -> (operator name, loc)
     constants: dict[str, tuple[Any, Loc]] = field(default_factory=dict)
@@ -109,7 +111,7 @@ def parse_config_text(text: str, file: str) -> Config:
         if word in _KEYWORDS:
             section = word
             i += 1
-            if word in ("INIT", "NEXT", "SPECIFICATION", "SYMMETRY", "VIEW"):
+            if word in ("INIT", "NEXT", "SPECIFICATION", "SYMMETRY", "VIEW", "ALIAS", "POSTCONDITION"):
                 entry = need_name(i)
                 setattr(cfg, word.lower(), entry)
                 i += 1
@@ -120,8 +122,6 @@ def parse_config_text(text: str, file: str) -> Config:
                 cfg.check_deadlock = toks[i].text == "TRUE"
                 i += 1
                 section = None
-            elif word in ("POSTCONDITION", "ALIAS"):
-                raise TlaError("unsupported", f"the configuration statement {word} is not supported", tok.loc)
             continue
         if section is None:
             raise TlaError("config", f"unexpected {word!r} in configuration file", tok.loc)

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from ..tla.errors import EvalError, TlaError
+from ..tla.tlcget import RUNTIME
 from .model import Model
 from .deep_stack import call_with_deep_stack
 
@@ -213,6 +214,8 @@ class Explorer:
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
         m = self.m
+        if RUNTIME.used:
+            RUNTIME.search = self
         try:
             try:
                 m.run_init(self._on_init)
@@ -254,6 +257,8 @@ class Explorer:
         m.check_complete(st, None)
         new = True
         idx = -1
+        if RUNTIME.used:
+            RUNTIME.level = 1
         if m.in_model(st):
             key = m.key(st)
             found = self.seen.get(key)
@@ -320,11 +325,16 @@ class Explorer:
         graph = self.graph
         action_properties = m.action_properties
         UNSET_ = _UNSET
+        runtime = RUNTIME if RUNTIME.used else None
+        if runtime is not None:
+            runtime.expanding, runtime.level = 1, next_level - 1
 
         def on_succ(st: tuple, leaf: int, L: list) -> None:
             self.generated += 1
             if UNSET_ in st:
                 m.check_complete(st, leaf)
+            if runtime is not None:
+                runtime.level = next_level
             in_model = True
             if constrained:
                 in_model = m.in_model(st) and m.action_ok(cur, st)
@@ -335,6 +345,8 @@ class Explorer:
                 idx = seen_get(key, -1)
                 if idx < 0:
                     idx = self._add(st, key, i, leaf, next_level)
+                    if runtime is not None:
+                        runtime.pending = 1
                 else:
                     new = False
             if self.live_edges and in_model:
@@ -351,6 +363,8 @@ class Explorer:
                         self._finish("safety failure", inv.name, i, Step(st, lf.name, m.leaf_params(leaf, L)))
             if action_properties:
                 self._check_action_properties(i, cur, st, idx if new else -1, leaf, lambda: m.leaf_params(leaf, L))
+            if runtime is not None:
+                runtime.pending, runtime.level = 0, next_level - 1
         try:
             m.run_next(cur, on_succ)
         except TlaError as e:
@@ -380,7 +394,7 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
                    progress: Callable[[str], None] | None = None) -> CheckResult:
     """Explore every reachable state; see the module docstring for the semantics."""
     start = time.monotonic()
-    if workers > 1 and not graph:
+    if workers > 1 and not graph and not RUNTIME.used:  # TLCGet/TLCSet need one search
         from .parallel import ParallelExplorer
         explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
     else:
@@ -389,8 +403,29 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness
         call_with_deep_stack(lambda: check_liveness(model, explorer, result))
+    if result.result == "success" and model.postcondition is not None:
+        _check_postcondition(model, result)
     result.seconds = time.monotonic() - start
     return result
+
+
+def _check_postcondition(model: Model, result: CheckResult) -> None:
+    """TLC evaluates the POSTCONDITION after a search without error (TLCGet sees the
+    final counters); a false one is reported as TLC does, with exit code 10."""
+    post = model.postcondition
+    assert post is not None
+    RUNTIME.level = RUNTIME.expanding = RUNTIME.pending = 0  # the search is over
+    try:
+        ok = model.holds(post, ())
+    except TlaError as e:
+        result.result, result.error = "error", e
+        return
+    if not ok:
+        sym = model.scope.lookup(post.name)
+        loc = sym.defn.body.loc if hasattr(sym, "defn") else post.loc
+        result.result = "error"
+        result.error = TlaError("assumption", f"Postcondition {post.name} at line {loc.line}, col {loc.column} "
+                                f"of module {model.module.name} is false.", loc)
 
 
 def print_progress(msg: str) -> None:

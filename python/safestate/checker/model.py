@@ -29,7 +29,9 @@ from ..tla.errors import EvalError, Loc, TlaError, UnsupportedError
 from ..tla.modules import (BuiltinSym, ConstSym, DefSym, ModuleLoader, Scope, VarSym, build_root_scope,
                            load_module, tlc_intern_order)
 from ..tla.parser import parse_text
-from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order
+from ..tla.resolve import check_modules
+from ..tla.tlcget import RUNTIME
+from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order, reset_token_order
 from .cfg import Config, ConfigEntry, parse_config
 from .itf import state_from_itf, state_to_itf
 from .temporal import Fairness, Obligation, TemporalCompiler
@@ -68,6 +70,10 @@ class Model:
     action_properties: list[Named] = field(default_factory=list)
     liveness: list[Obligation] = field(default_factory=list)
     view: Named | None = None
+    # ALIAS: the record shown instead of the variables in a text counterexample.
+    alias: Named | None = None
+    # POSTCONDITION: evaluated once after a search that found no error.
+    postcondition: Named | None = None
     symmetry: list[dict] | None = None
     leaves: list[Leaf] = field(default_factory=list)
     _init: Any = None
@@ -173,10 +179,17 @@ class Model:
         return state_from_itf(self.variables, obj)
 
     def format_state(self, state: tuple) -> str:
-        """TLC's rendering of a state: one ``/\\ x = v`` line per variable."""
-        if len(self.variables) == 1:
-            return f"{self.variables[0]} = {fmt(state[0])}"
-        return "\n".join(f"/\\ {n} = {fmt(v)}" for n, v in zip(self.variables, state))
+        """TLC's rendering of a state: one ``/\\ x = v`` line per variable, or per field
+        of the ALIAS record."""
+        pairs: list[tuple[str, Value]] = list(zip(self.variables, state))
+        if self.alias is not None:
+            rec = self.alias.fn(state, None)
+            if type(rec) is not FnValue or not all(type(k) is str for k in rec.d):
+                raise EvalError(f"The ALIAS {self.alias.name} must be a record, not {fmt(rec)}", self.alias.loc)
+            pairs = list(rec.d.items())
+        if len(pairs) == 1:
+            return f"{pairs[0][0]} = {fmt(pairs[0][1])}"
+        return "\n".join(f"/\\ {n} = {fmt(v)}" for n, v in pairs)
 
 
 def _permute(v: Value, p: dict) -> Value:
@@ -201,6 +214,8 @@ def default_config_path(tla_path: str) -> str:
 
 def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
     """Parse, resolve and compile a model.  Raises `TlaError` on any problem."""
+    RUNTIME.reset()
+    RUNTIME.used = False
     module = load_module(tla_path)
     cfg_path = cfg_path or default_config_path(tla_path)
     if not os.path.exists(cfg_path):
@@ -213,9 +228,11 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
         if e.kind != "config":
             raise
         raise TlaError("cfg syntax", e.message, e.loc) from None
+    reset_token_order()
     register_token_order(config.tokens)
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
+    check_modules(module, loader)
     register_token_order(tlc_intern_order(loader))
     constants, overrides = _constants(config, scope, module)
     compiler = Compiler(constants, overrides)
@@ -234,6 +251,15 @@ def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
         model.view = _predicate(model, config.view, "view", boolean=False)
     if config.symmetry is not None:
         model.symmetry = _symmetry(model, config.symmetry)
+    if config.alias is not None:
+        model.alias = _predicate(model, config.alias, "alias", boolean=False)
+    if config.postcondition is not None:
+        model.postcondition = _predicate(model, config.postcondition, "postcondition")
+        if any(v >= 0 for v in model.compiler.def_info(_lookup_def(model, config.postcondition,
+                                                                       "postcondition")).vars):
+            raise UnsupportedError(f"the postcondition {config.postcondition.name} reads state variables; "
+                                   f"only constant-level postconditions (TLCGet, ...) are supported",
+                                   config.postcondition.loc)
     return model
 
 
@@ -372,6 +398,10 @@ def _compile_behaviour(model: Model) -> None:
             raise TlaError("config", "The configuration file specifies both SPECIFICATION and INIT/NEXT.",
                            cfg.specification.loc)
         init, nxt = _split_spec(model, cfg.specification)
+    elif cfg.init is None and cfg.next is None:
+        # No behaviour: TLC only evaluates the ASSUMEs and reports 0 states.
+        model._init = model._next = lambda s, t, L: None
+        return
     else:
         if cfg.init is None:
             raise TlaError("config", "The configuration file did not specify the initial state predicate.",

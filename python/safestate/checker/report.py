@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TextIO
 
 from ..tla.errors import TlaError
+from ..tla.tlcget import RUNTIME
 from .explore import CheckResult, Step
 from .model import Model
 
@@ -20,6 +21,7 @@ def write_trace(out: TextIO, model: Model, trace: list[Step],
     for i, step in enumerate(trace, 1):
         label = "<Initial predicate>" if i == 1 else _step_label(model, step)
         print(f"State {i}: {label}", file=out)
+        RUNTIME.level = i  # an ALIAS may show TLCGet("level")
         print(model.format_state(step.state), file=out)
         print(file=out)
 

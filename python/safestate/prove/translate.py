@@ -324,6 +324,8 @@ class Translator:
         new: dict[str, Any] = {}
         inner = ctx.bind(new)
         for d in e.defs:
+            if isinstance(d, A.InstanceDef):  # the checker takes INSTANCE in LET; the prover not yet
+                raise ProveError("INSTANCE inside LET", d.loc)
             if d.params or d.fn_bounds:
                 new[d.name] = _LetOp(d, inner)
             else:

@@ -21,12 +21,13 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from . import ast as A
-from .compiler import Compiler, _enum_checked, _prefix, check_bool
-from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, SlotLocal
+from .compiler import Compiler, _enum_checked, _prefix, all_names, check_bool
+from .compiler import _assign as assign_binder
+from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
-from .values import member, values_equal
+from .values import LazySet, member, values_equal
 
 Cont = Callable[[Any, Any, list], None]
 
@@ -96,6 +97,7 @@ class ActionCompiler:
                 k(s, t, L)
             elif v is not False:
                 check_bool(v, loc, "action conjunct")
+        guard.cont = k  # type: ignore[attr-defined]  # for _plain_guard
         return guard
 
     def a_Bool(self, e: A.Bool, env: Env, k: Cont) -> Code:
@@ -171,12 +173,16 @@ class ActionCompiler:
         pending ones are booleans once every variable is assigned."""
         inner, binds = self.c.bind_bounds(e.bounds, env)
         slot = env.frame.alloc()
+        lo = env.frame.size
+        body_slots: list[int] = []  # slots the body uses (inlined parameters, LETs)
 
         def after(s: Any, t: Any, L: list) -> None:
             order, pos = L[slot]
             if pos + 1 >= len(order):
                 k(s, t, L)
                 return
+            # A later branch of this instance continues with its own slot values.
+            saved = [L[sl] for sl in body_slots]
             L[slot] = (order, pos + 1)
             _bind_combo(L, binds, order[pos + 1])
             if UNSET in t:
@@ -185,10 +191,13 @@ class ActionCompiler:
                 test(s, t, L)
             L[slot] = (order, pos)
             _bind_combo(L, binds, order[pos])
+            for sl, v in zip(body_slots, saved):
+                L[sl] = v
         body = self.action(e.body, inner, after)
-        if _plain_guard(body):
-            return None  # a plain boolean \A: the same successors, evaluated once
+        if _plain_guard(body, after):
+            return None  # a plain boolean \\A: the same successors, evaluated once
         test = self.guard(e.body, inner, after)
+        body_slots.extend(range(lo, env.frame.size))
 
         def forall(s: Any, t: Any, L: list) -> None:
             combos = _combos(binds, s, t, L)
@@ -248,16 +257,21 @@ class ActionCompiler:
     def _call(self, e: A.Name | A.Apply, args: list[A.Expr], env: Env, k: Cont) -> Code | None:
         local = env.locals.get(e.name)
         if local is not None:
-            from .env import ByNameLocal, LetOpLocal
             if isinstance(local, ByNameLocal) and not args:
                 return self.action(local.expr, local.env, k)
-            if isinstance(local, LetOpLocal) and not self.c._mentions(local.defn.body, e.name):
+            # TLC expands a LET definition used as a conjunct (getNextStatesAppl), so a
+            # disjunction or \\E inside it branches; if nothing branches, its value is the same.
+            if isinstance(local, LazyLocal) and local.body is not None and not args:
+                code = self.action(local.body[0], local.body[1], k)
+                return None if _plain_guard(code, k) else code
+            if isinstance(local, LetOpLocal) and e.name not in all_names(local.defn.body):
                 # Like a user operator: descend into its body (TLC does).
                 pre, code = self.c.inline_let_op(e.name, local, args, env, e.loc,
                                                  lambda b, benv: self.action(b, benv, k))
                 return _prefix_act(pre, code)
             return None
         sym = env.scope.lookup(e.name)
+        sym = self.c.sym_overrides.get(id(sym), sym)  # C <- Op: expand Op
         if isinstance(sym, SubstSym) and not args:
             inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
             return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode, env.primed), k)
@@ -311,7 +325,7 @@ class ActionCompiler:
         i, name = target
         if e.op == "=":
             return self._assign(i, self.c.expr(e.rhs, env), k, e.loc)
-        return self._assign_in(i, self.c.expr(e.rhs, env), k, e.rhs.loc)
+        return self._assign_in(i, self.c.expr(e.rhs, env), k, e.loc, env.init_mode)
 
     # ---------------------------------------------------------------- assignments
     def _target_var(self, lhs: A.Expr, env: Env, depth: int = 0) -> tuple[int, str] | None:
@@ -372,11 +386,17 @@ class ActionCompiler:
                 k(s, t, L)
         return assign
 
-    def _assign_in(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
+    def _assign_in(self, i: int, rhs: Code, k: Cont, loc: Loc, init: bool = False) -> Code:
+        # TLC's wording when the set is infinite (Nat, Seq(S), {x \in Nat : P} ...).
+        not_enumerable = (f"In computing {'initial' if init else 'next'} states, the right side of \\IN "
+                          f"is not enumerable.")
+
         def assign_in(s: Any, t: Any, L: list) -> None:
             S = rhs(s, t, L)
             cur = t[i]
             if cur is UNSET:
+                if isinstance(S, LazySet) and not S.finite:
+                    raise EvalError(not_enumerable, loc)
                 for v in _enum_checked(S, loc):
                     t[i] = v
                     k(s, t, L)
@@ -433,9 +453,15 @@ class ActionCompiler:
         return None
 
 
-def _plain_guard(code: Code) -> bool:
-    """Is `code` a boolean guard (made by `ActionCompiler.guard`), which never branches?"""
-    return getattr(code, "__name__", "") == "guard"
+def _plain_guard(code: Code, k: Cont | None = None) -> bool:
+    """Is `code` a boolean guard (made by `ActionCompiler.guard`)?  With `k`: a chain of
+    guards ending in `k`, which never branches (a guard may continue with a branching
+    conjunct, as in ``/\\ P /\\ (Q \\/ R)``)."""
+    while getattr(code, "__name__", "") == "guard":
+        code = code.cont  # type: ignore[attr-defined]
+        if k is None or code is k:
+            return True
+    return False
 
 
 def assign_run(run: list[tuple[int, Code, Loc]], k: Cont) -> Code:
@@ -500,7 +526,6 @@ def _branches(branches: list[Code]) -> Code:
 
 
 def _exists(binds: list, body: Code) -> Code:
-    from .compiler import _assign as assign_binder
     if len(binds) == 1 and not binds[0][2]:
         set_code, (slot,), _, sloc = binds[0]
 
@@ -530,7 +555,6 @@ def _combos(binds: list, s: Any, t: Any, L: list) -> list[tuple]:
 
 
 def _bind_combo(L: list, binds: list, combo: tuple) -> None:
-    from .compiler import _assign as assign_binder
     for (_, slots, is_tuple, sloc), v in zip(binds, combo):
         assign_binder(L, slots, is_tuple, v, sloc)
 

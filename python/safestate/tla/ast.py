@@ -232,7 +232,7 @@ class Case(Expr):
 
 @dataclass(slots=True, eq=False)
 class Let(Expr):
-    defs: list["OpDef"]
+    defs: list["OpDef | InstanceDef"]
     body: Expr
 
 
@@ -313,6 +313,9 @@ class Module:
     # Definitions and instances in source order (later ones may refer to earlier ones).
     units: list[OpDef | InstanceDef] = field(default_factory=list)
     assumes: list[Assume] = field(default_factory=list)
+    # THEOREM/LEMMA/... statements (name or None, statement, position): resolved like
+    # every definition, never evaluated; their proofs are skipped.
+    theorems: list[tuple[str | None, Expr, Loc]] = field(default_factory=list)
     recursive: set[str] = field(default_factory=set)
     # Nested modules declared inside this module's text, by name.
     submodules: dict[str, "Module"] = field(default_factory=dict)

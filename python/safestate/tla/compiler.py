@@ -23,11 +23,12 @@ from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
 from .errors import EvalError, Loc, TlaError, UnsupportedError
-from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym
+from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym, let_instance_scope
 from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
+from .tlcget import RUNTIME
 from .stdlib import NATURALS, cap, cup, domain, setminus, subseteq, union
-from .values import (BOOLEAN, STRING, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
+from .values import (BOOLEAN, STRING, FilteredSet, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
                      ProductSet, RecSetValue, as_set, fmt, is_set, kind, make_fn, member,
                      sorted_elems, values_equal)
 
@@ -60,15 +61,20 @@ class Info:
 
 
 _NO_INFO = Info(frozenset(), False)
+# In Info.vars: the expression reads TLCGet's counters (a pseudo-variable).
+SEARCH_STATE = -1
 
 
 class RecursiveFunction:
-    """``f[x \\in S] == body`` referring to itself: applied lazily, memoised."""
+    """``f[x \\in S] == body`` referring to itself: applied lazily, memoised.  Each
+    application evaluates `body` on a copy of `frame` (the enclosing LET's frame, or a
+    fresh one) after `bind` has stored the argument in its slots."""
 
-    __slots__ = ("dom", "body", "slot", "size", "memo", "s", "t")
+    __slots__ = ("dom", "body", "bind", "frame", "memo", "s", "t")
 
-    def __init__(self, dom: Value, body: Code, slot: int, size: int, s: Any, t: Any) -> None:
-        self.dom, self.body, self.slot, self.size, self.s, self.t = dom, body, slot, size, s, t
+    def __init__(self, dom: Value, body: Code, bind: Callable[[list, Value], None], frame: list,
+                 s: Any, t: Any) -> None:
+        self.dom, self.body, self.bind, self.frame, self.s, self.t = dom, body, bind, frame, s, t
         self.memo: dict = {}
 
     def apply(self, x: Value) -> Value:
@@ -76,8 +82,8 @@ class RecursiveFunction:
         if r is NOTSET:
             if not member(x, self.dom):
                 raise EvalError(f"Attempted to apply function to argument {fmt(x)}, which is not in its domain")
-            L = [None] * self.size
-            L[self.slot] = x
+            L = list(self.frame)
+            self.bind(L, x)
             r = self.memo[x] = self.body(self.s, self.t, L)
         return r
 
@@ -107,6 +113,8 @@ class Compiler:
         # > 0 while compiling a body that runs re-entrantly on a shared frame (see inline.py).
         self._no_inline = 0
         self.folder = ConstFolder(self)
+        # (id of a LET's INSTANCE, id of the enclosing scope) -> the LET body's scope
+        self._let_scopes: dict[tuple[int, int], Scope] = {}
 
     # ================================================================ entry points
     def compile_unit(self, e: A.Expr, scope: Scope) -> tuple[Code, int]:
@@ -158,10 +166,16 @@ class Compiler:
                     sym = self._resolve(name, env.scope)
                     self._walk_sym(sym, env, vs, action)
         if isinstance(e, A.Prefixed):
-            action[0] = action[0] or self._prefixed_info(e, env).action
+            pinfo = self._prefixed_info(e, env)
+            vs.update(pinfo.vars)
+            action[0] = action[0] or pinfo.action
         if isinstance(e, A.Let):
             bound = bound | {d.name for d in e.defs}
             for d in e.defs:
+                if isinstance(d, A.InstanceDef):
+                    env = replace(env, scope=self.let_scope(d, env))
+                    bound = bound - {d.name}
+                    continue
                 self._walk(d.body, env, vs, action, bound | {p.name for p in d.params})
             self._walk(e.body, env, vs, action, bound)
             return
@@ -201,6 +215,8 @@ class Compiler:
         elif isinstance(sym, SubstSym):
             sub_env = Env(sym.scope, env.frame)
             self._walk(sym.expr, sub_env, vs, action, set(sym.instance_params))
+        elif isinstance(sym, BuiltinSym) and sym.builtin.name in ("TLCGet", "TLCSet"):
+            vs.add(SEARCH_STATE)  # reads the search's counters: never a constant
 
     def _prefixed_info(self, e: A.Prefixed, env: Env) -> Info:
         scope = self._instance_scope(e, env)
@@ -402,8 +418,8 @@ class Compiler:
         if self.info(a, env).vars:
             return True
         # A name bound to a state-reading argument reads state too.
-        return any(isinstance(l, (SlotLocal, LazyLocal)) and l.source is not None
-                   for n, l in env.locals.items() if self._mentions(a, n))
+        locs = [env.locals.get(n) for n in all_names(a)]
+        return any(isinstance(l, (SlotLocal, LazyLocal)) and l.source is not None for l in locs)
 
     def _inline_lambda(self, lam: A.Lambda, args: list[A.Expr], lam_env: Env, env: Env, loc: Loc) -> Code:
         self._arity("LAMBDA", len(lam.params), args, loc)
@@ -440,7 +456,10 @@ class Compiler:
         # In Init only bodies that read variables need the state being built (and a
         # recursive one cannot be expanded).
         init = env.init_mode and (info.vars or not sym.recursive)
-        if info.action or sym.scope.parameterised or init or (env.primed and info.vars):
+        # An action-level argument (Send(p, x, x')) is passed by name, as TLC expands
+        # the operator: its body may assign the primed variable.
+        action_arg = any(self.info(a, env).action for a in args if not isinstance(a, A.Lambda))
+        if info.action or sym.scope.parameterised or init or action_arg or (env.primed and info.vars):
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
         if d.fn_bounds is not None:
@@ -508,7 +527,8 @@ class Compiler:
         return pre, body
 
     def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc) -> tuple[dict, list]:
-        """Bind operator parameters: by value into fresh slots, or by name for
+        """Bind operator parameters: by value into fresh slots (remembering an argument
+        that reads state, which a prime in the body primes), or by name for
         action-level arguments (which the body must see unevaluated)."""
         bindings: dict[str, Any] = {}
         pre: list[tuple[int, Code]] = []
@@ -573,8 +593,24 @@ class Compiler:
         d = sym.defn
         assert d.fn_bounds is not None
         if len(d.fn_bounds) != 1 or len(d.fn_bounds[0].names) != 1 or d.fn_bounds[0].tuple:
-            code, size = self.compile_unit(A.FnLit(d.loc, d.fn_bounds, d.body), sym.scope)
-            return lambda s, t, L: code(s, t, [None] * size)
+            # f[m \in S, n \in T] == ... f[..] ...: as a recursive LET function.
+            frame = Frame()
+            env, fslot = self._let_recursive_function(d, Env(sym.scope, frame))
+            read = self.expr(A.Name(d.loc, d.name), env)
+            info = self.def_info(sym)
+            constant = not info.vars and not info.action
+            cache: list = []  # constant-level: the same function every time
+
+            def several(s: Any, t: Any, L: list) -> Value:
+                if cache:
+                    return cache[0]
+                L2 = [None] * frame.size
+                L2[fslot] = NOTSET
+                v = read(s, t, L2)
+                if constant:
+                    cache.append(v)
+                return v
+            return several
         compiled = sym.compiled
         if compiled is None:
             frame = Frame()
@@ -595,7 +631,7 @@ class Compiler:
             def with_self(s2: Any, t2: Any, L2: list) -> Value:
                 L2[self_slot] = f
                 return body(s2, t2, L2)
-            f = RecursiveFunction(dom, with_self, slot, size, s, t)
+            f = RecursiveFunction(dom, with_self, lambda L2, x: L2.__setitem__(slot, x), [None] * size, s, t)
             if isinstance(dom, LazySet) and not dom.finite:
                 return f
             return f.materialize()
@@ -605,21 +641,27 @@ class Compiler:
         d = local.defn
         self._arity(name, len(d.params), args, loc)
         if not local.holder:
-            local.holder.append(None)
+            local.holder.extend([None, []])
             bindings = {}
             for p, sl in zip(d.params, local.param_slots):
                 bindings[p.name] = OpLocal(sl, p.arity) if p.arity else SlotLocal(sl)
             self._no_inline += 1
+            lo = local.env.frame.size
             try:
                 local.holder[0] = self.expr(d.body, local.env.bind_all(bindings))
             finally:
                 self._no_inline -= 1
+            if d.name in all_names(d.body):
+                # A recursive call reuses the slots of the body's own LETs and binders:
+                # save and restore them around each call, as for the parameters.
+                local.holder[1] = list(range(lo, local.env.frame.size))
         holder = local.holder
-        slots = local.param_slots
+        param_slots = local.param_slots
         arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
 
         def call(s: Any, t: Any, L: list) -> Value:
             vals = [a(s, t, L) for a in arg_codes]
+            slots = param_slots + holder[1] if holder[1] else param_slots
             saved = [L[sl] for sl in slots]
             for sl, v in zip(slots, vals):
                 L[sl] = v
@@ -634,11 +676,13 @@ class Compiler:
         b = sym.builtin
         self._arity(b.name, b.arity, args, loc)
         fn = b.fn
+        if b.name in ("TLCGet", "TLCSet"):
+            RUNTIME.used = True  # the explorer keeps the counters up to date
         if b.arity == 0:
             v = fn()
             return lambda s, t, L: v
         if b.higher_order:
-            arities = {"SelectSeq": [0, 1], "SortSeq": [0, 2]}[b.name]
+            arities = {"SelectSeq": [0, 1], "SortSeq": [0, 2], "BagOfAll": [1, 0]}[b.name]
             codes = [self._arg(a, ar, env, loc) for a, ar in zip(args, arities)]
         else:
             codes = [self.expr(a, env) for a in args]
@@ -668,6 +712,7 @@ class Compiler:
             params = sym.inst.params
             self._arity(step.name, len(params), step.args, e.loc)
             b, p = self.bind_params(params, step.args, env, e.loc)
+            bindings.update({n: env.locals[n] for n in sym.let_locals if n in env.locals})
             bindings.update(b)
             pre.extend(p)
             scope = sym.scope
@@ -815,28 +860,70 @@ class Compiler:
     def bind_let(self, defs: list[A.OpDef], env: Env) -> tuple[Env, list[int]]:
         resets: list[int] = []
         for d in defs:
+            if isinstance(d, A.InstanceDef):
+                env = replace(env, scope=self.let_scope(d, env))
+                continue
             if d.params:
                 local: Any = LetOpLocal(d, env, [env.frame.alloc() for _ in d.params], [])
                 env = env.bind(**{d.name: local})
                 local.env = env  # may call itself (RECURSIVE)
                 continue
             body_expr: A.Expr = A.FnLit(d.loc, d.fn_bounds, d.body) if d.fn_bounds else d.body
-            if d.fn_bounds and self._mentions(d.body, d.name):
-                raise UnsupportedError("recursive function definition inside LET", d.loc)
+            if d.fn_bounds and d.name in all_names(d.body):
+                env, reset = self._let_recursive_function(d, env)
+                resets.append(reset)
+                continue
             if self.info(body_expr, env).action or env.init_mode:
                 env = env.bind(**{d.name: ByNameLocal(body_expr, env)})
                 continue
             slot = env.frame.alloc()
             code = self.expr(body_expr, env)
-            env = env.bind(**{d.name: LazyLocal(slot, code, self.state_source(body_expr, env))})
+            env = env.bind(**{d.name: LazyLocal(slot, code, (body_expr, env),
+                                                self.state_source(body_expr, env) is not None)})
             resets.append(slot)
         return env, resets
 
-    @staticmethod
-    def _mentions(e: Any, name: str) -> bool:
-        if isinstance(e, (A.Name, A.Apply)) and e.name == name:
-            return True
-        return any(Compiler._mentions(c, name) for c in _children(e))
+    def let_scope(self, inst: A.InstanceDef, env: Env) -> Scope:
+        """The scope after ``LET I == INSTANCE M ...`` (built once per enclosing scope)."""
+        key = (id(inst), id(env.scope))
+        scope = self._let_scopes.get(key)
+        if scope is None:
+            scope = self._let_scopes[key] = let_instance_scope(env.scope, inst, tuple(env.locals))
+        return scope
+
+    def _let_recursive_function(self, d: A.OpDef, env: Env) -> tuple[Env, int]:
+        """``LET f[x \\in S] == ... f[..] ... IN``: a `RecursiveFunction` over a copy of the
+        LET's frame, so that the body sees the enclosing bound variables."""
+        assert d.fn_bounds is not None
+        slot = env.frame.alloc()
+        holder: list[Code] = []
+        env = env.bind(**{d.name: LazyLocal(slot, lambda s, t, L: holder[0](s, t, L))})
+        inner, binds = self.bind_bounds(d.fn_bounds, env)
+        body = self.expr(d.body, inner)
+        set_codes = [b[0] for b in binds]
+        loc = d.loc
+
+        def bind(L: list, x: Value) -> None:
+            if len(binds) == 1:
+                _assign(L, binds[0][1], binds[0][2], x, loc)
+                return
+            if type(x) is not tuple or len(x) != len(binds):
+                raise EvalError(f"Attempted to apply function {d.name} to argument {fmt(x)}, which is not in "
+                                f"its domain", loc)
+            for (_, slots, is_tuple, _), v in zip(binds, x):
+                _assign(L, slots, is_tuple, v, loc)
+
+        def make(s: Any, t: Any, L: list) -> Value:
+            doms = [_need_set(c(s, t, L), "function definition") for c in set_codes]
+            dom = doms[0] if len(doms) == 1 else ProductSet(tuple(doms))
+            frame = list(L)
+            f = RecursiveFunction(dom, body, bind, frame, s, t)
+            frame[slot] = f
+            if isinstance(dom, LazySet) and not dom.finite:
+                return f
+            return f.materialize()
+        holder.append(_guard(make, loc))
+        return env, slot
 
     # ---------------------------------------------------------------- quantifiers
     def bind_bounds(self, bounds: list[A.Bound], env: Env) -> tuple[Env, list[tuple[Code, list[int], bool, Loc]]]:
@@ -932,9 +1019,12 @@ class Compiler:
         set_code, slots, is_tuple, sloc = binds[0]
         ploc = e.pred.loc
 
-        def filt(s: Any, t: Any, L: list) -> frozenset:
+        def filt(s: Any, t: Any, L: list) -> Value:
+            base = set_code(s, t, L)
+            if isinstance(base, LazySet) and not base.finite:
+                return _lazy_filter(base, pred, slots, is_tuple, sloc, ploc, s, t, list(L))
             out = []
-            for v in _enum_checked(set_code(s, t, L), sloc):
+            for v in _enum_checked(base, sloc):
                 _assign(L, slots, is_tuple, v, sloc)
                 r = pred(s, t, L)
                 if r is True:
@@ -1347,6 +1437,26 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 # ------------------------------------------------------------------ helpers
 
 
+def all_names(e: Any) -> set[str]:
+    """Every name referred to in `e`, LET definitions included."""
+    out: set[str] = set()
+
+    def walk(x: Any) -> None:
+        if isinstance(x, (A.Name, A.Apply)):
+            out.add(x.name)
+        for c in _subterms(x):
+            walk(c)
+    walk(e)
+    return out
+
+
+def _subterms(e: Any) -> list:
+    """The children of `e`, and the bodies of its LET definitions."""
+    if isinstance(e, A.Let):
+        return [d.body for d in e.defs if isinstance(d, A.OpDef)] + _children(e)
+    return _children(e)
+
+
 def _children(e: Any) -> list:
     if isinstance(e, A.Expr) or isinstance(e, (A.Bound, A.ExceptUpdate)):
         out = []
@@ -1444,6 +1554,18 @@ def _assign(L: list, slots: list[int], is_tuple: bool, v: Value, loc: Loc) -> No
         raise EvalError(f"Attempted to match {fmt(v)} against a tuple of {len(slots)} identifiers", loc)
     for sl, x in zip(slots, v):
         L[sl] = x
+
+
+def _lazy_filter(base: LazySet, pred: Code, slots: list[int], is_tuple: bool, sloc: Loc, ploc: Loc,
+                 s: Any, t: Any, L: list) -> FilteredSet:
+    """{x \\in S : P} over an infinite S: membership tests x \\in S and P(x) (TLC's
+    SetPredValue), enumeration is an error."""
+    def test(v: Value) -> bool:
+        if not base.contains(v):
+            return False
+        _assign(L, slots, is_tuple, v, sloc)
+        return check_bool(pred(s, t, L), ploc, "set filter")
+    return FilteredSet(test, f"{{x \\in {base.describe()} : ...}}")
 
 
 def _comprehension(binds: list, body: Code, finish: Callable | None, key_of: Callable | None = None) -> Code:

@@ -22,7 +22,7 @@ from .env import ByNameLocal, Env
 from .modules import BuiltinSym, ConstSym, DefSym, VarSym
 
 # Builtins whose evaluation has an effect besides its value.
-IMPURE_BUILTINS = frozenset({"Print", "PrintT", "Assert"})
+IMPURE_BUILTINS = frozenset({"Print", "PrintT", "Assert", "TLCGet", "TLCSet"})
 
 _NOT_CONSTANT = None  # free_names() result for expressions that are never constant
 
@@ -150,7 +150,7 @@ class ConstFolder:
         if t is A.Let:
             bound = {d.name for d in e.defs}
             for d in e.defs:
-                if d.fn_bounds:
+                if isinstance(d, A.InstanceDef) or d.fn_bounds:
                     return None
                 b = self.free_names(d.body)
                 if b is None:

@@ -58,11 +58,18 @@ class SlotLocal:
 class LazyLocal:
     """A zero-argument LET definition, evaluated on first use into ``L[slot]``.
 
-    `source` is the definition's body (and environment) when it reads state."""
+    `body` is the definition's body and its environment: in an action TLC expands a
+    LET name used as a conjunct, so a disjunction inside it branches.  `source` is the
+    same when the body reads state: priming the name primes that expression."""
 
     slot: int
     code: Code
-    source: "tuple[A.Expr, Env] | None" = None
+    body: "tuple[A.Expr, Env] | None" = None
+    reads_state: bool = False
+
+    @property
+    def source(self) -> "tuple[A.Expr, Env] | None":
+        return self.body if self.reads_state else None
 
 
 @dataclass(eq=False)
@@ -105,7 +112,7 @@ class Env:
     # definitions that read them) denote their values in the next state `t`.
     primed: bool = False
 
-    def bind(self, **bindings: Local) -> "Env":
+    def bind(self, /, **bindings: Local) -> "Env":  # positional-only: a TLA+ name may be `self`
         return replace(self, locals={**self.locals, **bindings})
 
     def bind_all(self, bindings: dict[str, Local]) -> "Env":

@@ -247,6 +247,9 @@ class InstanceSym:
     inst: A.InstanceDef
     scope: "Scope"  # the instantiated module's scope
     module: A.Module
+    # An INSTANCE inside LET: the names bound where it is defined, which its
+    # substitutions may use; they are passed on at each use (``I!Op``).
+    let_locals: tuple[str, ...] = ()
 
 
 Symbol = Union[VarSym, ConstSym, DefSym, BuiltinSym, SubstSym, InstanceSym]
@@ -318,7 +321,15 @@ def instance_parameters(mod: A.Module, loader: ModuleLoader) -> list[A.Param]:
     return out + mod.constants + mod.variables
 
 
-def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str]) -> None:
+def let_instance_scope(scope: Scope, inst: A.InstanceDef, let_locals: tuple[str, ...]) -> Scope:
+    """The scope of a LET body that defines ``I == INSTANCE M ...``: `scope` plus I.  The
+    instance is parameterised by the names bound at the LET (`let_locals`)."""
+    inner = Scope(scope.module, scope.loader, dict(scope.names), scope.parameterised, scope.instance_params)
+    _instance(inner, inst, set(), let_locals)
+    return inner
+
+
+def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str], let_locals: tuple[str, ...] = ()) -> None:
     target = scope.loader.find(inst.module, inst.loc)
     if isinstance(target, dict):
         if inst.name is None:
@@ -326,7 +337,7 @@ def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str]) -> None:
         else:
             raise UnsupportedError(f"named INSTANCE of the standard module {inst.module}", inst.loc)
         return
-    params = tuple(p.name for p in inst.params)
+    params = tuple(p.name for p in inst.params) + let_locals
     explicit = dict(inst.substs)
     substs: dict[str, SubstSym] = {}
     for p in instance_parameters(target, scope.loader):
@@ -350,4 +361,4 @@ def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str]) -> None:
                     isinstance(sym, DefSym) and sym.defn.local):
                 scope.names[name] = sym
     else:
-        scope.names[inst.name] = InstanceSym(inst, inner, target)
+        scope.names[inst.name] = InstanceSym(inst, inner, target, let_locals)

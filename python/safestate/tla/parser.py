@@ -227,12 +227,19 @@ class _Converter:
                 mod.units.append(self.definition(c, False))
             elif t == "local_definition":
                 mod.units.append(self.definition(self.named(c)[0], True))
+            elif t == "assumption" and self.text(c).lstrip().startswith("AXIOM"):
+                continue  # an AXIOM is proof material: TLC does not evaluate it
             elif t == "assumption":
                 nm = c.child_by_field_name("name")
                 body = [x for x in self.named(c) if x.type not in ("identifier", "def_eq")][-1]
                 mod.assumes.append(A.Assume(self.expr(body), self.loc(c), self.text(nm) if nm else None))
-            elif t in ("theorem", "use_or_hide"):
-                continue  # proofs are not checked by TLC either
+            elif t == "theorem":
+                # Proofs are not checked by TLC either, but SANY resolves the statement.
+                nm, stmt = c.child_by_field_name("name"), c.child_by_field_name("statement")
+                if stmt is not None:
+                    mod.theorems.append((self.text(nm) if nm else None, self.expr(stmt), self.loc(c)))
+            elif t == "use_or_hide":
+                continue
             elif t == "module":
                 sub = self.module(c)
                 mod.submodules[sub.name] = sub
@@ -308,7 +315,7 @@ class _Converter:
         s = self.expr(n.child_by_field_name("set"))
         if len(intro) == 1 and intro[0].type == "tuple_of_identifiers":
             return A.Bound([self.text(i) for i in self.named(intro[0]) if i.type == "identifier"], True, s)
-        return A.Bound([self.text(i) for i in intro], False, s)
+        return A.Bound([self.text(i) for i in intro if i.is_named], False, s)  # not the commas
 
     # ------------------------------------------------------------ expressions
     def expr(self, n: Node) -> A.Expr:
@@ -554,16 +561,12 @@ class _Converter:
         return A.Case(loc, arms, other)
 
     def x_let_in(self, n: Node, loc: Loc) -> A.Expr:
-        defs: list[A.OpDef] = []
+        defs: list[A.OpDef | A.InstanceDef] = []
         for d in n.children_by_field_name("definitions"):
             if d.type == "recursive_declaration":
                 continue  # LET operators may refer to themselves; nothing to record
-            if d.type == "module_definition":
-                raise UnsupportedError("INSTANCE inside LET", self.loc(d))
-            if d.type in ("operator_definition", "function_definition"):
-                defn = self.definition(d, False)
-                assert isinstance(defn, A.OpDef)
-                defs.append(defn)
+            if d.type in ("operator_definition", "function_definition", "module_definition"):
+                defs.append(self.definition(d, False))
         return A.Let(loc, defs, self.expr(n.child_by_field_name("expression")))
 
     def x_conj_list(self, n: Node, loc: Loc) -> A.Expr:

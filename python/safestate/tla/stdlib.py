@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from .errors import AssertFailure, EvalError
+from .tlcget import tlc_get, tlc_set
 from .values import (
     BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
     iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
@@ -284,6 +285,7 @@ TLC = {
     "@@": Builtin("@@", 2, merge_fn, "TLC"), "Permutations": Builtin("Permutations", 1, permutations, "TLC"),
     "SortSeq": Builtin("SortSeq", 2, sort_seq, "TLC", higher_order=True),
     "ToString": Builtin("ToString", 1, to_string, "TLC"), "TLCEval": Builtin("TLCEval", 1, tlc_eval, "TLC"),
+    "TLCGet": Builtin("TLCGet", 1, tlc_get, "TLC"), "TLCSet": Builtin("TLCSet", 2, tlc_set, "TLC"),
 }
 
 
@@ -349,12 +351,43 @@ def empty_bag() -> Value:
     return ()
 
 
+def bag_union(s: Value) -> Value:
+    """BagUnion(S): the bag sum of the bags in the set S."""
+    d: dict = {}
+    for b in iter_set(s):
+        for k, c in _bag(b).items():
+            d[k] = d.get(k, 0) + c
+    return make_fn(d)
+
+
+def sub_bags(b: Value) -> frozenset:
+    """SubBag(B): every bag SB with SB[e] <= B[e] (EmptyBag included)."""
+    import itertools
+    items = [(k, c) for k, c in _bag(b).items() if c > 0]
+    out = []
+    for counts in itertools.product(*[range(c + 1) for _, c in items]):
+        out.append(make_fn({k: n for (k, _), n in zip(items, counts) if n > 0}))
+    return frozenset(out)
+
+
+def bag_of_all(f: Callable[[Value], Value], b: Value) -> Value:
+    """BagOfAll(F, B): the bag of F(e) for the elements e of B, with their copies."""
+    d: dict = {}
+    for k, c in _bag(b).items():
+        if c > 0:
+            y = f(k)
+            d[y] = d.get(y, 0) + c
+    return make_fn(d)
+
+
 BAGS = {
     "SetToBag": Builtin("SetToBag", 1, set_to_bag, "Bags"), "BagToSet": Builtin("BagToSet", 1, bag_to_set, "Bags"),
     "BagIn": Builtin("BagIn", 2, bag_in, "Bags"), "CopiesIn": Builtin("CopiesIn", 2, copies_in, "Bags"),
     "(+)": Builtin("(+)", 2, bag_cup, "Bags"), "(-)": Builtin("(-)", 2, bag_minus, "Bags"),
     "IsABag": Builtin("IsABag", 1, is_a_bag, "Bags"), "BagCardinality": Builtin("BagCardinality", 1, bag_cardinality, "Bags"),
     "\\sqsubseteq": Builtin("\\sqsubseteq", 2, sub_bag, "Bags"), "EmptyBag": Builtin("EmptyBag", 0, empty_bag, "Bags"),
+    "BagUnion": Builtin("BagUnion", 1, bag_union, "Bags"), "SubBag": Builtin("SubBag", 1, sub_bags, "Bags"),
+    "BagOfAll": Builtin("BagOfAll", 2, bag_of_all, "Bags", higher_order=True),
 }
 
 STANDARD_MODULES: dict[str, dict[str, Builtin]] = {
@@ -423,11 +456,17 @@ def subseteq(a: Value, b: Value) -> bool:
     return all(member(x, b) for x in iter_set(a))
 
 
-def union(s: Value) -> frozenset:
-    out: set = set()
-    for x in iter_set(s):
+def union(s: Value) -> Value:
+    parts = list(s) if type(s) is frozenset else list(iter_set(s))  # order is irrelevant here
+    for x in parts:
         if not is_set(x):
             raise EvalError(f"Attempted to apply UNION to a set containing the non-set {fmt(x)}")
+    if any(_infinite(x) for x in parts):
+        # UNION {[D -> Int]}: only membership can be tested, as TLC's UnionValue.
+        return FilteredSet(lambda v: any(member(v, x) for x in parts), "UNION {" + ", ".join(
+            x.describe() if isinstance(x, LazySet) else fmt(x) for x in parts) + "}")
+    out: set = set()
+    for x in parts:
         out |= as_set(x)
     return frozenset(out)
 

@@ -451,6 +451,12 @@ def set_equal_keys(dom: Value, n: int, d: dict | None) -> bool:
 _STRING_RANK: dict[str, int] = {}
 
 
+def reset_token_order() -> None:
+    """Forget the order of an earlier model (each check is a TLC run of its own)."""
+    _STRING_RANK.clear()
+    _SORTED_CACHE.clear()
+
+
 def register_token_order(tokens: Iterable[str]) -> None:
     for t in tokens:
         if t not in _STRING_RANK:
