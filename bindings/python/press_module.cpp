@@ -6,10 +6,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "safestate/chain/hydraulic_press.hpp"
+#include "safestate/chain/press_event.hpp"
 #include "safestate/chain/press_flat.hpp"
 
 namespace py = pybind11;
@@ -17,26 +19,11 @@ namespace sc = safestate::chain;
 
 namespace {
 
-// One model input event -> one scan's inputs; `continuous` is the held level (design §7).
+// One model input event -> one scan's inputs (press_event.hpp); an unknown name is a ValueError.
 sc::PressInputs inputs_of(const std::string& e, bool& continuous) {
-  static const char* const known[] = {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2",
-                                      "mode3", "continuous_on", "continuous_off", "temp_high", "temp_ok"};
-  bool ok = false;
-  for (const char* k : known) ok = ok || e == k;
-  if (!ok) throw py::value_error("unknown press input event '" + e + "'");
-  if (e == "continuous_on") continuous = true;
-  if (e == "continuous_off") continuous = false;
-  sc::PressInputs i;
-  i.continuous = continuous;
-  i.motor_on = e == "motor_on";
-  i.motor_off = e == "motor_off";
-  i.start = e == "start";
-  i.ret = e == "ret";
-  i.step_done = e == "step_done";
-  i.temp_high = e == "temp_high";
-  i.temp_ok = e == "temp_ok";
-  if (e.rfind("mode", 0) == 0) i.mode = static_cast<std::uint8_t>(e.back() - '0');
-  return i;
+  const std::optional<sc::PressInputs> i = sc::press_inputs_of(e, continuous);
+  if (!i) throw py::value_error("unknown press input event '" + e + "'");
+  return *i;
 }
 
 py::dict to_dict(const sc::PressObservation& o) {

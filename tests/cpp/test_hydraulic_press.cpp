@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "safestate/chain/hydraulic_press.hpp"
+#include "safestate/chain/press_event.hpp"
 #include "safestate/chain/press_flat.hpp"
 
 namespace sc = safestate::chain;
@@ -137,23 +138,6 @@ std::vector<std::string> itf_events(const std::string& path) {
   return events;
 }
 
-// The model's input event -> one scan's PressInputs (design page §7); `continuous` is a level.
-sc::PressInputs inputs_of(const std::string& e, bool& continuous) {
-  sc::PressInputs i;
-  if (e == "continuous_on") continuous = true;
-  if (e == "continuous_off") continuous = false;
-  i.continuous = continuous;
-  i.motor_on = e == "motor_on";
-  i.motor_off = e == "motor_off";
-  i.start = e == "start";
-  i.ret = e == "ret";
-  i.step_done = e == "step_done";
-  i.temp_high = e == "temp_high";
-  i.temp_ok = e == "temp_ok";
-  if (e.rfind("mode", 0) == 0) i.mode = static_cast<std::uint8_t>(e.back() - '0');
-  return i;
-}
-
 TEST(HydraulicPressAccidentReplay, INV_PRESS_CheckerCounterexampleEnergisesTheFlatPressNotTheChain) {
   const auto events = itf_events(std::string(SAFESTATE_SOURCE_DIR) + "/models/traces/HydraulicPressFlat_INV_PRESS.itf.json");
   ASSERT_EQ(events, (std::vector<std::string>{"motor_on", "start", "motor_off", "motor_on"}));
@@ -162,8 +146,11 @@ TEST(HydraulicPressAccidentReplay, INV_PRESS_CheckerCounterexampleEnergisesTheFl
   bool flat_cont = false, chain_cont = false;
   sc::PressOutputs flat_out, chain_out;
   for (const std::string& e : events) {
-    flat_out = flat.cycle(inputs_of(e, flat_cont));
-    chain_out = chain.cycle(inputs_of(e, chain_cont));
+    const auto flat_in = sc::press_inputs_of(e, flat_cont);
+    const auto chain_in = sc::press_inputs_of(e, chain_cont);
+    ASSERT_TRUE(flat_in && chain_in) << "not a press model event: " << e;
+    flat_out = flat.cycle(*flat_in);
+    chain_out = chain.cycle(*chain_in);
   }
   EXPECT_TRUE(flat_out.on(sc::Output::motor) && flat_out.on(sc::Output::feed_valve));
   EXPECT_TRUE(chain_out.on(sc::Output::motor));
