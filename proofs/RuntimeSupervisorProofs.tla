@@ -7,6 +7,12 @@
 (***************************************************************************)
 EXTENDS RuntimeSupervisor
 
+\* StopOrder[stop_step] is evaluated whenever a STOPPED report is taken: the
+\* shutdown has started (stop_step >= 1) exactly when the supervisor is
+\* shutting down or stopped (the well-definedness obligation of that
+\* application, docs/prove.md).
+Stop_Started == (stop_step >= 1) <=> sup_state \in {"SHUTTING_DOWN", "STOPPED"}
+
 Stop_Progress ==
     /\ (stop_step >= 1) <=> sup_state \in {"SHUTTING_DOWN", "STOPPED"}
     /\ stop_step >= 2 => outputs_safe

@@ -12,7 +12,7 @@ from ..tla import ast as A
 from ..tla.errors import Loc
 from .sets import (EnumSet, PredSet, SetV, cardinality, difference, intersect, need_enum, need_set, subseteq,
                    union)
-from .values import Fn, ProveError, Rec, SeqV, Tup, eq, is_z3, ite, key_value, tracked
+from .values import UNDEF, Fn, ProveError, Rec, SeqV, Tup, eq, is_z3, ite, key_value, tracked
 
 if TYPE_CHECKING:
     from .translate import Ctx, Translator
@@ -147,35 +147,47 @@ def big_union(s: Any, loc: Loc) -> SetV:
 
 
 def fn_apply(tr: "Translator", f: Any, arg: Any, loc: Loc) -> Any:
+    """f[arg], with the obligation that arg is in DOMAIN f (outside it the value is unspecified)."""
+    if f is UNDEF or arg is UNDEF:
+        return UNDEF
     if isinstance(f, Rec):
         k = tr.conc(arg)
         if isinstance(k, str):
             if k not in f.fields:
-                raise ProveError(f"record has no field {k}", loc)
+                tr.obl.add("field", loc, f"the record has a field {k}", False)
+                return UNDEF
             return f.fields[k]
-        return _select([(eq(arg, tr.strings.val(n, loc)), x) for n, x in f.fields.items()], loc)
+        cases = [(eq(arg, tr.strings.val(n, loc)), x) for n, x in f.fields.items()]
+        tr.obl.add("domain", loc, "the argument is a field of the record", z3.Or([c for c, _ in cases]))
+        return _select(cases, loc)
     if isinstance(f, Fn):
         k = tr.conc(arg)
         if k is not None:
             if k not in f.vals:
-                raise ProveError(f"function applied outside its domain ({k!r})", loc)
+                tr.obl.add("domain", loc, f"the function is applied inside its domain (argument {k!r})", False)
+                return f.vals[f.keys[-1]] if f.keys else UNDEF
             return f.vals[k]
-        return _select([(eq(arg, key_value(kk, tr.strings), loc), f.vals[kk]) for kk in f.keys], loc)
+        cases = [(eq(arg, key_value(kk, tr.strings), loc), f.vals[kk]) for kk in f.keys]
+        tr.obl.add("domain", loc, "the function is applied inside its domain", z3.Or([c for c, _ in cases]))
+        return _select(cases, loc)
     if isinstance(f, (Tup, SeqV)):
         items = f.items
         k = tr.conc(arg)
+        if not (is_z3(arg) and z3.is_int(arg)):
+            tr.obl.add("domain", loc, "a sequence is applied to an integer", False)
+            return UNDEF
+        length = f.length if isinstance(f, SeqV) else z3.IntVal(len(items))
+        tr.obl.add("domain", loc, "the index is in 1..Len of the sequence", z3.And(arg >= 1, arg <= length))
         if k is not None:
-            if not (isinstance(k, int) and 1 <= k <= len(items)):
-                raise ProveError(f"index {k!r} outside the tuple or sequence", loc)
-            return items[k - 1]
+            return items[k - 1] if 1 <= k <= len(items) else UNDEF
         return _select([(arg == i + 1, x) for i, x in enumerate(items)], loc)
     raise ProveError("application of a value that is not a function", loc)
 
 
 def _select(cases: list[tuple[z3.BoolRef, Any]], loc: Loc) -> Any:
-    # outside the domain the result is unspecified (TLC reports an error): take the last case
+    # outside the domain the result is unspecified (the caller's obligation): take the last case
     if not cases:
-        raise ProveError("application of a function with an empty domain", loc)
+        return UNDEF
     out = cases[-1][1]
     for c, x in reversed(cases[:-1]):
         out = ite(c, x, out, loc)
@@ -240,20 +252,21 @@ def apply_builtin(tr: "Translator", name: str, args: list[A.Expr], ctx: "Ctx", l
         if isinstance(s, SeqV):
             return s.length
         raise ProveError("Len of a value that is not a sequence", loc)
-    if name == "Head":
+    if name in ("Head", "Tail"):
         s = vals[0]
-        if isinstance(s, (Tup, SeqV)) and s.items:
+        if not isinstance(s, (Tup, SeqV)):
+            raise ProveError(f"{name} of a value that is not a sequence", loc)
+        tr.obl.add("sequence", loc, f"the sequence is not empty ({name})",
+                   s.length > 0 if isinstance(s, SeqV) else bool(s.items))
+        if not s.items:
+            return UNDEF if name == "Head" else s
+        if name == "Head":
             return s.items[0]
-        raise ProveError("Head of a value that is not a non-empty sequence", loc)
-    if name == "Tail":
-        s = vals[0]
         if isinstance(s, Tup):
             return Tup(s.items[1:])
-        if isinstance(s, SeqV):
-            if not s.items:
-                raise ProveError("Tail of an empty sequence", loc)
-            return SeqV(s.items[1:] + (s.items[-1],), z3.If(s.length > 0, s.length - 1, 0))
-        raise ProveError("Tail of a value that is not a sequence", loc)
+        return SeqV(s.items[1:] + (s.items[-1],), z3.If(s.length > 0, s.length - 1, 0))
+    if name == "SubSeq":
+        return subseq(tr, vals[0], vals[1], vals[2], loc)
     if name == "Append":
         s, x = vals
         if isinstance(s, Tup):
@@ -303,10 +316,11 @@ def _arith(tr: "Translator", op: str, a: Any, b: Any, loc: Loc) -> Any:
         return a - b
     if op == "*":
         return a * b
-    if op == "\\div":
-        return a / b  # z3 Int division is Euclidean: TLA+'s \div for a positive divisor
-    if op == "%":
-        return a % b
+    if op in ("\\div", "%"):
+        # TLA+ defines a \div b and a % b for b > 0 only (Integers); z3's Euclidean
+        # division agrees with them there
+        tr.obl.add("division", loc, f"the divisor of {op} is positive", b > 0)
+        return a / b if op == "\\div" else a % b
     if op == "<":
         return a < b
     if op == ">":
@@ -323,7 +337,7 @@ def _arith(tr: "Translator", op: str, a: Any, b: Any, loc: Loc) -> Any:
 def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
     op = e.op
     if op == "=>":
-        return z3.Implies(tr.boolean(e.lhs, ctx), tr.boolean(e.rhs, ctx))
+        return tr.implies(e.lhs, e.rhs, ctx)
     if op in ("<=>", "\\equiv"):
         return tr.boolean(e.lhs, ctx) == tr.boolean(e.rhs, ctx)
     a = tr.val(e.lhs, ctx)
@@ -355,3 +369,21 @@ def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
             return Tup(a.items + b.items)
         raise ProveError("\\o of sequences whose lengths are not constant", loc)
     raise ProveError(f"the operator {op}", loc)
+
+
+def subseq(tr: "Translator", s: Any, m: Any, n: Any, loc: Loc) -> Any:
+    """SubSeq(s, m, n): << s[m], ..., s[n] >>, empty when m > n; needs 1 <= m and n <= Len(s) otherwise."""
+    if not isinstance(s, (Tup, SeqV)):
+        raise ProveError("SubSeq of a value that is not a sequence", loc)
+    cm, cn = tr.conc(m), tr.conc(n)
+    if not (isinstance(cm, int) and isinstance(cn, int)):
+        raise ProveError("SubSeq with symbolic bounds", loc)
+    length = s.length if isinstance(s, SeqV) else z3.IntVal(len(s.items))
+    if cm > cn:
+        return Tup(())
+    tr.obl.add("sequence", loc, "SubSeq's bounds are inside the sequence (1 <= m, n <= Len)",
+               z3.And(z3.BoolVal(cm >= 1), length >= cn))
+    items = s.items[max(cm, 1) - 1:cn]
+    if len(items) < cn - cm + 1:
+        return UNDEF
+    return Tup(tuple(items))

@@ -2,7 +2,8 @@
 [--depth K] [--json] [--invariant NAME ...] [--proofs PLAN.toml] [--cfg-constants]
 
 Exit codes: 0 every requested invariant proved, 12 one violated (as TLC),
-1 some unknown, 2 bad input.
+13 one ill-defined (an evaluation TLA+ leaves undefined is reached), 1 some unknown
+or vacuous, 2 bad input or a spec the checker rejects.
 """
 
 from __future__ import annotations
@@ -48,6 +49,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         if not os.path.exists(args.model):
             raise TlaError("config", f"cannot read module file {args.model}", None)
+        _checker_accepts(args.model, args.config or _default_cfg(args.model))
         plan = load_plan(args.proofs or find_plan(args.model))
         if plan.path:
             log(f"proof plan {plan.path}")
@@ -74,9 +76,23 @@ def run(args: argparse.Namespace) -> int:
         _print(sys_, results)
     if any(r.status == "violated" for r in results):
         return 12
+    if any(r.status == "ill-defined" for r in results):
+        return 13
     if any(r.status != "proved" for r in results):
         return 1
     return 0
+
+
+def _checker_accepts(model: str, cfg: str | None) -> None:
+    """A spec `safestate check` rejects (an unknown name, a wrong arity, a failing ASSUME...)
+    is not provable: what the prover translates lazily must not hide it."""
+    if cfg is None:
+        return
+    from ..checker.model import load_model
+    try:
+        load_model(model, cfg)
+    except TlaError as e:
+        raise TlaError(e.kind, f"not provable: the checker rejects the spec: {e.message}", e.loc) from None
 
 
 def _default_cfg(model: str) -> str | None:
@@ -108,6 +124,9 @@ def _json(model: str, sys_: System, results: list[Result]) -> dict[str, Any]:
             "cti": itf(sys_.variables, r.cti, r.cti_params, model, f"counterexample to induction of {r.invariant}")
             if r.cti else None,
             "note": r.note,
+            "obligations": r.obligations,
+            "undefined": r.undefined or None,
+            "vacuity": r.vacuity,
         })
     return {"model": sys_.module.name, "constants": sys_.constants_report,
             "untracked": sys_.untracked, "results": out}
@@ -121,11 +140,18 @@ def _print(sys_: System, results: list[Result]) -> None:
         print(f"  not tracked (untyped by TypeOK, never read): {', '.join(sys_.untracked)}")
     for r in results:
         k = f" k={r.k}" if r.k is not None else ""
-        print(f"{r.invariant}: {r.status} ({r.engine}{k}, {r.seconds:.2f}s){' - ' + r.note if r.note else ''}")
+        wd = f", {r.obligations} well-definedness obligations" if r.obligations else ""
+        print(f"{r.invariant}: {r.status} ({r.engine}{k}, {r.seconds:.2f}s{wd}){' - ' + r.note if r.note else ''}")
+        if r.undefined:
+            print(f"  {r.undefined}")
         if r.trace:
-            print(f"Counterexample ({len(r.trace)} states):")
+            print(f"{'Trace to the ill-defined evaluation' if r.status == 'ill-defined' else 'Counterexample'} "
+                  f"({len(r.trace)} states):")
             print(format_trace(r.trace, r.params))
-        if r.cti:
+        if r.cti and len(r.cti) == 1:
+            print("A state of the inductive invariant where it fails (not known to be reachable):")
+            print(format_trace(r.cti, r.cti_params))
+        elif r.cti:
             print("Counterexample to induction (not known to be reachable):")
             if r.cti_params:
                 print(format_trace([], r.cti_params))

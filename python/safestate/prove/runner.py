@@ -7,12 +7,16 @@ from __future__ import annotations
 import time
 from typing import Callable
 
+import z3
+
 from .engines.bmc import bmc
 from .engines.kind import kinduction
 from .engines.pdr import pdr
 from .engines.result import Result
 from .plan import Plan, Step
 from .system import System
+from .vacuity import vacuity
+from .welldefined import Parts, first_on_trace, failing_under, parts_of, reach
 
 DEFAULT_DEPTH = {"bmc": 20, "kind": 4, "pdr": 0}
 PDR_TIMEOUT = 120.0
@@ -32,19 +36,23 @@ def prove_all(sys: System, invariants: list[str], plan: Plan, engine: str | None
         results.append(_prove_one(sys, inv, step, eng, depth, log))
     if bmc_batch:
         k = depth if depth is not None else DEFAULT_DEPTH["bmc"]
-        props = {n: sys.predicate(n) for n in bmc_batch}
-        found = bmc(sys, props, k, log)
-        results.extend(found[n] for n in bmc_batch)
+        with_obligations = {n: sys.predicate_obligations(n) for n in bmc_batch}
+        found = bmc(sys, {n: p for n, (p, _) in with_obligations.items()}, k, log)
+        for n in bmc_batch:
+            results.append(_trace_defined(sys, found[n], parts_of(sys, {n: with_obligations[n][1]})))
     order = {n: i for i, n in enumerate(invariants)}
     return sorted(results, key=lambda r: order[r.invariant])
 
 
 def _prove_one(sys: System, inv: str, step: Step, eng: str, depth: int | None, log) -> Result:
-    p = sys.predicate(inv)
+    p, obligations = sys.predicate_obligations(inv)
+    predicates = {inv: obligations, **{n: sys.predicate_obligations(n)[1] for n in step.strengthen}}
+    parts = parts_of(sys, predicates)
     t0 = time.monotonic()
+    strengthen = {label: f for n in step.strengthen for label, f in sys.conjuncts(n).items()}
+    q = z3.And([p, sys.domain] + list(strengthen.values()))
     if eng == "kind":
         k = depth if depth is not None else (step.k or DEFAULT_DEPTH["kind"])
-        strengthen = {label: f for n in step.strengthen for label, f in sys.conjuncts(n).items()}
         res = kinduction(sys, inv, p, strengthen, k, log)
     else:
         res = pdr(sys, inv, p, step.timeout or PDR_TIMEOUT, log)
@@ -61,5 +69,49 @@ def _prove_one(sys: System, inv: str, step: Step, eng: str, depth: int | None, l
             if res.status == "violated":
                 res.status = "unknown"
             res.note += f"; BMC found no counterexample up to depth {b.k}"
+    res.obligations = parts.count()
+    res = _trace_defined(sys, res, parts)
+    if res.status == "proved":
+        res = _defined_and_not_vacuous(sys, res, q, parts, depth, log)
     res.seconds = time.monotonic() - t0
+    return res
+
+
+def _trace_defined(sys: System, res: Result, parts: Parts) -> Result:
+    """A counterexample that goes through an ill-defined evaluation is not one: the
+    spec is ill-defined there (TLC would stop with an evaluation error)."""
+    if res.trace is None or res.model is None:
+        return res
+    u = first_on_trace(sys, res.model, len(res.trace) - 1, parts)
+    if u is not None:
+        res.status, res.undefined, res.trace, res.params = "ill-defined", u.describe(), u.trace, u.params
+        res.note = "the trace reaches an evaluation TLA+ leaves undefined (TLC stops with an error there)"
+    return res
+
+
+def _defined_and_not_vacuous(sys: System, res: Result, q: z3.BoolRef, parts: Parts, depth: int | None,
+                             log: Callable[[str], None]) -> Result:
+    """A proof holds only with its well-definedness obligations (in every state of the
+    inductive invariant Q) and when it is not vacuous."""
+    failing = failing_under(sys, q, parts)
+    if failing:
+        k = depth if depth is not None else DEFAULT_DEPTH["bmc"]
+        log(f"{res.invariant}: {len(failing)} well-definedness obligation(s) fail in the invariant; "
+            f"looking for a trace up to depth {k}")
+        u = reach(sys, parts, k, CONFIRM_TIMEOUT)
+        if u is not None:
+            res.status, res.undefined, res.trace, res.params = "ill-defined", u.describe(), u.trace, u.params
+            res.note = "a trace reaches an evaluation TLA+ leaves undefined (TLC stops with an error there)"
+            return res
+        first = failing[0]
+        res.status = "unknown"
+        res.undefined = first.describe()
+        res.cti, res.cti_params = [first.state or {}], first.params
+        res.note = (f"well-definedness not proved: {first.describe()} in a state of the inductive invariant "
+                    f"(none found on a trace up to depth {k}; strengthen the invariant)")
+        return res
+    res.vacuity = vacuity(sys, res.invariant, q)
+    if res.vacuity:
+        res.status = "vacuous"
+        res.note = "; ".join(res.vacuity)
     return res

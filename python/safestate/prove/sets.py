@@ -124,16 +124,6 @@ def filter_set(s: SetV, pred: Callable[[Any], z3.BoolRef], loc: Loc | None) -> S
                    lambda n: s.fresh(n, loc), upper=s.upper)
 
 
-def choose_first(s: EnumSet, pred: Callable[[Any], z3.BoolRef], loc: Loc | None) -> Any:
-    """CHOOSE over an enumerated set: the first element (in set order) satisfying pred."""
-    if not s.items:
-        raise ProveError("CHOOSE over an empty set", loc)
-    out = s.items[-1][1]
-    for g, e in reversed(s.items[:-1]):
-        out = ite(z3.And(g, pred(e)), e, out, loc)
-    return out
-
-
 def cardinality(s: EnumSet, loc: Loc | None) -> z3.ArithRef:
     """Cardinality of an enumerated set: elements equal to an earlier present one do not count."""
     terms = []

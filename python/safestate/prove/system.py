@@ -29,6 +29,7 @@ from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoad
                            build_root_scope, load_module)
 from ..tla.values import ModelValue
 from .builtins import powerset
+from .obligations import Obligation, distinct
 from .sets import EnumSet, PredSet, SetV
 from .translate import Ctx, Translator
 from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, leaves
@@ -54,6 +55,8 @@ class System:
     init_aux: list[z3.ExprRef]
     trans: z3.BoolRef
     trans_aux: list[z3.ExprRef]
+    init_obligations: list[Obligation] = field(default_factory=list)   # over the state and Init's inputs
+    trans_obligations: list[Obligation] = field(default_factory=list)  # over s, s' and Next's inputs
     cur_leaves: list[z3.ExprRef] = field(default_factory=list)
     nxt_leaves: list[z3.ExprRef] = field(default_factory=list)
     param_leaves: list[z3.ExprRef] = field(default_factory=list)
@@ -64,10 +67,28 @@ class System:
     # ----------------------------------------------------------- formulas
     def predicate(self, name: str) -> z3.BoolRef:
         """A state predicate defined in the model (or its proofs module)."""
+        return self.predicate_obligations(name)[0]
+
+    def predicate_obligations(self, name: str) -> tuple[z3.BoolRef, list[Obligation]]:
+        """A state predicate and the well-definedness obligations of evaluating it."""
         sym = self.scope.lookup(name)
         if not isinstance(sym, DefSym) or sym.defn.params:
             raise TlaError("config", f"{name} is not a state predicate of {self.module.name}", None)
-        return self.tr.boolean(sym.defn.body, Ctx(self.scope, {}, False))
+        with self.tr.obl.capture() as obligations:
+            f = self.tr.boolean(sym.defn.body, Ctx(self.scope, {}, False))
+        return f, obligations
+
+    def implications(self, name: str) -> list[tuple[str, z3.BoolRef]]:
+        """The antecedents of the conjuncts of `name` written A => B, labelled by position (vacuity)."""
+        sym = self.scope.lookup(name)
+        if not isinstance(sym, DefSym) or sym.defn.params:
+            raise TlaError("config", f"{name} is not a state predicate of {self.module.name}", None)
+        out = []
+        for c in _conjuncts(_expand(sym.defn.body, self.scope)):
+            if isinstance(c, A.Binary) and c.op == "=>":
+                with self.tr.obl.capture():
+                    out.append((f"{c.loc.file}:{c.loc.line}:{c.loc.column}", self.expr(c.lhs)))
+        return out
 
     def conjuncts(self, name: str) -> dict[str, z3.BoolRef]:
         """The top-level conjuncts of a state predicate, labelled (for CTI reports)."""
@@ -94,16 +115,19 @@ class System:
         """A state formula about step i of an unrolling."""
         return z3.substitute(f, list(zip(self.cur_leaves, self.state(i))))
 
-    def init_at(self, i: int = 0) -> z3.BoolRef:
+    def init_at(self, i: int = 0, f: z3.BoolRef | None = None) -> z3.BoolRef:
+        """Init (or a formula over its state and inputs, e.g. an obligation) at step i."""
         aux = [z3.Const(f"{a}@i{i}", a.sort()) for a in self.init_aux]
-        return z3.substitute(self.init, list(zip(self.cur_leaves, self.state(i))) + list(zip(self.init_aux, aux)))
+        return z3.substitute(self.init if f is None else f,
+                             list(zip(self.cur_leaves, self.state(i))) + list(zip(self.init_aux, aux)))
 
-    def trans_at(self, i: int) -> z3.BoolRef:
-        """Next between steps i and i+1 (fresh copies of the Skolem constants)."""
+    def trans_at(self, i: int, f: z3.BoolRef | None = None) -> z3.BoolRef:
+        """Next (or a formula over s, s' and its inputs) between steps i and i+1 (fresh
+        copies of the Skolem constants)."""
         aux = [z3.Const(f"{a}@{i}", a.sort()) for a in self.trans_aux]
         self._aux[i] = aux
         pairs = list(zip(self.cur_leaves, self.state(i))) + list(zip(self.nxt_leaves, self.state(i + 1)))
-        return z3.substitute(self.trans, pairs + list(zip(self.trans_aux, aux)))
+        return z3.substitute(self.trans if f is None else f, pairs + list(zip(self.trans_aux, aux)))
 
     def solver(self, *formulas: z3.ExprRef) -> z3.Solver:
         """A solver for unrollings of Init, Next and `formulas`: quantifier-free when they are.
@@ -117,14 +141,16 @@ class System:
         return z3.Solver() if quantified else z3.SolverFor("QF_AUFLIA")
 
     # ----------------------------------------------------------- models
-    def state_values(self, model: z3.ModelRef, i: int | None) -> dict[str, Any]:
-        """The concrete value of every tracked variable at step i (None: the template state)."""
+    def state_values(self, model: z3.ModelRef, i: int | None, primed: bool = False) -> dict[str, Any]:
+        """The concrete value of every tracked variable at step i (None: the template state,
+        its successor when `primed`)."""
         from .values import evaluate
         pairs = list(zip(self.cur_leaves, self.state(i))) if i is not None else []
 
         def ev(t: z3.ExprRef) -> z3.ExprRef:
             return model.eval(z3.substitute(t, pairs) if pairs else t, model_completion=True)
-        return {v: evaluate(self.cur[v], ev, self.strings) for v in self.variables}
+        state = self.nxt if primed else self.cur
+        return {v: evaluate(state[v], ev, self.strings) for v in self.variables}
 
     def param_values(self, model: z3.ModelRef) -> dict[str, Any]:
         from .values import evaluate
@@ -297,12 +323,16 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
     next_name = config.next.name if config and config.next else "Next"
     if config and config.specification and not config.init:
         init_name, next_name = _split_spec(scope, config.specification.name)
+    tr.obl.take()  # ASSUMEs and TypeOK's sets: TLC evaluates them once, before Init (not obliged here)
     init = tr.act(_def_body(scope, init_name, model_path), ctx)
     init_aux, tr.skolems = tr.skolems, []
+    init_obligations = tr.obl.take()
     trans = tr.act(_def_body(scope, next_name, model_path), ctx)
     trans_aux, tr.skolems = tr.skolems, []
+    trans_obligations = tr.obl.take()
     sys_ = System(module, scope, strings, tr, tracked, untracked, cur, nxt, params,
-                  report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux)
+                  report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux,
+                  distinct(init_obligations), distinct(trans_obligations))
     sys_.cur_leaves = [x for v in tracked for x in leaves(cur[v])]
     sys_.nxt_leaves = [x for v in tracked for x in leaves(nxt[v])]
     sys_.param_leaves = [x for v in params.values() for x in _param_leaves(v)]

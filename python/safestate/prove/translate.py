@@ -23,8 +23,9 @@ from ..tla import ast as A
 from ..tla.errors import Loc
 from ..tla.modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym
 from . import builtins as B
+from .obligations import Obligation, Obligations
 from .sets import EnumSet, need_enum, need_set
-from .values import Fn, ProveError, tracked, Rec, SeqV, Strings, Tup, concrete, eq, is_z3, ite
+from .values import UNDEF, Fn, ProveError, tracked, Rec, SeqV, Strings, Tup, concrete, eq, is_z3, ite
 
 
 @dataclass(eq=False)
@@ -35,6 +36,7 @@ class _Lazy:
     ctx: "Ctx"
     value: Any = None
     done: bool = False
+    obligations: list[Obligation] = field(default_factory=list)  # re-emitted at every use
 
 
 @dataclass(eq=False)
@@ -65,7 +67,8 @@ class Translator:
         self.cur = cur
         self.nxt = nxt
         self.skolems: list[z3.ExprRef] = []
-        self._memo: dict[tuple, tuple[Any, Any]] = {}
+        self.obl = Obligations()        # well-definedness obligations of what is translated
+        self._memo: dict[tuple, tuple[Any, Any, list[Obligation]]] = {}
         self._fresh = 0
 
     # ------------------------------------------------------------------ helpers
@@ -75,12 +78,16 @@ class Translator:
 
     def boolean(self, e: A.Expr, ctx: Ctx) -> z3.BoolRef:
         v = _tracked(self.val(e, ctx), e.loc)
+        if v is UNDEF:
+            return z3.BoolVal(False)
         if not (is_z3(v) and z3.is_bool(v)):
             raise ProveError("expected a Boolean here", e.loc)
         return v
 
     def integer(self, e: A.Expr, ctx: Ctx) -> z3.ArithRef:
         v = _tracked(self.val(e, ctx), e.loc)
+        if v is UNDEF:
+            return z3.IntVal(0)
         if not (is_z3(v) and z3.is_int(v)):
             raise ProveError("expected an integer here", e.loc)
         return v
@@ -92,14 +99,21 @@ class Translator:
     def act(self, e: A.Expr, ctx: Ctx) -> z3.BoolRef:
         """An action or initial predicate in a positive position."""
         if isinstance(e, A.And):
-            return z3.And([self.act(x, ctx) for x in e.items])
+            return self._conjunction(e.items, ctx, self.act)
         if isinstance(e, A.Or):
+            # TLC evaluates every disjunct of an action: each is obliged on its own
             return z3.Or([self.act(x, ctx) for x in e.items])
         if isinstance(e, A.Quant) and e.kind == "\\E":
             return self._skolem(e.bounds, e.body, ctx)
         if isinstance(e, A.If):
             c = self.boolean(e.cond, ctx)
-            return z3.If(c, self.act(e.then, ctx), self.act(e.other, ctx))
+            if z3.is_true(c) or z3.is_false(c):
+                return self.act(e.then if z3.is_true(c) else e.other, ctx)
+            with self.obl.under(c):
+                a = self.act(e.then, ctx)
+            with self.obl.under(z3.Not(c)):
+                b = self.act(e.other, ctx)
+            return z3.If(c, a, b)
         if isinstance(e, A.Let):
             return self.act(e.body, self._let(e, ctx))
         if isinstance(e, A.StepAction):
@@ -131,7 +145,19 @@ class Translator:
                 else:
                     names[n] = x
             ctx = ctx.bind(names)
-        return z3.And(conds + [self.act(body, ctx)])
+        with self.obl.under(z3.And(conds)):
+            return z3.And(conds + [self.act(body, ctx)])
+
+    def _conjunction(self, items: list[A.Expr], ctx: Ctx, each: Callable[[A.Expr, Ctx], z3.BoolRef]) -> z3.BoolRef:
+        """A /\\ B /\\ ...: each conjunct is evaluated only where the ones before it hold."""
+        out: list[z3.BoolRef] = []
+        for x in items:
+            with self.obl.under(_all(out)):
+                v = each(x, ctx)
+            if z3.is_false(v):
+                return z3.BoolVal(False)  # TLA+ stops here: the rest is not evaluated
+            out.append(v)
+        return z3.And(out)
 
     def _unchanged(self, sub: A.Expr, ctx: Ctx, loc: Loc) -> z3.BoolRef:
         if ctx.primed:
@@ -188,9 +214,13 @@ class Translator:
         key = (id(sym), ctx.primed, tuple(_vkey(body_ctx.locals[p.name]) for p in sym.defn.params))
         hit = self._memo.get(key)
         if hit is not None:
+            self.obl.emit(hit[2])
             return hit[1]
-        v = self.val(sym.defn.body, body_ctx)
-        self._memo[key] = (body_ctx.locals, v)  # keeps the argument terms alive (their ids are the key)
+        with self.obl.capture() as inner:
+            v = self.val(sym.defn.body, body_ctx)
+        # keeps the argument terms alive (their ids are the key); the body's obligations hold at every use
+        self._memo[key] = (body_ctx.locals, v, inner)
+        self.obl.emit(inner)
         return v
 
     def _name(self, e: A.Name | A.Apply, ctx: Ctx) -> Any:
@@ -202,8 +232,11 @@ class Translator:
                 if args:
                     raise ProveError(f"{name} takes no arguments", e.loc)
                 if not loc_v.done:
-                    loc_v.value = self.val(loc_v.expr, loc_v.ctx)
+                    with self.obl.capture() as inner:
+                        loc_v.value = self.val(loc_v.expr, loc_v.ctx)
+                    loc_v.obligations = inner
                     loc_v.done = True
+                self.obl.emit(loc_v.obligations)
                 return loc_v.value
             if isinstance(loc_v, _LetOp):
                 d = loc_v.defn
@@ -291,10 +324,24 @@ class Translator:
         return self.val(e.arg, replace(ctx, primed=True))
 
     def _v_And(self, e: A.And, ctx: Ctx) -> Any:
-        return z3.And([self.boolean(x, ctx) for x in e.items])
+        return self._conjunction(e.items, ctx, self.boolean)
 
     def _v_Or(self, e: A.Or, ctx: Ctx) -> Any:
-        return z3.Or([self.boolean(x, ctx) for x in e.items])
+        out: list[z3.BoolRef] = []
+        for x in e.items:
+            with self.obl.under(z3.Not(_any(out))):
+                v = self.boolean(x, ctx)
+            if z3.is_true(v):
+                return v  # TLA+ stops at the first true disjunct
+            out.append(v)
+        return z3.Or(out)
+
+    def implies(self, lhs: A.Expr, rhs: A.Expr, ctx: Ctx) -> z3.BoolRef:
+        a = self.boolean(lhs, ctx)
+        if z3.is_false(a):
+            return z3.BoolVal(True)
+        with self.obl.under(a):
+            return z3.Implies(a, self.boolean(rhs, ctx))
 
     def _v_If(self, e: A.If, ctx: Ctx) -> Any:
         c = self.boolean(e.cond, ctx)
@@ -303,21 +350,40 @@ class Translator:
             return self.val(e.then, ctx)
         if cc is False:
             return self.val(e.other, ctx)
-        return ite(c, self.val(e.then, ctx), self.val(e.other, ctx), e.loc)
+        with self.obl.under(c):
+            a = self.val(e.then, ctx)
+        with self.obl.under(z3.Not(c)):
+            b = self.val(e.other, ctx)
+        return ite(c, a, b, e.loc)
 
     def _v_Case(self, e: A.Case, ctx: Ctx) -> Any:
-        # TLC fails when no arm matches and OTHER is absent; here the last arm is taken.
-        arms = [(self.boolean(g, ctx), x) for g, x in e.arms]
-        if e.other is not None:
-            out = self.val(e.other, ctx)
-            rest = arms
-        else:
-            out = self.val(arms[-1][1], ctx)
-            rest = arms[:-1]
-        for g, x in reversed(rest):
+        # Arms are tried in order (TLC's choice); with no arm true and no OTHER, TLC fails:
+        # an obligation, and the last arm's value stands for the unspecified one.
+        arms: list[tuple[z3.BoolRef, A.Expr]] = []
+        for g, x in e.arms:
+            with self.obl.under(z3.Not(_any([a for a, _ in arms]))):
+                arms.append((self.boolean(g, ctx), x))
+            if z3.is_true(arms[-1][0]):
+                break
+        none_before = [z3.Not(_any([a for a, _ in arms[:i]])) for i in range(len(arms) + 1)]
+        values = []
+        for i, (g, x) in enumerate(arms):
             if z3.is_false(g):
                 continue
-            out = ite(g, self.val(x, ctx), out, e.loc)
+            with self.obl.under(z3.And(none_before[i], g)):
+                values.append((g, self.val(x, ctx)))
+        if z3.is_true(arms[-1][0]):
+            out = values.pop()[1]
+        elif e.other is not None:
+            with self.obl.under(none_before[-1]):
+                out = self.val(e.other, ctx)
+        else:
+            self.obl.add("case", e.loc, "some CASE arm is true (there is no OTHER)", _any([a for a, _ in arms]))
+            if not values:
+                return UNDEF
+            out = values.pop()[1]
+        for g, x in reversed(values):
+            out = ite(g, x, out, e.loc)
         return out
 
     def _let(self, e: A.Let, ctx: Ctx) -> Ctx:
@@ -370,14 +436,19 @@ class Translator:
         if isinstance(s, EnumSet):
             parts = []
             for g, x in s.items:
-                inner = self._quant(kind, rest, body, ctx.bind(self._pattern(b, x)), loc)
+                with self.obl.under(g):
+                    inner = self._quant(kind, rest, body, ctx.bind(self._pattern(b, x)), loc)
                 parts.append(z3.Implies(g, inner) if kind == "\\A" else z3.And(g, inner))
             return z3.And(parts) if kind == "\\A" else z3.Or(parts)
         # a non-enumerable set: a z3 quantifier over a fresh element
         from .values import leaves
         x = s.fresh(self.fresh_name("q"), b.set.loc)
-        inner = self._quant(kind, rest, body, ctx.bind(self._pattern(b, x)), loc)
+        with self.obl.capture() as obligations:
+            inner = self._quant(kind, rest, body, ctx.bind(self._pattern(b, x)), loc)
         vs = leaves(x)
+        member = s.member(x, loc)
+        for o in obligations:  # the body is evaluated for every element of the set
+            self.obl.emit([Obligation(o.kind, o.loc, o.what, z3.ForAll(vs, z3.Implies(member, o.cond)))])
         if kind == "\\A":
             return z3.ForAll(vs, z3.Implies(s.member(x, loc), inner))
         return z3.Exists(vs, z3.And(s.member(x, loc), inner))
@@ -397,8 +468,18 @@ class Translator:
             raise ProveError("unbounded CHOOSE", e.loc)
         s = need_enum(self.val(e.set, ctx), "CHOOSE", e.loc)
         b = A.Bound(e.names, e.tuple, e.set)
-        from .sets import choose_first
-        return choose_first(s, lambda x: self.boolean(e.body, ctx.bind(self._pattern(b, x))), e.loc)
+        holds = []
+        for g, x in s.items:
+            with self.obl.under(g):
+                holds.append((g, self.boolean(e.body, ctx.bind(self._pattern(b, x)))))
+        self.obl.add("choose", e.loc, "some element of the set satisfies the CHOOSE predicate",
+                     _any([z3.And(g, p) for g, p in holds]))
+        if not s.items:
+            return UNDEF
+        out = s.items[-1][1]  # the first element (in set order) satisfying the predicate
+        for (g, x), (_, p) in reversed(list(zip(s.items[:-1], holds[:-1]))):
+            out = ite(z3.And(g, p), x, out, e.loc)
+        return out
 
     def _v_SetEnum(self, e: A.SetEnum, ctx: Ctx) -> Any:
         return EnumSet([(z3.BoolVal(True), self.val(x, ctx)) for x in e.elems])
@@ -406,6 +487,12 @@ class Translator:
     def _v_SetFilter(self, e: A.SetFilter, ctx: Ctx) -> Any:
         from .sets import filter_set
         s = need_set(self.val(e.bound.set, ctx), "set filter", e.loc)
+        if isinstance(s, EnumSet):
+            items = []
+            for g, x in s.items:
+                with self.obl.under(g):
+                    items.append((_simp(z3.And(g, self.boolean(e.pred, ctx.bind(self._pattern(e.bound, x))))), x))
+            return EnumSet(items, s.shape)
         return filter_set(s, lambda x: self.boolean(e.pred, ctx.bind(self._pattern(e.bound, x))), e.loc)
 
     def _v_SetMap(self, e: A.SetMap, ctx: Ctx) -> Any:
@@ -424,7 +511,14 @@ class Translator:
                         partial = [(z3.And(gp, g), {**bp, n: x}) for gp, bp in partial for g, x in s.items]
                     nxt.extend(partial)
             combos = nxt
-        return EnumSet([(_simp(g), self.val(e.expr, ctx.bind(binds))) for g, binds in combos])
+        items = []
+        for g, binds in combos:
+            g = _simp(g)
+            if z3.is_false(g):
+                continue
+            with self.obl.under(g):
+                items.append((g, self.val(e.expr, ctx.bind(binds))))
+        return EnumSet(items)
 
     def _v_FnApp(self, e: A.FnApp, ctx: Ctx) -> Any:
         f = _tracked(self.val(e.fn, ctx), e.loc)
@@ -472,9 +566,12 @@ class Translator:
 
     def _v_Dot(self, e: A.Dot, ctx: Ctx) -> Any:
         r = _tracked(self.val(e.rec, ctx), e.loc)
+        if r is UNDEF:
+            return UNDEF
         if isinstance(r, Rec):
             if e.field not in r.fields:
-                raise ProveError(f"record has no field {e.field}", e.loc)
+                self.obl.add("field", e.loc, f"the record has a field {e.field}", False)
+                return UNDEF
             return r.fields[e.field]
         if isinstance(r, Fn):
             return B.fn_apply(self, r, self.strings.val(e.field, e.loc), e.loc)
@@ -527,6 +624,14 @@ def _with_at(tr: Translator, value: A.Expr, ctx: Ctx) -> Callable[[Any], Any]:
 
 
 _tracked = tracked
+
+
+def _all(items: list[z3.BoolRef]) -> z3.BoolRef:
+    return z3.BoolVal(True) if not items else items[0] if len(items) == 1 else z3.And(items)
+
+
+def _any(items: list[z3.BoolRef]) -> z3.BoolRef:
+    return z3.BoolVal(False) if not items else items[0] if len(items) == 1 else z3.Or(items)
 
 
 def _simp(g: z3.BoolRef) -> z3.BoolRef:

@@ -66,6 +66,18 @@ class _Untracked:
 UNTRACKED = _Untracked()
 
 
+class _Undefined:
+    """The value of an expression TLA+ leaves unspecified (a record without the field, Head
+    of << >>): its well-definedness obligation fails wherever it is evaluated, so any
+    value will do; comparisons with it are FALSE and IF picks the other branch."""
+
+    def __repr__(self) -> str:
+        return "<undefined>"
+
+
+UNDEF = _Undefined()
+
+
 class Strings:
     """The finite enumeration standing for the model's string literals."""
 
@@ -133,6 +145,8 @@ def eq(a: Any, b: Any, loc: Loc | None = None) -> z3.BoolRef:
     from .sets import SetV, set_eq
     if a is UNTRACKED or b is UNTRACKED:
         return z3.BoolVal(True)
+    if a is UNDEF or b is UNDEF:
+        return z3.BoolVal(False)
     if is_z3(a) and is_z3(b):
         if a.sort() != b.sort():
             raise ProveError(f"comparison of a {a.sort()} with a {b.sort()}", loc)
@@ -208,6 +222,8 @@ def ite(c: z3.BoolRef, a: Any, b: Any, loc: Loc | None = None) -> Any:
         return a
     if a is UNTRACKED or b is UNTRACKED:
         return UNTRACKED
+    if a is UNDEF or b is UNDEF:
+        return b if a is UNDEF else a
     if is_z3(a) and is_z3(b):
         if a.sort() != b.sort():
             raise ProveError(f"IF/CASE branches of different types ({a.sort()} and {b.sort()})", loc)

@@ -42,7 +42,8 @@ def bmc(sys: System, props: dict[str, z3.BoolRef], depth: int, log: Callable[[st
             params = sys.param_values(m)
             for n, f in at_k.items():
                 if z3.is_false(m.eval(f, model_completion=True)):
-                    results[n] = Result(n, "violated", "bmc", k, time.monotonic() - t0, trace=trace, params=params)
+                    results[n] = Result(n, "violated", "bmc", k, time.monotonic() - t0, trace=trace, params=params,
+                                        model=m)
                     del open_[n]
             s.pop()
         reached = k

@@ -41,7 +41,7 @@ def kinduction(sys: System, name: str, prop: z3.BoolRef, strengthen: dict[str, z
             base.pop()
             if name in failed:
                 return Result(name, "violated", "kind", k - 1, time.monotonic() - t0, trace=trace,
-                              params=sys.param_values(m))
+                              params=sys.param_values(m), model=m)
             return Result(name, "unknown", "kind", k - 1, time.monotonic() - t0, trace=None,
                           note=f"strengthening {', '.join(failed)} is violated by a reachable state "
                                f"(depth {k - 1}): it is not an invariant")
