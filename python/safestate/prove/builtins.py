@@ -12,7 +12,7 @@ from ..tla import ast as A
 from ..tla.errors import Loc
 from .sets import (EnumSet, PredSet, SetV, cardinality, difference, intersect, need_enum, need_set, subseteq,
                    union)
-from .values import UNDEF, Fn, ProveError, Rec, SeqV, Tup, eq, is_z3, ite, key_value, tracked
+from .values import UNDEF, Fn, ProveError, Rec, SeqV, Tup, as_seq, eq, is_z3, ite, key_value, tracked
 
 if TYPE_CHECKING:
     from .translate import Ctx, Translator
@@ -42,7 +42,9 @@ def interval(tr: "Translator", lo: z3.ArithRef, hi: z3.ArithRef, loc: Loc) -> Se
     if clo is not None and chi is not None and chi - clo < _ENUM_LIMIT:
         return EnumSet([(z3.BoolVal(True), z3.IntVal(i)) for i in range(clo, chi + 1)], z3.IntVal(0))
     upper = chi if chi is not None else tr.upper_bound(hi)
-    return _int_set(f"{lo}..{hi}", lambda x: z3.And(lo <= x, x <= hi), upper)
+    s = _int_set(f"{lo}..{hi}", lambda x: z3.And(lo <= x, x <= hi), upper)
+    s.extra["interval"] = (lo, hi)  # 1..n with n bounded: a function over it is a bounded sequence
+    return s
 
 
 def product(sets: list[SetV], loc: Loc) -> SetV:
@@ -122,9 +124,10 @@ def domain(tr: "Translator", v: Any, loc: Loc) -> SetV:
     if isinstance(v, Fn):
         return EnumSet([(z3.BoolVal(True), key_value(k, tr.strings)) for k in v.keys])
     if isinstance(v, Tup):
-        return EnumSet([(z3.BoolVal(True), z3.IntVal(i)) for i in range(1, len(v.items) + 1)], z3.IntVal(0))
+        return EnumSet([(z3.BoolVal(True), z3.IntVal(i)) for i in range(1, len(v.items) + 1)], z3.IntVal(0),
+                       z3.IntVal(len(v.items)))
     if isinstance(v, SeqV):
-        return EnumSet([(v.length >= i, z3.IntVal(i)) for i in range(1, v.cap + 1)], z3.IntVal(0))
+        return EnumSet([(v.length >= i, z3.IntVal(i)) for i in range(1, v.cap + 1)], z3.IntVal(0), v.length)
     raise ProveError("DOMAIN of a value that is not a function", loc)
 
 
@@ -244,6 +247,8 @@ def apply_builtin(tr: "Translator", name: str, args: list[A.Expr], ctx: "Ctx", l
                        lambda n: z3.Const(n, tr.strings.sort))
     if name == "Cardinality" and len(args) == 1 and isinstance(args[0], A.SetEnum) and len(args[0].elems) == 1:
         return z3.IntVal(1)  # a literal singleton: its element need not be translated
+    if name == "SelectSeq":
+        return select_seq(tr, tracked(tr.val(args[0], ctx), args[0].loc), args[1], ctx, loc)
     vals = [tracked(tr.val(a, ctx), a.loc) for a in args]
     if name == "Len":
         s = vals[0]
@@ -276,10 +281,7 @@ def apply_builtin(tr: "Translator", name: str, args: list[A.Expr], ctx: "Ctx", l
             return SeqV(items, s.length + 1)
         raise ProveError("Append to a value that is not a sequence", loc)
     if name == "\\o":
-        a, b = vals
-        if isinstance(a, Tup) and isinstance(b, Tup):
-            return Tup(a.items + b.items)
-        raise ProveError("\\o of sequences whose lengths are not constant", loc)
+        return concat(vals[0], vals[1], loc)
     if name == "Seq":
         return seq_set(need_set(vals[0], "Seq", loc), loc)
     if name == "Cardinality":
@@ -344,6 +346,7 @@ def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
     b = tr.val(e.rhs, ctx)
     loc = e.loc
     if op == "=":
+        _oblige_capacity(tr, a, b, loc)
         return eq(a, b, loc)
     if op in ("/=", "#"):
         return z3.Not(eq(a, b, loc))
@@ -365,9 +368,7 @@ def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
     if op in ("+", "-", "*", "\\div", "%", "<", ">", "<=", ">=", ".."):
         return _arith(tr, op, a, b, loc)
     if op == "\\o":
-        if isinstance(a, Tup) and isinstance(b, Tup):
-            return Tup(a.items + b.items)
-        raise ProveError("\\o of sequences whose lengths are not constant", loc)
+        return concat(a, b, loc)
     raise ProveError(f"the operator {op}", loc)
 
 
@@ -387,3 +388,75 @@ def subseq(tr: "Translator", s: Any, m: Any, n: Any, loc: Loc) -> Any:
     if len(items) < cn - cm + 1:
         return UNDEF
     return Tup(tuple(items))
+
+
+def concat(a: Any, b: Any, loc: Loc) -> Any:
+    """a \\o b; with a symbolic length of a, slot j of the result is a[j] or b[j - Len(a)]."""
+    if isinstance(a, Tup) and isinstance(b, Tup):
+        return Tup(a.items + b.items)
+    if not (isinstance(a, (Tup, SeqV)) and isinstance(b, (Tup, SeqV))):
+        raise ProveError("\\o of values that are not sequences", loc)
+    sa, sb = as_seq(a), as_seq(b)
+    if not sb.items:
+        return a
+    if not sa.items:
+        return b
+    items = []
+    for j in range(sa.cap + sb.cap):
+        from_b = _select([(sa.length == j - i, x) for i, x in enumerate(sb.items) if 0 <= j - i <= sa.cap], loc)
+        items.append(ite(sa.length > j, sa.items[j], from_b, loc) if j < sa.cap else from_b)
+    return SeqV(tuple(items), sa.length + sb.length)
+
+
+def select_seq(tr: "Translator", s: Any, test: A.Expr, ctx: "Ctx", loc: Loc) -> Any:
+    """SelectSeq(s, LAMBDA x : P(x)): the elements satisfying P, in order; slot j of the
+    result is the element with j elements before it satisfying P."""
+    if not isinstance(s, (Tup, SeqV)):
+        raise ProveError("SelectSeq of a value that is not a sequence", loc)
+    keep = _test_of(tr, test, ctx, loc)
+    sq = as_seq(s)
+    guards = []
+    for i, x in enumerate(sq.items):
+        inside = sq.length > i
+        with tr.obl.under(inside):
+            guards.append(_s(z3.And(inside, keep(x))))
+    if isinstance(s, Tup) and all(z3.is_true(g) or z3.is_false(g) for g in guards):
+        return Tup(tuple(x for g, x in zip(guards, sq.items) if z3.is_true(g)))
+    before: list[z3.ArithRef] = []  # how many kept elements precede element i
+    count: z3.ArithRef = z3.IntVal(0)
+    for g in guards:
+        before.append(count)
+        count = _s(count + z3.If(g, 1, 0))
+    items = []
+    for j in range(len(sq.items)):
+        cases = [(z3.And(g, before[i] == j), x) for i, (g, x) in enumerate(zip(guards, sq.items)) if i >= j]
+        items.append(_select(cases, loc))
+    return SeqV(tuple(items), count)
+
+
+def _test_of(tr: "Translator", test: A.Expr, ctx: "Ctx", loc: Loc) -> Callable[[Any], z3.BoolRef]:
+    """The one-argument predicate of SelectSeq: a LAMBDA, or the name of an operator."""
+    from ..tla.modules import DefSym
+    if isinstance(test, A.Lambda):
+        if len(test.params) != 1:
+            raise ProveError("the test of SelectSeq takes one argument", test.loc)
+        return lambda x: tr.boolean(test.body, ctx.bind({test.params[0]: x}))
+    if isinstance(test, A.OpRef) or isinstance(test, A.Name):
+        sym = ctx.scope.lookup(test.name)
+        if isinstance(sym, DefSym) and len(sym.defn.params) == 1 and not sym.recursive:
+            from .translate import Ctx
+            return lambda x: tr.boolean(sym.defn.body, Ctx(sym.scope, {sym.defn.params[0].name: x}, ctx.primed))
+    raise ProveError("the test of SelectSeq must be a LAMBDA or a one-argument operator", loc)
+
+
+def _oblige_capacity(tr: "Translator", a: Any, b: Any, loc: Loc) -> None:
+    """x = e (or x' = e) in Init or Next, x a bounded sequence variable: e must fit in the
+    bound Len(x) <= N of TypeOK; a longer e would make the step disappear, not fail."""
+    if not tr.assigning:
+        return
+    for var, other in ((a, b), (b, a)):
+        if isinstance(var, SeqV) and isinstance(other, (SeqV, Tup)) and tr.is_variable_value(var):
+            o = as_seq(other)
+            if o.cap > var.cap:
+                tr.obl.add("capacity", loc, f"the sequence fits the bound Len <= {var.cap} of TypeOK",
+                           o.length <= var.cap)

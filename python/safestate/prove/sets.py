@@ -32,6 +32,8 @@ class EnumSet(SetV):
     items: list[tuple[z3.BoolRef, Any]]
     # a representative element when the set may be empty (for fresh())
     shape: Any = None
+    # DOMAIN of a bounded sequence: the set is 1..prefix_len (a function over it is a sequence)
+    prefix_len: Any = None
 
     def member(self, x: Any, loc: Loc | None = None) -> z3.BoolRef:
         return z3.Or([z3.And(g, eq(x, e, loc)) for g, e in self.items])

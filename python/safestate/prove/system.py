@@ -324,12 +324,14 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
     if config and config.specification and not config.init:
         init_name, next_name = _split_spec(scope, config.specification.name)
     tr.obl.take()  # ASSUMEs and TypeOK's sets: TLC evaluates them once, before Init (not obliged here)
+    tr.assigning = True
     init = tr.act(_def_body(scope, init_name, model_path), ctx)
     init_aux, tr.skolems = tr.skolems, []
     init_obligations = tr.obl.take()
     trans = tr.act(_def_body(scope, next_name, model_path), ctx)
     trans_aux, tr.skolems = tr.skolems, []
     trans_obligations = tr.obl.take()
+    tr.assigning = False
     sys_ = System(module, scope, strings, tr, tracked, untracked, cur, nxt, params,
                   report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux,
                   distinct(init_obligations), distinct(trans_obligations))
@@ -593,6 +595,7 @@ def _fresh_var(tr: Translator, s: SetV, name: str, bound: tuple[A.Expr, Ctx] | N
             raise ProveError(f"the length bound of {name} has no finite upper bound (bound its constant with "
                              f"ASSUME N \\in a..b)", bound[0].loc)
         elem: SetV = s.extra["seq_elem"]
+        tr.const_upper[f"{name}.len"] = cap  # Len(x) <= cap bounds 1..Len(x)
         return SeqV(tuple(elem.fresh(f"{name}[{i + 1}]", c.loc) for i in range(cap)), z3.Int(f"{name}.len"))
     return s.fresh(name, c.loc)
 

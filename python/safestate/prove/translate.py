@@ -24,7 +24,7 @@ from ..tla.errors import Loc
 from ..tla.modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym
 from . import builtins as B
 from .obligations import Obligation, Obligations
-from .sets import EnumSet, need_enum, need_set
+from .sets import EnumSet, PredSet, need_enum, need_set
 from .values import UNDEF, Fn, ProveError, tracked, Rec, SeqV, Strings, Tup, concrete, eq, is_z3, ite
 
 
@@ -68,6 +68,7 @@ class Translator:
         self.nxt = nxt
         self.skolems: list[z3.ExprRef] = []
         self.obl = Obligations()        # well-definedness obligations of what is translated
+        self.assigning = False          # translating Init or Next (x = e may assign x)
         self._memo: dict[tuple, tuple[Any, Any, list[Obligation]]] = {}
         self._fresh = 0
 
@@ -166,18 +167,28 @@ class Translator:
 
     # ------------------------------------------------------------------ names
     def upper_bound(self, t: z3.ArithRef) -> int | None:
-        """A concrete upper bound of `t` when it is a bounded symbolic constant, plus or minus a number."""
+        """A concrete upper bound of `t`: a bounded symbolic constant (or a sequence length),
+        sums of those, IF, minus a number."""
         c = self.conc(t)
         if c is not None:
             return c
         if z3.is_const(t):
             return self.const_upper.get(str(t))
-        if z3.is_add(t) or z3.is_sub(t):
-            a, b = t.arg(0), t.arg(1)
-            ua, cb = self.upper_bound(a), self.conc(b)
+        if z3.is_add(t):
+            ups = [self.upper_bound(t.arg(i)) for i in range(t.num_args())]
+            return None if any(u is None for u in ups) else sum(ups)  # type: ignore[arg-type]
+        if z3.is_sub(t) and t.num_args() == 2:
+            ua, cb = self.upper_bound(t.arg(0)), self.conc(t.arg(1))
             if ua is not None and cb is not None:
-                return ua + cb if z3.is_add(t) else ua - cb
+                return ua - cb
+        if z3.is_app_of(t, z3.Z3_OP_ITE):
+            ups = [self.upper_bound(t.arg(1)), self.upper_bound(t.arg(2))]
+            return None if any(u is None for u in ups) else max(ups)  # type: ignore[type-var]
         return None
+
+    def is_variable_value(self, v: Any) -> bool:
+        """Is `v` the symbolic value of a state variable (current or next)?"""
+        return any(v is x for x in self.cur.values()) or (self.nxt is not None and any(v is x for x in self.nxt.values()))
 
     def _lookup(self, name: str, ctx: Ctx, loc: Loc) -> Any:
         if name in self.overrides and ctx.scope is self.root_scope:
@@ -526,7 +537,10 @@ class Translator:
         arg = args[0] if len(args) == 1 else Tup(tuple(args))
         return B.fn_apply(self, f, arg, e.loc)
 
-    def _fn_lit(self, bounds: list[A.Bound], body: A.Expr, ctx: Ctx, loc: Loc) -> Fn:
+    def _fn_lit(self, bounds: list[A.Bound], body: A.Expr, ctx: Ctx, loc: Loc) -> Any:
+        seq = self._seq_lit(bounds, body, ctx)
+        if seq is not None:
+            return seq
         domains = []
         for b in bounds:
             s = need_enum(self.val(b.set, ctx), "function domain", b.set.loc)
@@ -550,6 +564,30 @@ class Translator:
             out_keys.append(key)
             vals[key] = self.val(body, ctx.bind(binds))
         return Fn(tuple(out_keys), vals)
+
+    def _seq_lit(self, bounds: list[A.Bound], body: A.Expr, ctx: Ctx) -> SeqV | None:
+        """[i \\in 1..n |-> e] or [i \\in DOMAIN s |-> e] with a symbolic, bounded n (Len(s)):
+        a bounded sequence of n elements (slot i is evaluated only where i <= n)."""
+        if len(bounds) != 1 or bounds[0].tuple or len(bounds[0].names) != 1:
+            return None
+        b = bounds[0]
+        s = self.val(b.set, ctx)
+        if isinstance(s, EnumSet) and s.prefix_len is not None:
+            length, cap = s.prefix_len, len(s.items)
+        elif isinstance(s, PredSet) and "interval" in s.extra and self.conc(s.extra["interval"][0]) == 1 \
+                and s.upper is not None:
+            length, cap = s.extra["interval"][1], max(s.upper, 0)
+        else:
+            return None
+        items = []
+        for i in range(1, cap + 1):
+            with self.obl.under(length >= i):
+                items.append(self.val(body, ctx.bind({b.names[0]: z3.IntVal(i)})))
+        if any(x is UNDEF for x in items):
+            raise ProveError("a sequence with an undefined element", b.set.loc)
+        if self.conc(length) == cap:
+            return Tup(tuple(items))  # [i \\in DOMAIN t |-> e] of a tuple t: a tuple
+        return SeqV(tuple(items), z3.If(length > 0, length, 0) if cap else z3.IntVal(0))
 
     def _v_FnLit(self, e: A.FnLit, ctx: Ctx) -> Any:
         return self._fn_lit(e.bounds, e.body, ctx, e.loc)

@@ -239,6 +239,9 @@ def ite(c: z3.BoolRef, a: Any, b: Any, loc: Loc | None = None) -> Any:
     if isinstance(a, (SeqV, Tup)) and isinstance(b, (SeqV, Tup)):
         sa, sb = as_seq(a), as_seq(b)
         cap = max(sa.cap, sb.cap)
+        if not sa.items or not sb.items:  # << >>: its slots are irrelevant, borrow the other's
+            sa = SeqV(sb.items, sa.length) if not sa.items else sa
+            sb = SeqV(sa.items, sb.length) if not sb.items else sb
         sa, sb = pad(sa, cap), pad(sb, cap)
         return SeqV(tuple(ite(c, x, y, loc) for x, y in zip(sa.items, sb.items)), z3.If(c, sa.length, sb.length))
     if isinstance(a, Fn) and isinstance(b, Fn):

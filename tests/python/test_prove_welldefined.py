@@ -1,0 +1,91 @@
+"""Proofs that cannot be unsound (issue 15): every evaluation TLA+ leaves undefined (a
+function outside its domain, a record without the field, a CHOOSE without witness,
+division by a non-positive number, Head/Tail/SubSeq outside the sequence) is a
+well-definedness obligation; a reachable failing one makes the invariant ill-defined
+(exit 13) with the site's file:line:col and a trace, never "proved" and never a
+counterexample with an invented value. Guarded applications (TLA+'s left-to-right
+/\\, \\/, =>, IF, CASE) prove. A spec the checker rejects is not provable (exit 2)."""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import io
+import json
+
+import pytest
+
+from prove_specs.helpers import by_invariant, prove, spec  # noqa: I001 (puts python/ on sys.path)
+
+
+@functools.cache
+def _proved(name: str) -> tuple[int, str, str]:
+    """`safestate prove --json` of a spec, once per test session (exit code, stdout, stderr)."""
+    from safestate.prove.cli import main
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main([spec(f"{name}.tla"), "--json", "--quiet"])
+    return code, out.getvalue(), err.getvalue()
+
+
+def _ill_defined(capsys: pytest.CaptureFixture[str], name: str) -> dict:
+    code, out, err = _proved(name)
+    assert code == 13, err
+    return by_invariant(json.loads(out))
+
+
+@pytest.mark.parametrize("invariant, line, col, kind, trace_length", [
+    ("OutsideDomain", 13, 18, "domain", 3),
+    ("MissingField", 14, 26, "field", 3),
+    ("SubSeqOutOfRange", 15, 30, "sequence", 2),
+    ("HeadOfEmpty", 16, 25, "sequence", 3),
+])
+def test_undefined_evaluation_in_an_invariant_is_ill_defined_with_site_and_trace(
+        capsys: pytest.CaptureFixture[str], invariant: str, line: int, col: int, kind: str,
+        trace_length: int) -> None:
+    r = _ill_defined(capsys, "WdUndefined")[invariant]
+    assert r["status"] == "ill-defined"
+    assert f"WdUndefined.tla:{line}:{col}: in {invariant}, {kind} obligation fails" in r["undefined"]
+    assert len(r["trace"]["states"]) == trace_length
+
+
+def test_typed_invariant_beside_them_is_still_proved(capsys: pytest.CaptureFixture[str]) -> None:
+    assert _ill_defined(capsys, "WdUndefined")["TypeOK"]["status"] == "proved"
+
+
+def test_division_by_zero_is_ill_defined_not_a_counterexample(capsys: pytest.CaptureFixture[str]) -> None:
+    r = _ill_defined(capsys, "WdDivision")["NonNegative"]
+    assert r["status"] == "ill-defined"
+    assert "WdDivision.tla:8:14: in Next, division obligation fails" in r["undefined"]
+    assert [s["x"]["#bigint"] for s in r["trace"]["states"]] == ["0"]
+
+
+def test_choose_without_witness_is_ill_defined(capsys: pytest.CaptureFixture[str]) -> None:
+    r = _ill_defined(capsys, "WdChoose")["TypeOK"]
+    assert "WdChoose.tla:7:14: in Next, choose obligation fails" in r["undefined"]
+    assert [s["x"]["#bigint"] for s in r["trace"]["states"]] == ["0", "1", "2", "3"]
+
+
+def test_tail_of_empty_sequence_is_ill_defined(capsys: pytest.CaptureFixture[str]) -> None:
+    r = _ill_defined(capsys, "WdTail")["TypeOK"]
+    assert "WdTail.tla:8:17: in Next, sequence obligation fails" in r["undefined"]
+
+
+def test_guarded_applications_prove_and_a_vacuous_implication_is_reported(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    code, report, err = prove(capsys, spec("WdGuarded.tla"))
+    assert report is not None, err
+    results = by_invariant(report)
+    guarded = ["TypeOK", "ImpliesGuard", "IfGuard", "AndGuard", "OrGuard", "CaseGuard", "HeadGuard", "DivGuard"]
+    assert {n: results[n]["status"] for n in guarded} == {n: "proved" for n in guarded}
+    assert all(results[n]["obligations"] > 0 and results[n]["vacuity"] == [] for n in guarded)
+    assert results["Vacuous"]["status"] == "vacuous"
+    assert "WdGuarded.tla:23:12 holds in no state" in results["Vacuous"]["vacuity"][0]
+    assert code == 1  # a vacuous proof is not a proof
+
+
+def test_spec_the_checker_rejects_is_not_provable(capsys: pytest.CaptureFixture[str]) -> None:
+    code, report, err = prove(capsys, spec("WdRejected.tla"))
+    assert code == 2 and report is None
+    assert "WdRejected.tla:8:17: not provable: the checker rejects the spec" in err
+    assert "Traceback" not in err
