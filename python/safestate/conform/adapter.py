@@ -142,7 +142,10 @@ class Adapter:
         return self.core.Config(**{self.config_constants[k]: v for k, v in self.constants.items()})
 
     def table_rows(self) -> list[str]:
-        """Ids of every row of the C++ transition table (for the audit)."""
+        """Ids of every row of the C++ transition table (for the audit); none when the
+        adapter compares no rows (a C++ without a row table, such as the state chain's)."""
+        if self.rows_operator is None:
+            return []
         return [r["id"] for r in self.core.transition_table()]
 
     # ------------------------------------------------------------------ code

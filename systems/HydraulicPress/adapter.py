@@ -1,0 +1,64 @@
+"""Conformance adapters of the hydraulic press (docs/design/hydraulic-press.md §7): the chain
+press `safestate._press.HydraulicPress` against models/HydraulicPress.tla, and the flat
+defective reference `safestate._press.PressFlat` against models/HydraulicPressFlat.tla.
+
+* Scan(e): one `cycle(e)` with the operator input event e, spelt as in the model.
+* Projection: the shared observables of both models (design §6): the operators `motor`,
+  `mode`, `step` and the variable `outputs` (a set; the binding returns a sorted list).
+  The chain's active set and call log, and both models' history variables, are hidden.
+* Input-complete alphabet: the twelve input events, enabled in every state of both models.
+  The C++ press objects cannot be copied (the chain refers to its context), so each probe
+  replays its prefix on a fresh press.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from safestate.conform.adapter import Adapter, Applied, Probe
+from safestate.conform.events import Event
+
+SCAN = "Scan"
+
+
+class HydraulicPressAdapter(Adapter):
+    observed_variables = ("outputs",)
+    observed_operators = ("motor", "mode", "step")
+    hidden_variables: ClassVar[tuple[str, ...]] = ("active", "log", "result", "request", "continuous",
+                                                   "restarted", "event")
+    #: the class of safestate._press this adapter drives
+    press_class: ClassVar[str] = "HydraulicPress"
+
+    def new_sut(self) -> Any:
+        return getattr(self.core, self.press_class)()
+
+    def apply(self, sut: Any, event: Event, before: tuple) -> Applied:
+        if event.action != SCAN:
+            raise ValueError(f"unknown model action {event.action} (expected {SCAN})")
+        sut.cycle(str(event.param()))
+        return Applied(None)
+
+    def observe(self, sut: Any) -> dict[str, Any]:
+        o = dict(sut.observe())
+        o["outputs"] = frozenset(o["outputs"])  # the model's outputs is a set
+        return o
+
+    def input_alphabet(self, state: tuple) -> list[Probe]:
+        return [Probe(event, str(event.param()), str(event)) for event, _ in self.stepper.transitions(state)]
+
+    def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
+        results = []
+        for p in probes:
+            sut = self.new_sut()
+            for event in prefix:
+                self.apply(sut, event, ())
+            sut.cycle(p.concrete)
+            results.append((self.observe(sut), frozenset()))
+        return results
+
+
+class PressFlatAdapter(HydraulicPressAdapter):
+    """DEFECTIVE REFERENCE: the flat press conforms to the flat model, accident included."""
+
+    hidden_variables = ("MoToOut", "cur", "FangShi", "continuous", "restarted", "event")
+    press_class = "PressFlat"
