@@ -15,7 +15,7 @@ from conftest import REPO, run_safestate
 from safestate import mutants
 
 MODELS = REPO / "models"
-MUTANTS = [m for name in ("StateChainDoc", "HydraulicPress")
+MUTANTS = [m for name in ("StateChainDoc", "HydraulicPress", "HydraulicPressFlat")
            for m in mutants.load(MODELS / "mutants" / f"{name}.toml")]
 WITNESSES = ["Witness_DeepActive", "Witness_ParallelExited", "Witness_NestedEntry",
              "Witness_CrossRejected", "Witness_SelfTransition", "Witness_RunNested"]
