@@ -51,6 +51,15 @@ struct Driver {
   }
 };
 
+// The chain press's active states, in table (pre-)order: what `safestate demo press` prints.
+std::vector<std::string> active_states(const Driver<sc::HydraulicPress>& d) {
+  std::vector<std::string> names;
+  for (sc::StateIndex s = 0; s < sc::press::state_count; ++s) {
+    if (d.press.chain().is_active(s)) names.emplace_back(sc::press::table[s].name);
+  }
+  return names;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_press, m) {
@@ -58,7 +67,8 @@ PYBIND11_MODULE(_press, m) {
   py::class_<Driver<sc::HydraulicPress>>(m, "HydraulicPress")
       .def(py::init<>())
       .def("cycle", &Driver<sc::HydraulicPress>::cycle, py::arg("event"))
-      .def("observe", &Driver<sc::HydraulicPress>::observe);
+      .def("observe", &Driver<sc::HydraulicPress>::observe)
+      .def("active", &active_states, "the active states, in table order");
   py::class_<Driver<sc::PressFlat>>(m, "PressFlat", "DEFECTIVE REFERENCE: reproduces the accident; never a product")
       .def(py::init<>())
       .def("cycle", &Driver<sc::PressFlat>::cycle, py::arg("event"))

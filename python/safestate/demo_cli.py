@@ -2,6 +2,8 @@
 
 `saf`: the Safety service over UDP on the loopback interface against its simulated peers
 (build/cpp/src/saf/saf_demo). `ssm`: the SystemStateManager scenario (build/cpp/safestate_demo).
+`press`: the hydraulic press accident, flat reference and chain press side by side
+(through the binding safestate._press; python/safestate/press_demo.py).
 """
 
 from __future__ import annotations
@@ -22,15 +24,21 @@ DEMOS: dict[str, str] = {
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("system", choices=sorted(DEMOS), help="which system's demo to run")
+    parser.add_argument("system", choices=sorted([*DEMOS, "press"]), help="which system's demo to run")
     parser.add_argument("--build-dir", type=Path,
                         default=Path(os.environ.get("SAFESTATE_BUILD_DIR", REPO / "build" / "cpp")),
                         help="the C++ build folder (default: build/cpp)")
     parser.add_argument("--realtime", action="store_true",
                         help="saf: sleep one CYCLEINTERVAL (50 ms) per cycle")
+    parser.add_argument("--events", metavar="E1,E2,...",
+                        help="press: the operator input events, comma-separated (default: the flat model's "
+                             "counterexample, then two stroke steps)")
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.system == "press":
+        from .press_demo import run as press_demo
+        return press_demo(args.events.split(",") if args.events else None)
     exe = args.build_dir / DEMOS[args.system]
     if not exe.is_file():
         print(f"safestate demo: {exe} does not exist; build the C++ tree first "

@@ -37,7 +37,7 @@ def system(request):
 
 @pytest.fixture(scope="module")
 def model(system):
-    return load_model(str(system.model), str(system.ci_config))
+    return load_model(str(system.model), str(system.conformance.config or system.ci_config))
 
 
 @pytest.fixture(scope="module")
@@ -68,7 +68,7 @@ def wrong_core(system, wrong_build):
 
 
 def test_registry_lists_every_system_with_a_conformance_adapter():
-    assert {"SystemStateManager", "SafetyService"} <= set(SYSTEMS)
+    assert {"SystemStateManager", "SafetyService", "HydraulicPress", "HydraulicPressFlat"} <= set(SYSTEMS)
 
 
 def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition(full_run, graph):

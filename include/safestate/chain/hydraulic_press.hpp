@@ -7,7 +7,11 @@
 #include <cstddef>
 #include <utility>
 
-#include "safestate/chain/press_io.hpp"
+#include "safestate/chain/press_inputs.hpp"
+#include "safestate/chain/press_observation.hpp"
+#include "safestate/chain/press_output.hpp"
+#include "safestate/chain/press_outputs.hpp"
+#include "safestate/chain/press_step.hpp"
 #include "safestate/chain/state_chain.hpp"
 
 namespace safestate::chain {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "safestate/chain/press_io.hpp"
+#include "safestate/chain/press_inputs.hpp"
 
 namespace safestate::chain {
 

@@ -3,7 +3,11 @@
 // document's flat switch-case press program (docs/design/hydraulic-press.md §5, model
 // models/HydraulicPressFlat.tla), bug included: motor-off does not reset Cur_Runing, so a
 // motor restart resumes the stroke where it stopped. Kept only to reproduce the accident.
-#include "safestate/chain/press_io.hpp"
+#include "safestate/chain/press_inputs.hpp"
+#include "safestate/chain/press_observation.hpp"
+#include "safestate/chain/press_output.hpp"
+#include "safestate/chain/press_outputs.hpp"
+#include "safestate/chain/press_step.hpp"
 
 namespace safestate::chain {
 
