@@ -42,7 +42,9 @@ def interval(tr: "Translator", lo: z3.ArithRef, hi: z3.ArithRef, loc: Loc) -> Se
     if clo is not None and chi is not None and chi - clo < _ENUM_LIMIT:
         return EnumSet([(z3.BoolVal(True), z3.IntVal(i)) for i in range(clo, chi + 1)], z3.IntVal(0))
     upper = chi if chi is not None else tr.upper_bound(hi)
-    s = _int_set(f"{lo}..{hi}", lambda x: z3.And(lo <= x, x <= hi), upper)
+    # (printing z3 terms is slow: the bounds are shown only when concrete)
+    desc = f"{clo if clo is not None else 'a'}..{chi if chi is not None else 'b'}"
+    s = _int_set(desc, lambda x: z3.And(lo <= x, x <= hi), upper)
     s.extra["interval"] = (lo, hi)  # 1..n with n bounded: a function over it is a bounded sequence
     return s
 

@@ -10,24 +10,41 @@ so ``x \\in DOMAIN f /\\ f[x] = 1`` obliges nothing).  docs/prove.md, "Well-defi
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field
+from typing import Union
 
 import z3
 
 from ..tla.errors import Loc
 
 
-@dataclass(frozen=True)
+Guard = Union[z3.BoolRef, Callable[[], z3.BoolRef]]  # a callable: built only if some obligation needs it
+
+
+@dataclass(eq=False)
 class Obligation:
     kind: str          # domain | field | choose | division | sequence | case | capacity
     loc: Loc | None
     what: str          # what must hold, in words
-    cond: z3.BoolRef   # holds in every state (and step) where the site is evaluated
+    site: z3.BoolRef   # the condition at the site itself
+    # the path conditions around it, as a shared chain (outermost guard, the rest) or ():
+    # not a z3 term, since wrapping every obligation at every level through z3py
+    # dominated the translation of the state-chain press
+    guards: tuple = ()
+    _cond: z3.BoolRef | None = field(default=None, repr=False)
 
-    def under(self, guard: z3.BoolRef) -> "Obligation":
-        return replace(self, cond=z3.Implies(guard, self.cond))
+    @property
+    def cond(self) -> z3.BoolRef:
+        """holds in every state (and step) where the site is evaluated"""
+        if self._cond is None:
+            gs, chain = [], self.guards
+            while chain:
+                gs.append(chain[0])
+                chain = chain[1]
+            self._cond = z3.Implies(z3.And(gs), self.site) if gs else self.site
+        return self._cond
 
     def where(self) -> str:
         return f"{self.loc.file}:{self.loc.line}:{self.loc.column}" if self.loc else "?"
@@ -56,15 +73,17 @@ class Obligations:
         return out
 
     @contextmanager
-    def under(self, guard: z3.BoolRef) -> Iterator[None]:
+    def under(self, guard: Guard) -> Iterator[None]:
         """Obligations added inside hold only where `guard` does (a short-circuit)."""
         saved, self.items = self.items, []
         try:
             yield
         finally:
             inner, self.items = self.items, saved
-            if not z3.is_false(guard):
-                self.items.extend(inner if z3.is_true(guard) else [o.under(guard) for o in inner])
+            if inner:
+                g = guard() if callable(guard) else guard
+                if not z3.is_false(g):
+                    saved.extend(inner if z3.is_true(g) else _under(_unique(inner), g))
 
     @contextmanager
     def capture(self) -> Iterator[list[Obligation]]:
@@ -76,6 +95,30 @@ class Obligations:
         finally:
             out.extend(self.items)
             self.items = saved
+
+
+def _under(obligations: list[Obligation], g: z3.BoolRef) -> list[Obligation]:
+    """The obligations under one more guard; those sharing a chain share the new one."""
+    chains: dict[int, tuple] = {}
+    out = []
+    for o in obligations:
+        chain = chains.get(id(o.guards))
+        if chain is None:
+            chain = chains[id(o.guards)] = (g, o.guards)
+        out.append(Obligation(o.kind, o.loc, o.what, o.site, chain))
+    return out
+
+
+def _unique(obligations: list[Obligation]) -> list[Obligation]:
+    """Without repeats (a memoised operator re-emits the same obligations at every use)."""
+    seen: set[tuple[int, int]] = set()
+    out = []
+    for o in obligations:
+        key = (id(o.site), id(o.guards))
+        if key not in seen:
+            seen.add(key)
+            out.append(o)
+    return out
 
 
 def distinct(obligations: list[Obligation]) -> list[Obligation]:

@@ -153,7 +153,7 @@ class Translator:
         """A /\\ B /\\ ...: each conjunct is evaluated only where the ones before it hold."""
         out: list[z3.BoolRef] = []
         for x in items:
-            with self.obl.under(_all(out)):
+            with self.obl.under(lambda before=list(out): _all(before)):
                 v = each(x, ctx)
             if z3.is_false(v):
                 return z3.BoolVal(False)  # TLA+ stops here: the rest is not evaluated
@@ -340,7 +340,7 @@ class Translator:
     def _v_Or(self, e: A.Or, ctx: Ctx) -> Any:
         out: list[z3.BoolRef] = []
         for x in e.items:
-            with self.obl.under(z3.Not(_any(out))):
+            with self.obl.under(lambda before=list(out): z3.Not(_any(before))):
                 v = self.boolean(x, ctx)
             if z3.is_true(v):
                 return v  # TLA+ stops at the first true disjunct
@@ -372,7 +372,7 @@ class Translator:
         # an obligation, and the last arm's value stands for the unspecified one.
         arms: list[tuple[z3.BoolRef, A.Expr]] = []
         for g, x in e.arms:
-            with self.obl.under(z3.Not(_any([a for a, _ in arms]))):
+            with self.obl.under(lambda before=[a for a, _ in arms]: z3.Not(_any(before))):
                 arms.append((self.boolean(g, ctx), x))
             if z3.is_true(arms[-1][0]):
                 break
