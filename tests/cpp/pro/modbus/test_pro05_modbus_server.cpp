@@ -1,0 +1,183 @@
+// PRO-05 communications unit: ao_modbus_server in process over a loopback socket — the
+// registers served, the coil write handed over once, truncated frames and a full connection
+// table handled within the tick, no heap after start(), stop() disconnecting everyone.
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <memory>
+#include <cstdint>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "modbus_test_frames.hpp"
+#include "safestate/pro/ao_modbus_server.hpp"
+
+namespace {
+std::atomic<std::uint64_t> g_allocations{0};
+std::atomic<bool> g_counting{false};
+void* counted_alloc(std::size_t size) {
+  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t size) { return counted_alloc(size); }
+void* operator new[](std::size_t size) { return counted_alloc(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+using namespace safestate::pro;
+using modbus_test::frame;
+using Bytes = std::vector<std::uint8_t>;
+
+int connect_to(std::uint16_t port) {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(port);
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+void send_all(int fd, const Bytes& b) { ASSERT_EQ(send(fd, b.data(), b.size(), 0), static_cast<ssize_t>(b.size())); }
+
+// Ticks the server until `fd` has a reply (at most `ticks` ticks); the reply or empty.
+Bytes tick_until_reply(AoModbusServer& server, const ProcessImage& image, int fd, int ticks = 200) {
+  for (int i = 0; i < ticks; ++i) {
+    server.on_tick(image);
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, 1) > 0) {
+      std::uint8_t buf[300];
+      const ssize_t n = recv(fd, buf, sizeof buf, 0);
+      return n > 0 ? Bytes(buf, buf + n) : Bytes{};
+    }
+  }
+  return {};
+}
+
+class PRO05_ModbusServer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    config_.port = 0;
+    config_.frame_timeout_ticks = 3;
+    server_ = std::make_unique<AoModbusServer>(config_);
+    ASSERT_EQ(server_->start(), UnitStatus::ready);
+    image_.temperature_c = -7;
+    image_.voltage_dv = 245;
+    image_.fan_command_percent = 55;
+    image_.supervisor_state = 1;
+  }
+  ModbusServerConfig config_;
+  std::unique_ptr<AoModbusServer> server_;
+  ProcessImage image_;
+};
+
+TEST_F(PRO05_ModbusServer, ReadInputRegistersReturnsTheProcessImage) {
+  const int fd = connect_to(server_->port());
+  ASSERT_GE(fd, 0);
+  send_all(fd, frame(1, {0x04, 0, 0, 0, 6}));
+  const Bytes reply = tick_until_reply(*server_, image_, fd);
+  const Bytes expected{0x12, 0x34, 0, 0, 0, 15, 1, 0x04, 12, 0xFF, 0xF9, 0, 245, 0, 55, 0, 0, 0, 1, 0, 0};
+  EXPECT_EQ(reply, expected);
+  close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, ACoilWriteIsHandedOverExactlyOnce) {
+  const int fd = connect_to(server_->port());
+  send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x05, 0, 0, 0xFF, 0x00}));  // echo
+  // Until taken, coil 0 reads back 1.
+  send_all(fd, frame(1, {0x01, 0, 0, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x01, 1, 0x01}));
+  EXPECT_TRUE(server_->take_requests().latch_clear_request);
+  EXPECT_FALSE(server_->take_requests().latch_clear_request);
+  send_all(fd, frame(1, {0x01, 0, 0, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x01, 1, 0x00}));
+  close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, AnExceptionIsAnsweredAndTheConnectionKeepsServing) {
+  const int fd = connect_to(server_->port());
+  send_all(fd, frame(1, {0x04, 0, 0, 0, 0}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x84, 0x03}));
+  send_all(fd, frame(1, {0x04, 0, 2, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x04, 2, 0, 55}));
+  close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, ATruncatedFrameClosesOnlyItsConnectionAfterTheFrameTimeout) {
+  const int stalled = connect_to(server_->port());
+  const int healthy = connect_to(server_->port());
+  send_all(stalled, Bytes{0x00, 0x01, 0x00, 0x00, 0x00, 0x06, 0x01, 0x04});  // 8 of 12 bytes
+  for (std::uint32_t i = 0; i <= config_.frame_timeout_ticks + 1; ++i) server_->on_tick(image_);
+  EXPECT_EQ(server_->counters().count(ModbusReason::truncated_frame), 1U);
+  std::uint8_t b = 0;
+  EXPECT_EQ(recv(stalled, &b, 1, 0), 0);  // EOF: the server closed it
+  send_all(healthy, frame(1, {0x04, 0, 1, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, healthy), frame(1, {0x04, 2, 0, 245}));
+  close(stalled);
+  close(healthy);
+}
+
+TEST_F(PRO05_ModbusServer, AFifthClientIsRefusedAndTheFourKeepTheirSlots) {
+  std::vector<int> fds;
+  for (std::size_t i = 0; i <= kModbusMaxConnections; ++i) fds.push_back(connect_to(server_->port()));
+  for (int i = 0; i < 3; ++i) server_->on_tick(image_);
+  EXPECT_EQ(server_->open_connections(), kModbusMaxConnections);
+  EXPECT_EQ(server_->counters().connections_refused, 1U);
+  send_all(fds[0], frame(1, {0x04, 0, 4, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fds[0]), frame(1, {0x04, 2, 0, 1}));
+  for (const int fd : fds) close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, ServingAllocatesNothingAfterStart) {
+  const int fd = connect_to(server_->port());
+  const Bytes read = frame(1, {0x04, 0, 0, 0, 6});
+  const Bytes bad = frame(1, {0x07});
+  g_allocations = 0;
+  g_counting = true;
+  for (int i = 0; i < 500; ++i) {
+    send(fd, (i % 2 ? bad : read).data(), (i % 2 ? bad : read).size(), 0);
+    server_->on_tick(image_);
+    std::uint8_t buf[300];
+    (void)recv(fd, buf, sizeof buf, MSG_DONTWAIT);
+    (void)server_->take_requests();
+  }
+  g_counting = false;
+  EXPECT_EQ(g_allocations.load(), 0U);
+  EXPECT_GT(server_->counters().count(ModbusReason::ok), 0U);
+  close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, StopDisconnectsClientsAndClosesTheListeningSocket) {
+  const int fd = connect_to(server_->port());
+  server_->on_tick(image_);
+  ASSERT_EQ(server_->open_connections(), 1U);
+  const std::uint16_t port = server_->port();
+  EXPECT_EQ(server_->stop(), UnitStatus::stopped);
+  EXPECT_EQ(server_->open_connections(), 0U);
+  std::uint8_t b = 0;
+  EXPECT_EQ(recv(fd, &b, 1, 0), 0);  // EOF
+  EXPECT_LT(connect_to(port), 0);    // nobody listens any more
+  server_->on_tick(image_);          // a tick after stop serves nothing and does not crash
+  EXPECT_EQ(server_->status(), UnitStatus::stopped);
+  close(fd);
+}
+
+}  // namespace
