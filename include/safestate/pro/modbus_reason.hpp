@@ -17,6 +17,7 @@ enum class ModbusReason : std::uint8_t {
   address_out_of_range,  // 02: the range leaves the addressed table (or the table is empty)
   wrong_unit_id,         // discarded: not addressed to this server
   wrong_protocol_id,     // discarded: MBAP protocol identifier is not 0 (not Modbus)
+  reserved_function,     // discarded: function code >= 0x80 (reserved for exception responses)
   bad_mbap_length,       // connection closed: MBAP length outside 2 ... 254
   truncated_frame,       // connection closed: a frame stayed incomplete for the frame timeout
   send_failed,           // connection closed: the reply could not be sent whole (peer gone / not reading)

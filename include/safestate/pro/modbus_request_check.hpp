@@ -115,6 +115,9 @@ namespace modbus_check_detail {
   const std::uint8_t* pdu = adu + kMbapHeaderSize;
   const std::size_t pdu_size = size - kMbapHeaderSize;
   const std::uint8_t fc = pdu[0];
+  // 0x80 ... 0xFF mark exception responses: no exception reply (fc + 0x80) can be formed for
+  // them (0x84 would be answered as 0x04, a normal read response), so they are dropped.
+  if (fc >= 0x80) return {ModbusAction::discard, ModbusException::none, ModbusReason::reserved_function, false};
   std::size_t expected_pdu = 0;
   switch (fc) {
     case modbus_fc::read_coils:

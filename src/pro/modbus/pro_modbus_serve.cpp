@@ -28,7 +28,7 @@ constexpr const char* kUsage =
 
 constexpr const char* kReasonNames[] = {
     "ok", "unsupported_function", "length_mismatch", "bad_quantity", "bad_byte_count", "bad_coil_value",
-    "address_out_of_range", "wrong_unit_id", "wrong_protocol_id", "bad_mbap_length", "truncated_frame",
+    "address_out_of_range", "wrong_unit_id", "wrong_protocol_id", "reserved_function", "bad_mbap_length", "truncated_frame",
     "send_failed"};
 static_assert(sizeof kReasonNames / sizeof kReasonNames[0] == safestate::pro::kModbusReasonCount);
 

@@ -43,7 +43,7 @@ TEST(PRO05_ModbusRequestCheck, WritingOneToCoilZeroRequestsALatchClear) {
 }
 
 TEST(PRO05_ModbusRequestCheck, UnsupportedFunctionsAreIllegalFunction) {
-  for (const std::uint8_t fc : {0x00, 0x07, 0x08, 0x11, 0x16, 0x17, 0x2B, 0x84}) {
+  for (const std::uint8_t fc : {0x00, 0x07, 0x08, 0x11, 0x16, 0x17, 0x2B, 0x7F}) {
     expect_exception(frame(kUnit, {fc, 0, 0, 0, 1}), ModbusException::illegal_function, ModbusReason::unsupported_function);
   }
   expect_exception(frame(kUnit, {0x2B}), ModbusException::illegal_function, ModbusReason::unsupported_function);
@@ -93,6 +93,15 @@ TEST(PRO05_ModbusRequestCheck, OtherUnitIdsAndProtocolIdsAreDiscardedWithoutRepl
   const ModbusVerdict protocol = check(frame(kUnit, {0x04, 0, 0, 0, 1}, 1));
   EXPECT_EQ(protocol.action, ModbusAction::discard);
   EXPECT_EQ(protocol.reason, ModbusReason::wrong_protocol_id);
+}
+
+TEST(PRO05_ModbusRequestCheck, FunctionCodesOfExceptionResponsesAreDiscarded) {
+  // 0x84 + 0x80 would wrap to 0x04: an "exception" that reads as a normal response.
+  for (const std::uint8_t fc : {0x80, 0x84, 0xFF}) {
+    const ModbusVerdict v = check(frame(kUnit, {fc, 0, 0, 0, 1}));
+    EXPECT_EQ(v.action, ModbusAction::discard);
+    EXPECT_EQ(v.reason, ModbusReason::reserved_function);
+  }
 }
 
 TEST(PRO05_ModbusRequestCheck, TheMbapLengthFramesTwoTo254Bytes) {
