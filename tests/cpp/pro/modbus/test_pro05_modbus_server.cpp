@@ -127,6 +127,24 @@ TEST_F(PRO05_ModbusServer, AFifthClientIsRefusedAndTheFourKeepTheirSlots) {
   for (const int fd : fds) close(fd);
 }
 
+TEST_F(PRO05_ModbusServer, AtMostEightFramesAreHandledPerTickAndTheRestWait) {
+  const int fd = connect_to(server_->port());
+  Bytes burst;
+  for (int i = 0; i < 20; ++i) {
+    const Bytes f = frame(1, {0x04, 0, 0, 0, 1});
+    burst.insert(burst.end(), f.begin(), f.end());
+  }
+  send_all(fd, burst);  // 240 bytes: all of it fits in the connection's 260-byte buffer
+  server_->on_tick(image_);
+  EXPECT_EQ(server_->counters().count(ModbusReason::ok), kModbusMaxRequestsPerTick);
+  server_->on_tick(image_);
+  EXPECT_EQ(server_->counters().count(ModbusReason::ok), 2 * kModbusMaxRequestsPerTick);
+  server_->on_tick(image_);
+  EXPECT_EQ(server_->counters().count(ModbusReason::ok), 20U);
+  EXPECT_EQ(server_->counters().count(ModbusReason::truncated_frame), 0U);
+  close(fd);
+}
+
 TEST_F(PRO05_ModbusServer, ServingAllocatesNothingAfterStart) {
   const int fd = connect_to(server_->port());
   const Bytes read = frame(1, {0x04, 0, 0, 0, 6});
