@@ -99,6 +99,18 @@ TEST_F(PRO05_ModbusServer, ACoilWriteIsHandedOverExactlyOnce) {
   close(fd);
 }
 
+TEST_F(PRO05_ModbusServer, CoilZeroReadsOneWhileTheControllerHoldsARequest) {
+  const int fd = connect_to(server_->port());
+  image_.latch_clear_request = 1;  // taken from the server, not yet consumed by a tick
+  send_all(fd, frame(1, {0x01, 0, 0, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x01, 1, 0x01}));
+  image_.latch_clear_request = 0;  // consumed
+  send_all(fd, frame(1, {0x01, 0, 0, 0, 1}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x01, 1, 0x00}));
+  EXPECT_FALSE(server_->take_requests().latch_clear_request);  // reading requests nothing
+  close(fd);
+}
+
 TEST_F(PRO05_ModbusServer, AnExceptionIsAnsweredAndTheConnectionKeepsServing) {
   const int fd = connect_to(server_->port());
   send_all(fd, frame(1, {0x04, 0, 0, 0, 0}));
