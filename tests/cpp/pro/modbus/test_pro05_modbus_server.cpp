@@ -42,6 +42,13 @@ int connect_to(std::uint16_t port) {
 
 void send_all(int fd, const Bytes& b) { ASSERT_EQ(send(fd, b.data(), b.size(), 0), static_cast<ssize_t>(b.size())); }
 
+// `n` copies of `f`, back to back: pipelined requests.
+Bytes repeated(const Bytes& f, std::size_t n) {
+  Bytes out;
+  for (std::size_t i = 0; i < n; ++i) out.insert(out.end(), f.begin(), f.end());
+  return out;
+}
+
 // Ticks the server until `fd` has a reply (at most `ticks` ticks); the reply or empty.
 Bytes tick_until_reply(AoModbusServer& server, const ProcessImage& image, int fd, int ticks = 200) {
   for (int i = 0; i < ticks; ++i) {
@@ -147,11 +154,7 @@ TEST_F(PRO05_ModbusServer, AFifthClientIsRefusedAndTheFourKeepTheirSlots) {
 
 TEST_F(PRO05_ModbusServer, AtMostEightFramesAreHandledPerTickAndTheRestWait) {
   const int fd = connect_to(server_->port());
-  Bytes burst;
-  for (int i = 0; i < 20; ++i) {
-    const Bytes f = frame(1, {0x04, 0, 0, 0, 1});
-    burst.insert(burst.end(), f.begin(), f.end());
-  }
+  const Bytes burst = repeated(frame(1, {0x04, 0, 0, 0, 1}), 20);
   send_all(fd, burst);  // 240 bytes: all of it fits in the connection's 260-byte buffer
   server_->on_tick(image_);
   EXPECT_EQ(server_->counters().count(ModbusReason::ok), kModbusMaxRequestsPerTick);
@@ -161,6 +164,33 @@ TEST_F(PRO05_ModbusServer, AtMostEightFramesAreHandledPerTickAndTheRestWait) {
   EXPECT_EQ(server_->counters().count(ModbusReason::ok), 20U);
   EXPECT_EQ(server_->counters().count(ModbusReason::truncated_frame), 0U);
   close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, AClientThatNeverReadsItsRepliesIsDisconnectedNotWaitedFor) {
+  // A small receive buffer and no reads: the replies pile up until the server's socket is
+  // full; the server then drops the connection instead of waiting (send_failed).
+  const int greedy = socket(AF_INET, SOCK_STREAM, 0);
+  const int small = 4096;
+  setsockopt(greedy, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(server_->port());
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(connect(greedy, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  const Bytes burst = repeated(frame(1, {0x04, 0, 0, 0, 6}), kModbusMaxRequestsPerTick);
+  int ticks = 0;
+  while (server_->counters().count(ModbusReason::send_failed) == 0 && ticks < 200000) {
+    if (send(greedy, burst.data(), burst.size(), MSG_NOSIGNAL | MSG_DONTWAIT) < 0) break;
+    server_->on_tick(image_);
+    ++ticks;
+  }
+  EXPECT_EQ(server_->counters().count(ModbusReason::send_failed), 1U);
+  EXPECT_EQ(server_->open_connections(), 0U);
+  const int fd = connect_to(server_->port());
+  send_all(fd, frame(1, {0x04, 0, 0, 0, 6}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), kImageReply);
+  close(fd);
+  close(greedy);
 }
 
 TEST_F(PRO05_ModbusServer, ServingAllocatesNothingAfterStart) {
