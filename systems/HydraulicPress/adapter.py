@@ -47,7 +47,7 @@ class HydraulicPressAdapter(Adapter):
         return [Probe(event, str(event.param()), str(event)) for event, _ in self.stepper.transitions(state)]
 
     def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
-        results = []
+        results: list[tuple[dict[str, Any], frozenset[str]]] = []
         for p in probes:
             sut = self.new_sut()
             for event in prefix:

@@ -15,6 +15,7 @@ translatable subset raises `ProveError` with the position of the construct.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import partial
 from typing import Any, Callable
 
 import z3
@@ -153,7 +154,7 @@ class Translator:
         """A /\\ B /\\ ...: each conjunct is evaluated only where the ones before it hold."""
         out: list[z3.BoolRef] = []
         for x in items:
-            with self.obl.under(lambda before=list(out): _all(before)):
+            with self.obl.under(partial(_all, list(out))):
                 v = each(x, ctx)
             if z3.is_false(v):
                 return z3.BoolVal(False)  # TLA+ stops here: the rest is not evaluated
@@ -243,9 +244,9 @@ class Translator:
                 if args:
                     raise ProveError(f"{name} takes no arguments", e.loc)
                 if not loc_v.done:
-                    with self.obl.capture() as inner:
+                    with self.obl.capture() as obligations:
                         loc_v.value = self.val(loc_v.expr, loc_v.ctx)
-                    loc_v.obligations = inner
+                    loc_v.obligations = obligations
                     loc_v.done = True
                 self.obl.emit(loc_v.obligations)
                 return loc_v.value
@@ -340,7 +341,7 @@ class Translator:
     def _v_Or(self, e: A.Or, ctx: Ctx) -> Any:
         out: list[z3.BoolRef] = []
         for x in e.items:
-            with self.obl.under(lambda before=list(out): z3.Not(_any(before))):
+            with self.obl.under(partial(_none, list(out))):
                 v = self.boolean(x, ctx)
             if z3.is_true(v):
                 return v  # TLA+ stops at the first true disjunct
@@ -372,7 +373,7 @@ class Translator:
         # an obligation, and the last arm's value stands for the unspecified one.
         arms: list[tuple[z3.BoolRef, A.Expr]] = []
         for g, x in e.arms:
-            with self.obl.under(lambda before=[a for a, _ in arms]: z3.Not(_any(before))):
+            with self.obl.under(partial(_none, [a for a, _ in arms])):
                 arms.append((self.boolean(g, ctx), x))
             if z3.is_true(arms[-1][0]):
                 break
@@ -565,7 +566,7 @@ class Translator:
             vals[key] = self.val(body, ctx.bind(binds))
         return Fn(tuple(out_keys), vals)
 
-    def _seq_lit(self, bounds: list[A.Bound], body: A.Expr, ctx: Ctx) -> SeqV | None:
+    def _seq_lit(self, bounds: list[A.Bound], body: A.Expr, ctx: Ctx) -> SeqV | Tup | None:
         """[i \\in 1..n |-> e] or [i \\in DOMAIN s |-> e] with a symbolic, bounded n (Len(s)):
         a bounded sequence of n elements (slot i is evaluated only where i <= n)."""
         if len(bounds) != 1 or bounds[0].tuple or len(bounds[0].names) != 1:
@@ -670,6 +671,10 @@ def _all(items: list[z3.BoolRef]) -> z3.BoolRef:
 
 def _any(items: list[z3.BoolRef]) -> z3.BoolRef:
     return z3.BoolVal(False) if not items else items[0] if len(items) == 1 else z3.Or(items)
+
+
+def _none(items: list[z3.BoolRef]) -> z3.BoolRef:
+    return z3.Not(_any(items))
 
 
 def _simp(g: z3.BoolRef) -> z3.BoolRef:
