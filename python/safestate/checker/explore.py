@@ -212,8 +212,8 @@ class Explorer:
                 self._expand_all()
             except _Stop:
                 pass
-            except MemoryLimitExceeded as e:
-                detail = f" ({e.where})" if e.where else ""
+            except MemoryLimitExceeded as over:
+                detail = f" ({over.where})" if over.where else ""
                 where = (f"while computing the initial states{detail}" if self.computing_init
                          else f"after {len(self.states)} distinct states{detail}")
                 err = TlaError("memory", f"memory limit of {self.max_memory_mb} MB exceeded {where}; "
