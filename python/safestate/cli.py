@@ -20,6 +20,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "check": ("safestate.checker.cli", "model-check a TLA+ specification (TLC-equivalent)"),
     "prove": ("safestate.prove.cli", "prove invariants with z3 (BMC, k-induction, PDR)"),
     "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
+    "evidence": ("safestate.evidence.cli", "build (or --verify) the certification evidence package"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
 }
 
@@ -31,6 +32,7 @@ safestate: formally verified safety state machines.  The pipeline, per system
   safestate check   SYSTEM|MODEL.tla      model checking, TLC's verdicts and counts
   safestate prove   SYSTEM|MODEL.tla      unbounded proofs of every invariant (z3)
   safestate conform SYSTEM|MODEL.tla      the C++ against the model (replay, Hypothesis)
+  safestate evidence [--out DIR]          the evidence package: matrix, diagrams, manifest
 """
 
 EXIT_CODES = """\
