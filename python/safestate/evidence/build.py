@@ -16,7 +16,8 @@ from ..errors import UsageError
 from ..systems.registry import System, load_all
 from . import diagrams, junit, manifest, render, sources, traces
 from .collect import Runner, StepResult
-from .matrix import SystemFacts, build as build_matrix, cfg_invariants, check_verdict
+from .matrix import (SystemFacts, build as build_matrix, cfg_invariants, check_verdict, conform_summary,
+                     proofs_by_invariant)
 from .render import SystemPage
 from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
 
@@ -96,6 +97,7 @@ def build(opts: Options) -> Result:
         defs = [d for f in model_files(s.model) for d in sources.model_defs(f, root, known)]
         facts.append(SystemFacts(runs, defs, cfg_invariants(runs),
                                  sources.cpp_row_locations(cpp_files(s), root)))
+        opts.log(_one_line(runs))
 
     owned = {rid for f in facts for rid in f.runs.system.requirements} | {
         rid for f in facts for d in f.defs if d.name in f.invariants for rid in d.requirements}
@@ -133,6 +135,26 @@ def build(opts: Options) -> Result:
                                        "gaps": len(m.gaps), "gap_kinds": _kinds(m.gaps), "failures": failures,
                                        "checks": checks, "steps": steps})
     return Result(out, len(m.gaps), failures)
+
+
+def _one_line(r: SystemRuns) -> str:
+    """What a system's steps gave, for the main job's log."""
+    c = r.check.json()
+    parts = [f"== {r.system.name}: check {check_verdict(r)}" + (
+        f" ({c['distinct_states']:,} distinct, {c['states_generated']:,} generated, depth {c['depth']})"
+        if isinstance(c, dict) and "distinct_states" in c else "")]
+    if r.prove:
+        proofs = proofs_by_invariant(r)
+        parts.append(f"proofs {sum(1 for x in proofs.values() if x.get('status') == 'proved')}/{len(proofs)} proved")
+    conf = conform_summary(r)
+    if conf:
+        parts.append(f"conformance {conf.get('transitions_covered'):,}/{conf.get('transitions_total'):,} transitions, "
+                     f"{conf.get('mismatches')} mismatches, {len(conf.get('rows_taken', []))} rows taken")
+    elif r.conform:
+        parts.append(f"conformance exit {r.conform.returncode}")
+    if r.mutants:
+        parts.append(f"mutants {sum(1 for m in r.mutants if m.killed)}/{len(r.mutants)} killed")
+    return "; ".join(parts)
 
 
 def _elsewhere(root: Path, packaged: list[System]) -> dict[str, list[str]]:
