@@ -35,6 +35,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+from kill_table import gtest_kills  # noqa: E402
 from mutate import REPO, Mutant, prepare, translation_units  # noqa: E402
 
 TARGETS = ("src/*.cpp", "include/safestate/*.hpp")
@@ -98,18 +99,6 @@ def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
 def _build(build: Path, targets: list[str]) -> bool:
     r = subprocess.run(["cmake", "--build", str(build), "-j", "1", "--target", *targets], capture_output=True, text=True)
     return r.returncode == 0
-
-
-def gtest_failures(build: Path, m: Mutant) -> list[str]:
-    failed = []
-    for exe in sorted((build / f"gtest_{m.id}").glob("test_*")):
-        try:
-            r = subprocess.run([str(exe), "--gtest_brief=1"], capture_output=True, text=True, timeout=300)
-            if r.returncode != 0:
-                failed.append(exe.name)
-        except subprocess.TimeoutExpired:
-            failed.append(exe.name + " (timeout)")
-    return failed
 
 
 def _harness(build: Path, m: Mutant):  # type: ignore[no-untyped-def]
@@ -179,7 +168,7 @@ def main() -> int:
                 if not _build(build, [f"gt_{m.id}_{t}" for t in tests]):
                     row["status"] = "stillborn"   # compiles in the library, not in a test (e.g. a removed member)
                 else:
-                    failed = gtest_failures(build, m)
+                    failed = gtest_kills(build, m)[1]
                     why = "GoogleTest: " + ", ".join(failed) if failed else input_complete_kill(build, m)
             if row.get("status") != "stillborn":
                 row["status"] = "killed" if why else "survived"
