@@ -38,7 +38,8 @@ safestate: formally verified safety state machines.  The pipeline, per system
 EXIT_CODES = """\
 exit codes (every subcommand):
   0     success: no error found / every invariant proved / conformant
-  1     check --tlc: TLC disagrees; prove: an invariant neither proved nor violated
+  1     check --tlc: TLC disagrees; prove: an invariant neither proved nor violated;
+        evidence: a step failed (the package is still written) / --verify found a difference
   2     usage or input error (bad argument, missing or malformed file, unknown system
         or binding module, unwritable output path): one line on stderr, no traceback
   12    an invariant is violated (check: TLC's code; prove: a counterexample)

@@ -261,9 +261,13 @@ def _system_page(out: Path, f: SystemFacts, corpus: sources.Corpus) -> SystemPag
     if table is None:
         rows = [row for row in corpus.rows if row.page == page and set(row.requirements) & ids]
         table = (diagrams.design_rows_dot(f"{s.name} rows", rows),
-                 f"from the {len(rows)} rows of {page} (no DOT export in the binding)")
-    rel = _write(out, f"diagrams/{s.name}-table.svg", diagrams.svg(table[0]))
-    p.diagrams.append(("C++ transition table (row IDs on the edges)", "../" + rel, f"source: {table[1]}"))
+                 f"from the {len(rows)} rows of {page} (no DOT export in the binding)") if rows else None
+    if table is None:
+        p.diagrams.append(("C++ transition table", "", f"not drawn: no DOT export in the binding and no design-page "
+                           f"row with an ID for {', '.join(sorted(ids))} in {page}"))
+    else:
+        rel = _write(out, f"diagrams/{s.name}-table.svg", diagrams.svg(table[0]))
+        p.diagrams.append(("C++ transition table (row IDs on the edges)", "../" + rel, f"source: {table[1]}"))
     control = str(s.extra.get("control_state", "state"))
     try:
         dot, figures = diagrams.model_states_dot(s, control)

@@ -45,8 +45,9 @@ def digraph(name: str, edges: dict[tuple[str, str], set[str]], nodes: Iterable[s
     return "\n".join(lines) + "\n"
 
 
-def _wrap(labels: list[str], per_line: int = 6) -> str:
-    return "\n".join(" ".join(labels[i:i + per_line]) for i in range(0, len(labels), per_line))
+def _wrap(labels: list[str], per_line: int = 4, most: int = 12) -> str:
+    shown = labels[:most] + ([f"+{len(labels) - most} more"] if len(labels) > most else [])
+    return "\n".join(" ".join(shown[i:i + per_line]) for i in range(0, len(shown), per_line))
 
 
 def cpp_table_dot(system: System) -> tuple[str, str] | None:
@@ -96,7 +97,7 @@ def model_states_dot(system: System, control: str, rows_per_edge: int = 40) -> t
     sampled: dict[tuple[str, str], int] = defaultdict(int)
     for s, d, ev in zip(g.src, g.dst, g.events):
         a, b = _label(g.states[s][k]), _label(g.states[d][k])
-        edges[(a, b)].add(ev.action)
+        edges[(a, b)].add(_event_label(ev))
         if adapter is not None and sampled[(a, b)] < rows_per_edge:
             sampled[(a, b)] += 1
             try:
@@ -106,6 +107,14 @@ def model_states_dot(system: System, control: str, rows_per_edge: int = 40) -> t
             edges[(a, b)].update(rows or ())
     figures = {"states": len(g.states), "transitions": len(g.src), "control_states": len({x for e in edges for x in e})}
     return digraph(f"{system.name} model", edges), figures
+
+
+def _event_label(ev: object) -> str:
+    """The action, with its short string parameters (Step(StandStill)); a record
+    parameter (a whole input vector) is left out."""
+    params = [v for _, v in getattr(ev, "params", ()) if isinstance(v, str | bool) and len(str(v)) <= 20]
+    name = str(getattr(ev, "action", ev))
+    return f"{name}({', '.join(map(str, params))})" if params else name
 
 
 def _label(v: object) -> str:

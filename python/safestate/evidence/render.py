@@ -175,8 +175,8 @@ Verify with <code>safestate evidence --verify DIR</code>: it re-hashes every inp
 def system_html(p: SystemPage) -> str:
     r = p.runs
     s = r.system
-    diagrams = "".join(f'<h3>{escape(t)}</h3><p class="muted">{escape(n)}</p>'
-                       f'<img class="diagram" src="{h}" alt="{escape(t)}">' for t, h, n in p.diagrams)
+    diagrams = "".join(f'<h3>{escape(t)}</h3><p class="{"muted" if h else "gap"}">{escape(n)}</p>'
+                       + (f'<img class="diagram" src="{h}" alt="{escape(t)}">' if h else "") for t, h, n in p.diagrams)
     proofs = "".join(f"<tr><td><code>{escape(n)}</code></td><td>{_status(x.get('status') == 'proved', str(x.get('status')))}</td>"
                      f"<td>{escape(str(x.get('engine')))}</td><td>{x.get('k')}</td><td>{x.get('seconds')}</td>"
                      f"<td>{escape(x.get('note') or '')}</td></tr>" for n, x in proofs_by_invariant(r).items())
