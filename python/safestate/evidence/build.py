@@ -22,6 +22,7 @@ from .render import SystemPage
 from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
 
 REQUIREMENTS_ENV = "SAFESTATE_REQUIREMENTS"
+CACHE_ENV = "SAFESTATE_EVIDENCE_CACHE"
 MUTATION_SCORE = Path("build") / "cpp-mutation" / "score.json"
 COVERAGE_DIR = Path("build") / "coverage"
 
@@ -45,6 +46,13 @@ class Result:
     out: Path
     gaps: int
     failures: list[str]
+
+
+def cache_dir(root: Path) -> Path:
+    """Where step results are cached: $SAFESTATE_EVIDENCE_CACHE, else build/evidence-cache
+    (the tests use their own, so that a main job beside them never rewrites their steps)."""
+    import os
+    return Path(os.environ.get(CACHE_ENV) or root / "build" / "evidence-cache")
 
 
 def find_requirements(root: Path) -> Path | None:
@@ -89,7 +97,7 @@ def build(opts: Options) -> Result:
     corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)],
                             sources.gtests(root / "tests" / "cpp", root, known)
                             + sources.pytests(root / "tests" / "python", root, known))
-    runner = Runner(root, root / "build" / "evidence-cache", opts.reuse, opts.log)
+    runner = Runner(root, cache_dir(root), opts.reuse, opts.log)
 
     facts: list[SystemFacts] = []
     for s in systems:
