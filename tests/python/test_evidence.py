@@ -169,3 +169,14 @@ def test_evidence_report_in_headless_chromium_loads_clean_with_every_link_and_im
                 assert [r.find_element("css selector", "td").get_attribute("id") for r in rows] == ids
     for shot in ("summary.png", "PLCopenAxis.png"):
         assert (package / "screenshots" / shot).stat().st_size > 10_000
+
+
+def test_evidence_requirement_ids_are_read_from_names_as_code_spells_them() -> None:
+    from safestate.evidence.sources import code_ids
+    known = {"RSM-05", "SAF-02", "INV-POWER", "INV-PRESS", "INV-NOJOG-AUTO"}
+    assert code_ids("RSM05_Estop.ResetIsRejected", known) == ("RSM-05",)
+    assert code_ids("test_estop_release_needs_reset_rsm05", known) == ("RSM-05",)
+    assert code_ids("INV_NOJOG_AUTO", known) == ("INV-NOJOG-AUTO",)
+    assert code_ids("HydraulicPress.INV_PRESS_MotorOffSwitchesEveryOutputOff", known) == ("INV-PRESS",)
+    assert code_ids("INV_POWER_OFF", known) == ()          # another invariant, not INV-POWER
+    assert code_ids("| P01 | PAIRING | ... | A, SAF-02 |", known) == ("SAF-02",)
