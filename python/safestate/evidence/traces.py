@@ -92,10 +92,11 @@ def sequence_svg(ss: list[Step], system: str, control: str | None, verdict: str)
         ctl = s.changes.get(control, "") if control else ""
         others = len([k for k in s.changes if k != control])
         note = (f"{control} = {ctl}; " if ctl else "") + f"{others} other variable(s) changed"
-        if last:
-            note += f" — {verdict}"
         out.append(f'<rect x="{xm + 10}" y="{y - 14}" width="{w - xm - 20}" height="22" fill="{"#fdd" if last else "#ffe"}" '
                    f'stroke="{color}"/>')
         out.append(f'<text x="{xm + 16}" y="{y + 1}" fill="{color}">{escape(_clip(note, 62))}</text>')
+    if ss:
+        y = top + dy * (len(ss) - 1) + 28
+        out.append(f'<text x="{xm + 16}" y="{y}" fill="#c00" font-weight="bold">{escape(_clip(verdict, 62))}</text>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
