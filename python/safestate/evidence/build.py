@@ -274,8 +274,11 @@ def _system_page(out: Path, f: SystemFacts, corpus: sources.Corpus) -> SystemPag
         p.diagrams.append(("C++ transition table", "", f"not drawn: no DOT export in the binding and no design-page "
                            f"row with an ID for {', '.join(sorted(ids))} in {page}"))
     else:
-        rel = _write(out, f"diagrams/{s.name}-table.svg", diagrams.svg(table[0]))
-        p.diagrams.append(("C++ transition table (row IDs on the edges)", "../" + rel, f"source: {table[1]}"))
+        try:
+            rel = _write(out, f"diagrams/{s.name}-table.svg", diagrams.svg(table[0]))
+            p.diagrams.append(("C++ transition table (row IDs on the edges)", "../" + rel, f"source: {table[1]}"))
+        except diagrams.DiagramError as e:
+            p.diagrams.append(("C++ transition table", "", f"not drawn: {e}"))
     control = str(s.extra.get("control_state", "state"))
     try:
         dot, figures = diagrams.model_states_dot(s, control)
@@ -285,7 +288,7 @@ def _system_page(out: Path, f: SystemFacts, corpus: sources.Corpus) -> SystemPag
                            f"{figures['states']:,} states, {figures['transitions']:,} transitions of the CI cfg; "
                            "edges: the model's actions" + (" and the rows RowsFiredBy gives on a sample of each "
                                                            "edge's transitions" if s.conformance else "")))
-    except (diagrams.DiagramError, Exception) as e:  # noqa: BLE001 - shown in the page, not hidden
+    except Exception as e:  # noqa: BLE001 - a diagram that cannot be drawn is said in the page, not hidden
         p.diagrams.append(("model control states", "", f"not drawn: {type(e).__name__}: {e}"))
     for mr in r.mutants:
         p.mutant_html.append(_mutant_html(out, s, mr, control))
