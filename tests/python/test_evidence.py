@@ -179,4 +179,6 @@ def test_evidence_requirement_ids_are_read_from_names_as_code_spells_them() -> N
     assert code_ids("INV_NOJOG_AUTO", known) == ("INV-NOJOG-AUTO",)
     assert code_ids("HydraulicPress.INV_PRESS_MotorOffSwitchesEveryOutputOff", known) == ("INV-PRESS",)
     assert code_ids("INV_POWER_OFF", known) == ()          # another invariant, not INV-POWER
+    assert code_ids("SAF02_InvSafEmergency.HoldsOnRandomMessageSequences", known | {"INV-SAF-EMERGENCY"}) == \
+        ("INV-SAF-EMERGENCY", "SAF-02")
     assert code_ids("| P01 | PAIRING | ... | A, SAF-02 |", known) == ("SAF-02",)

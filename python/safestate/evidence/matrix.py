@@ -152,7 +152,8 @@ def _requirement_gaps(e: Entry) -> list[Gap]:
     if not e.rows:
         out.append(Gap("no design row", rid, "no row of a design-page table (| ID | ...) names it"))
     if not e.cpp_rows:
-        out.append(Gap("no C++ row", rid, "no C++ table row of its system(s) is found for its design rows"))
+        out.append(Gap("no C++ row", rid, "no C++ table row of its system(s) names one of its design rows (a string literal such "
+                       "as \"C06\" in the system's cpp_sources)"))
     if e.systems and not e.operators and not e.invariants:
         out.append(Gap("no model operator", rid, "no operator of the model names it"))
     if not e.tests:

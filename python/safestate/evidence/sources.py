@@ -119,6 +119,9 @@ def code_ids(text: str, known: set[str]) -> tuple[str, ...]:
         found.append(m.group(0))
     for m in _CODE_PREFIX.finditer(text):
         found.append(f"{m.group(1).upper()}-{m.group(2)}")
+    # CamelCase in test names: SAF02_InvSafEmergency names INV-SAF-EMERGENCY.
+    tokens = {w.lower() for w in re.split(r"[^A-Za-z0-9]+", text) if w}
+    found += [rid for rid in known if rid.startswith("INV-") and rid.replace("-", "").lower() in tokens]
     for rid in known:
         # INV_PRESS_AccidentRestart... names INV-PRESS; INV_POWER_OFF (another invariant) does not name INV-POWER.
         pat = r"(?<![A-Za-z0-9])" + rid.replace("-", "[-_]") + r"(?![A-Za-z0-9])(?!_[A-Z]{2})"
