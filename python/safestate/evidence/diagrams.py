@@ -66,7 +66,7 @@ def cpp_table_dot(system: System) -> tuple[str, str] | None:
 
 def design_rows_dot(name: str, rows: list[DesignRow]) -> str:
     """A DOT from design-page rows `| ID | from | guard | to | ...`: sources split on
-    commas, `stay` a self-loop."""
+    commas; `stay`, or a fourth column that is not a state name, a self-loop."""
     edges: dict[tuple[str, str], set[str]] = defaultdict(set)
     for r in rows:
         cells = [c.strip() for c in r.text.strip("|").split("|")]
@@ -74,8 +74,10 @@ def design_rows_dot(name: str, rows: list[DesignRow]) -> str:
             continue
         froms = [f.strip() for f in re.split(r",|\bor\b", cells[1]) if f.strip()]
         to = re.sub(r"[`(].*", "", cells[3]).strip().rstrip(",") or "stay"
+        # A target that is not a state name (an action column: "send Request Control") stays.
+        stays = to == "stay" or not re.fullmatch(r"[A-Z][A-Z0-9_]*", to)
         for f in froms:
-            edges[(f, f if to == "stay" else to)].add(r.id)
+            edges[(f, f if stays else to)].add(r.id)
     return digraph(name, edges)
 
 
