@@ -40,7 +40,7 @@ def results(path: Path | None, kind: str) -> dict[str, str]:
 
 
 def counts(res: dict[str, str]) -> dict[str, int]:
-    c = {"passed": 0, "failed": 0, "skipped": 0}
+    c = {"passed": 0, "failed": 0, "skipped": 0, "not run": 0}
     for o in res.values():
-        c[o] += 1
+        c[o] = c.get(o, 0) + 1
     return c

@@ -159,8 +159,8 @@ def _requirement_gaps(e: Entry) -> list[Gap]:
     if not e.tests:
         out.append(Gap("no test", rid, "no GoogleTest or pytest test is named after it"))
     for t, outcome in e.tests:
-        if outcome == "failed":
-            out.append(Gap("test failed", rid, t.name))
+        if outcome in ("failed", "not run"):
+            out.append(Gap(f"test {outcome}", rid, f"{t.name} ({t.loc})"))
     for inv in e.invariants:
         if inv.check != "success":
             out.append(Gap("model check failed", rid, f"{inv.system}: {inv.check}"))

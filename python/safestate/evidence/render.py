@@ -66,7 +66,8 @@ def summary_row(p: SystemPage, test_counts: dict[str, int]) -> str:
     killed = sum(1 for m in r.mutants if m.killed)
     muts = _status(killed == len(r.mutants), f"{killed}/{len(r.mutants)} killed") if r.mutants else \
         '<span class="gap">no mutants</span>'
-    tests = f"{test_counts.get('passed', 0)} passed, {test_counts.get('failed', 0)} failed"
+    tests = f"{test_counts.get('passed', 0)} passed, {test_counts.get('failed', 0)} failed" + (
+        f", {test_counts['not run']} not run" if test_counts.get("not run") else "")
     return (f'<tr><td><a href="{p.href}">{escape(r.system.name)}</a></td>'
             f"<td>{p.figures.get('control_states', '?')}</td><td>{p.figures.get('transitions', '?'):,}</td>"
             f"<td>{len(p.figures.get('invariants', []))}</td><td>{_status(check_verdict(r) == 'success', chk)}</td>"
