@@ -95,7 +95,8 @@ def build(opts: Options) -> Result:
     known = {r.id for r in reqs}
     pages = sorted((root / "docs" / "design").glob("*.md"))
     corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)],
-                            sources.gtests(root / "tests" / "cpp", root, known)
+                            [t for d in [root / "tests" / "cpp", *sorted((root / "src").rglob("tests"))]
+                             for t in sources.gtests(d, root, known)]
                             + sources.pytests(root / "tests" / "python", root, known))
     runner = Runner(root, cache_dir(root), opts.reuse, opts.log)
 
