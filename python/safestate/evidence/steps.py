@@ -3,6 +3,7 @@ inputs (for the cache key and the manifest), which outputs."""
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -142,6 +143,8 @@ def run_ctest(runner: Runner, root: Path, regex: str | None) -> StepResult:
     if regex:
         argv += ["-R", regex]
     inputs = files_under([root / "include", root / "src", root / "tests" / "cpp"], (".hpp", ".cpp", ".h", ".txt"))
+    # The built test executables too: a cached result of an older build is not reused.
+    inputs += sorted(f for f in build.rglob("test_*") if f.is_file() and os.access(f, os.X_OK))
     return runner.run("ctest", argv, inputs, outputs=["ctest.xml"])
 
 
