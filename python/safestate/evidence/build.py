@@ -110,13 +110,17 @@ def build(opts: Options) -> Result:
 
     owned = {rid for f in facts for rid in f.runs.system.requirements} | {
         rid for f in facts for d in f.defs if d.name in f.invariants for rid in d.requirements}
-    selected = [t for t in corpus.tests if set(t.requirements) & (owned if opts.systems else known)]
+    elsewhere = _elsewhere(root, systems)
+    # Tests of this package's requirements and of those no registered system covers
+    # (listed in every package); not those of the systems left out.
+    wanted = owned | (known - set(elsewhere))
+    selected = [t for t in corpus.tests if set(t.requirements) & wanted]
     ctest = run_ctest(runner, root, None if not opts.systems else
                       "^(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")$")
     pyt = run_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
     results = {**junit.results(ctest.files.get("ctest.xml"), "gtest"),
                **(junit.results(pyt.files.get("pytest.xml"), "pytest") if pyt else {})}
-    m = build_matrix(corpus, facts, results, _elsewhere(root, systems))
+    m = build_matrix(corpus, facts, results, elsewhere)
 
     extras: list[tuple[str, str]] = []
     _copy_junit(out, ctest, pyt, extras)
