@@ -30,7 +30,7 @@ from array import array
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from ..tla.errors import EvalError, TlaError
+from ..tla.errors import EvalError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
 from .model import Model
 from .deep_stack import call_with_deep_stack
@@ -368,6 +368,8 @@ class Explorer:
         try:
             m.run_next(cur, on_succ)
         except TlaError as e:
+            if isinstance(e, ModuleEvalError):
+                e.kind = "module eval"  # TLC: the module's own error code, exit 255
             if isinstance(e, EvalError) or e.kind == "eval":
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
                                            len(self.states) - self.head - 1, error=e, trace=self.trace(i))
