@@ -33,7 +33,7 @@ from typing import Any, Callable
 from ..tla.errors import EvalError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
 from .model import Model
-from .deep_stack import call_with_deep_stack
+from .deep_stack import call_with_deep_stack, stack_overflow_message
 
 PROGRESS_SECONDS = 5.0
 
@@ -230,8 +230,7 @@ class Explorer:
                                            len(self.states) - self.head, error=err)
         except RecursionError:
             # TLC: "This was a Java StackOverflowError" (a recursion that does not end).
-            msg = ("recursion too deep while computing states (TLC: StackOverflowError): a recursive "
-                   "operator or function probably does not terminate")
+            msg = stack_overflow_message("computing states")
             # TLC exits with 75 when this happens in Init, with 255 (a system error) after.
             e = EvalError(msg) if not self.states else TlaError("stack overflow", msg)
             self.outcome = CheckResult("error", len(self.states), self.generated,

@@ -33,6 +33,7 @@ from ..tla.resolve import check_modules
 from ..tla.tlcget import RUNTIME
 from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order, reset_token_order
 from .cfg import Config, ConfigEntry, parse_config
+from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
 from .symmetry import Perm, permutation_group, smallest_image
 from .temporal import Fairness, Obligation, TemporalCompiler
@@ -201,7 +202,15 @@ def default_config_path(tla_path: str) -> str:
 
 
 def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
-    """Parse, resolve and compile a model.  Raises `TlaError` on any problem."""
+    """Parse, resolve and compile a model.  Raises `TlaError` on any problem; a recursion
+    that does not end in an ASSUME or a constant is TLC's StackOverflowError (exit 255)."""
+    try:
+        return call_with_deep_stack(lambda: _load_model(tla_path, cfg_path))
+    except RecursionError:
+        raise TlaError("stack overflow", stack_overflow_message("loading the model")) from None
+
+
+def _load_model(tla_path: str, cfg_path: str | None) -> Model:
     RUNTIME.reset()
     RUNTIME.used = False
     module = load_module(tla_path)

@@ -459,6 +459,15 @@ class Compiler:
         # An action-level argument (Send(p, x, x')) is passed by name, as TLC expands
         # the operator: its body may assign the primed variable.
         action_arg = any(self.info(a, env).action for a in args if not isinstance(a, A.Lambda))
+        # A recursive operator cannot be expanded at its call site; a state-level one is
+        # called instead: on the next state under a prime or in Init, else on the current
+        # state with arguments such as Len(log') evaluated first (TLC reads the body's
+        # unprimed variables in the current state too).
+        by_call = sym.recursive and not (info.action or sym.scope.parameterised)
+        if by_call and info.vars and (init or env.primed):
+            return self._call_on_next_state(sym, args, env, loc)
+        if by_call and action_arg and not (init or env.primed):
+            action_arg = False
         if info.action or sym.scope.parameterised or init or action_arg or (env.primed and info.vars):
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
@@ -491,6 +500,25 @@ class Compiler:
             a0, a1 = arg_codes
             return lambda s, t, L: holder.body(s, t, [a0(s, t, L), a1(s, t, L)] + pad)
         return lambda s, t, L: holder.body(s, t, [a(s, t, L) for a in arg_codes] + pad)
+
+    def _call_on_next_state(self, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
+        """A recursive state-level operator under a prime (``Sum(n)'``) or in Init: it
+        cannot be expanded at its call site, so its compiled body is run with the state
+        being built (or the next state) in place of the current one; its arguments are
+        compiled in the caller's primed (or Init) environment."""
+        arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, sym.defn.params)]
+        holder = self._compiled_def(sym)
+        names = self.var_names
+        reads = sorted(i for i in self.def_info(sym).vars if i >= 0)
+        mark = "" if env.init_mode else "'"
+
+        def call(s: Any, t: Any, L: list) -> Value:
+            for i in reads:
+                if t[i] is UNSET:
+                    raise EvalError(f"The variable {names[i]}{mark} is used before it is assigned a value", loc)
+            frame = [a(s, t, L) for a in arg_codes]
+            return holder.body(t, None, frame + [None] * (holder.size - len(frame)))
+        return call
 
     def _compiled_def(self, sym: DefSym) -> "CompiledDef":
         if sym.compiled is None:
