@@ -24,7 +24,7 @@ from . import ast as A
 from .compiler import Compiler, _enum_checked, _prefix, all_names, check_bool
 from .compiler import _assign as assign_binder
 from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
-from .errors import EvalError, Loc, TlaError, UnsupportedError
+from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
 from .values import LazySet, member, values_equal
@@ -602,6 +602,11 @@ def compile_enabled(compiler: Compiler, arg: A.Expr, env: Env) -> Code:
             # it holds) onto the previous ones.
             _FOUND.__traceback__ = None
             return True
+        except UnassignedPrimeError as e:
+            # e.g. done' = TRUE where an INSTANCE substitutes an expression for done: TLC
+            # finds whether some next state satisfies it; we do not search for one.
+            raise UnsupportedError(f"ENABLED of an action that tests a primed expression before its "
+                                   f"variables are assigned is not supported ({e.loc}: {e.message})", arg.loc) from None
         return False
     return enabled
 

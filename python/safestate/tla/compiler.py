@@ -22,7 +22,7 @@ from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
-from .errors import EvalError, Loc, TlaError, UnsupportedError
+from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym, let_instance_scope
 from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
@@ -515,7 +515,8 @@ class Compiler:
         def call(s: Any, t: Any, L: list) -> Value:
             for i in reads:
                 if t[i] is UNSET:
-                    raise EvalError(f"The variable {names[i]}{mark} is used before it is assigned a value", loc)
+                    raise UnassignedPrimeError(f"The variable {names[i]}{mark} is used before it is assigned a "
+                                               f"value", loc)
             frame = [a(s, t, L) for a in arg_codes]
             return holder.body(t, None, frame + [None] * (holder.size - len(frame)))
         return call
@@ -1413,8 +1414,8 @@ class Compiler:
                 raise EvalError(f"{name}' evaluated outside an action", loc)
             v = t[i]
             if v is UNSET:
-                raise EvalError(f"The variable {name}{'' if init else chr(39)} is used before it is assigned "
-                                f"a value", loc)
+                raise UnassignedPrimeError(f"The variable {name}{'' if init else chr(39)} is used before it is "
+                                           f"assigned a value", loc)
             return v
         return next_var
 

@@ -58,6 +58,10 @@ class ModuleEvalError(EvalError):
     invariant, like any evaluation error)."""
 
 
+class UnassignedPrimeError(EvalError):
+    """x' read before the action has given it a value."""
+
+
 class UnsupportedError(TlaError):
     """A construct outside the supported subset (see docs/tla-subset.md)."""
 
