@@ -373,6 +373,9 @@ class Compiler:
         if isinstance(sym, BuiltinSym):
             return self._call_builtin(sym, args, env, loc)
         if isinstance(sym, SubstSym):
+            slot = self.scratch_slot(sym, env) if env.primed and not args else None
+            if slot is not None:
+                return self._next_var(slot, sym.name, loc)
             sub_env = Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
                                                   if p in env.locals}, env.init_mode, env.primed)
             if args:
@@ -381,6 +384,25 @@ class Compiler:
         if isinstance(sym, InstanceSym):
             raise TlaError("semantic", f"{name} is an instance; use {name}!Op", loc)
         raise self._unknown(name, loc)
+
+    # ENABLED computed as TLC does for an instanced module's variable that is
+    # substituted by an expression (done <- flag = 1 /\ tok = "w"): TLC's getPrimedVar
+    # stops at the substitution, so done' is a variable of its own in ENABLED's scratch
+    # state, assigned by done' = e and UNCHANGED done, read by done' elsewhere.
+    enabled_scratch: dict[str, int] | None = None
+
+    def scratch_slot(self, sym: SubstSym, env: Env) -> int | None:
+        """The scratch slot of `sym`'s primed value while compiling an ENABLED, if any."""
+        scratch = self.enabled_scratch
+        if scratch is None or not sym.variable:
+            return None
+        e = sym.expr
+        if isinstance(e, A.Name) and isinstance(sym.scope.lookup(e.name), (VarSym, SubstSym)):
+            return None  # a variable (or a further substitution): primed as usual
+        slot = scratch.get(sym.name)
+        if slot is None:
+            slot = scratch[sym.name] = len(self.var_names) + len(scratch)
+        return slot
 
     def _apply_operator_expr(self, op: A.Expr, args: list[A.Expr], op_env: Env, env: Env, loc: Loc) -> Code:
         """Apply an operator given as an expression (a substituted operator constant)."""

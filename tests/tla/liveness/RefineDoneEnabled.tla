@@ -1,10 +1,10 @@
 -------------------------- MODULE RefineDoneEnabled --------------------------
 (* The EWD840 / SyncTerminationDetection pattern: the refinement property   *)
 (* D!Spec has WF_vars(Detect) where Detect says done' = TRUE and done is    *)
-(* the expression flag = 1 /\ tok = "w".  ENABLED <<Detect>>_vars must find *)
-(* whether some next state makes that expression true: TLC does (success,   *)
-(* 8 states generated, 5 distinct, depth 3); safestate refuses it as        *)
-(* unsupported rather than evaluate flag' before it has a value.            *)
+(* the expression flag = 1 /\ tok = "w".  In ENABLED <<Detect>>_vars TLC   *)
+(* binds D's own variable done (getPrimedVar stops at the substitution)    *)
+(* instead of evaluating flag' before it has a value.  TLC: success, 8     *)
+(* states generated, 5 distinct, depth 3.                                  *)
 EXTENDS Naturals
 VARIABLES x, flag, tok
 vars == <<x, flag, tok>>
