@@ -18,7 +18,7 @@ from .errors import AssertFailure, EvalError, ModuleEvalError
 from .tlcget import tlc_get, tlc_set
 from .values import (
     BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
-    iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
+    is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
 )
 
 
@@ -199,6 +199,8 @@ def is_finite_set(s: Value) -> bool:
 def cardinality(s: Value) -> int:
     if not is_set(s):
         raise EvalError(f"Attempted to compute the cardinality of the non-set {fmt(s)}")
+    if not is_finite(s):  # TLC: FiniteSets' own error (exit 255 while computing successors)
+        raise ModuleEvalError(f"Attempted to compute cardinality of the value\n{s.describe()}")
     return set_size(s)
 
 
