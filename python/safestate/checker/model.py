@@ -35,7 +35,7 @@ from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token
 from .cfg import Config, ConfigEntry, parse_config
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
-from .symmetry import Perm, permutation_group, smallest_image
+from .symmetry import SymmetryReduction, permutation_group
 from .temporal import Fairness, Obligation, TemporalCompiler
 
 
@@ -76,7 +76,7 @@ class Model:
     alias: Named | None = None
     # POSTCONDITION: evaluated once after a search that found no error.
     postcondition: Named | None = None
-    symmetry: list[Perm] | None = None
+    symmetry: SymmetryReduction | None = None
     leaves: list[Leaf] = field(default_factory=list)
     _init: Any = None
     _init_size: int = 0
@@ -162,7 +162,7 @@ class Model:
         """The value TLC fingerprints: the state reduced by SYMMETRY (its smallest image),
         then the VIEW (if any) of that."""
         if self.symmetry:
-            state = smallest_image(state, self.symmetry)
+            state = self.symmetry.smallest_image(state)
         return state if self.view is None else self.view.fn(state, None)
 
     # ---------------------------------------------------------------- evaluation API
@@ -474,7 +474,7 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
     return init, nexts[0]
 
 
-def _symmetry(model: Model, entry: ConfigEntry) -> list[Perm]:
+def _symmetry(model: Model, entry: ConfigEntry) -> SymmetryReduction:
     sym = _lookup_def(model, entry, "symmetry")
     fn = model.compiler.evaluator(A.Name(sym.defn.loc, entry.name), model.scope)
     perms = []
@@ -486,7 +486,7 @@ def _symmetry(model: Model, entry: ConfigEntry) -> list[Perm]:
         else:
             raise TlaError("config", f"The symmetry set {entry.name} must contain permutations (functions "
                            f"between model values); found {fmt(p)}", entry.loc)
-    return permutation_group(perms)
+    return SymmetryReduction(permutation_group(perms))
 
 
 __all__ = ["Model", "Transition", "load_model", "BuiltinSym", "VarSym"]

@@ -70,34 +70,46 @@ def permute(v: Value, p: Perm) -> Value:
     return v
 
 
-def smallest_image(state: tuple, group: list[Perm]) -> tuple:
-    """The lexicographically smallest of `state` and its images under `group`.
+class SymmetryReduction:
+    """`smallest_image` over one group, remembering each variable value's images and
+    their sort keys: the same values recur in many states (most of a state does not
+    change in a step), and permuting and keying them is the whole cost."""
 
-    Variable by variable, as TLC compares: an image is dropped at the first variable
-    whose value is greater than the best image's, so most images are only partly built."""
-    n = len(state)
-    best = state
-    best_keys = [tlc_key(x) for x in state]
-    for p in group:
-        img = []
-        keys = []
-        smaller = False
-        for j in range(n):
-            x = permute(state[j], p)
-            img.append(x)
-            if smaller:
-                continue
-            k = tlc_key(x)
-            keys.append(k)
-            if k != best_keys[j]:
-                if k > best_keys[j]:
+    CACHE_LIMIT = 2_000_000  # entries; cleared when full (memory, not correctness)
+
+    def __init__(self, group: list[Perm]) -> None:
+        self.group = group
+        # Keyed by (type, value): TRUE == 1 in Python (see tla/values.py).
+        self._images: dict[tuple[type, Value], list[tuple[Value, tuple]]] = {}
+
+    def __bool__(self) -> bool:
+        return bool(self.group)
+
+    def images(self, v: Value) -> list[tuple[Value, tuple]]:
+        """(image, key) of `v` under the identity and then every permutation of the group."""
+        got = self._images.get((type(v), v))
+        if got is None:
+            if len(self._images) * (len(self.group) + 1) > self.CACHE_LIMIT:
+                self._images.clear()
+            got = [(v, tlc_key(v))]
+            for p in self.group:
+                img = permute(v, p)
+                got.append((img, tlc_key(img)))
+            self._images[(type(v), v)] = got
+        return got
+
+    def smallest_image(self, state: tuple) -> tuple:
+        """The lexicographically smallest of `state` and its images under the group."""
+        per_var = [self.images(x) for x in state]
+        best = 0
+        for i in range(1, len(self.group) + 1):
+            for imgs in per_var:
+                k, b = imgs[i][1], imgs[best][1]
+                if k != b:
+                    if k < b:
+                        best = i
                     break
-                smaller = True
-        else:
-            if smaller:
-                best = tuple(img)
-                best_keys = keys + [tlc_key(x) for x in img[len(keys):]]
-    return best
+        return state if best == 0 else tuple(imgs[best][0] for imgs in per_var)
 
 
-__all__ = ["Perm", "permutation_group", "permute", "smallest_image"]
+__all__ = ["Perm", "SymmetryReduction", "permutation_group", "permute"]
