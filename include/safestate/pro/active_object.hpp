@@ -48,6 +48,18 @@ class ActiveObject {
  protected:
   virtual void on_event(const AoEvent& e) noexcept = 0;
   void set_status(UnitStatus s) noexcept { status_ = s; }
+  // start (INIT -> READY) and stop (-> STOPPED), alike for every unit; true when `e` was one.
+  bool handle_start_stop(const AoEvent& e) noexcept {
+    if (e.signal == AoSignal::start) {
+      if (status_ == UnitStatus::init) status_ = UnitStatus::ready;
+      return true;
+    }
+    if (e.signal == AoSignal::stop) {
+      status_ = UnitStatus::stopped;
+      return true;
+    }
+    return false;
+  }
 
  private:
   AoId id_;
