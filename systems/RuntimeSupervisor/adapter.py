@@ -131,7 +131,8 @@ class RuntimeSupervisorAdapter(Adapter):
 
 def supervisor_rules() -> type:
     """Rules for the shapes a uniform random walk rarely reaches: every unit ready (RUN),
-    and a whole controlled shutdown (a shutdown request, then stop reports in a row)."""
+    every unit ready again after a fault (recovery), and a whole controlled shutdown (a
+    shutdown request, then stop reports in a row)."""
 
     def kind_is(*kinds: str) -> Any:
         return lambda e: e.record()["kind"] in kinds
@@ -139,6 +140,14 @@ def supervisor_rules() -> type:
     class SupervisorRules:
         @rule(i=st.integers(0, 6))
         def bring_up(self, i: int) -> None:
+            for _ in range(len(UNITS)):
+                self._pick(kind_is("READY"), i)  # type: ignore[attr-defined]
+
+        @rule(k=st.integers(0, 8), i=st.integers(0, 6))
+        def fault_then_bring_up(self, k: int, i: int) -> None:
+            # Degraded with every unit ready again: the shape of recovery (D01) and of a
+            # recovery that must not happen while a fault line stays set (D02).
+            self._pick(kind_is("FAIL", "FATAL_SET", "WD_BAD"), k)  # type: ignore[attr-defined]
             for _ in range(len(UNITS)):
                 self._pick(kind_is("READY"), i)  # type: ignore[attr-defined]
 
