@@ -20,6 +20,9 @@ build/cpp/safestate_demo
 echo "== demo scenario (C++ Safety service over UDP on the loopback, one line per change)"
 "$SAFESTATE" demo saf
 
+echo "== demo scenario (C++ fan controller closed around its thermal plant, one line per tick)"
+"$SAFESTATE" demo protection
+
 for m in "${MODELS[@]}"; do
   echo "== model check: system $m (its model with its CI cfg)"
   "$SAFESTATE" check "$m" --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
