@@ -21,6 +21,9 @@ build/cpp/safestate_demo
 echo "== demo scenario (C++ Safety service over UDP on the loopback, one line per change)"
 "$SAFESTATE" demo saf
 
+echo "== demo scenario (C++ fan controller closed around its thermal plant, one line per tick)"
+"$SAFESTATE" demo protection
+
 echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
 "$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 

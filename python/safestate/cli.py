@@ -13,6 +13,7 @@ import os
 import sys
 
 from . import __version__
+from .errors import closed_stdout_exit
 
 # name -> (module, one-line help).
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
@@ -83,7 +84,10 @@ def main(argv: list[str] | None = None) -> int:
         p.set_defaults(run=module.run)
     args = parser.parse_args(argv)
     _resolve_system_names(args)
-    return int(args.run(args))
+    try:
+        return int(args.run(args))
+    except BrokenPipeError:  # a subcommand without its own guard; `... | head` is not an error
+        return closed_stdout_exit()
 
 
 if __name__ == "__main__":
