@@ -25,9 +25,6 @@ MUTANTS_DIR = REPO / "conform" / "cpp_mutants"
 # open}, abstract speed classes), one per kind of gap.
 SUBSET = ("estop_1oo2_as_xor", "t1_limit_inclusive", "tcp_speed_in_m_per_s", "selector_several_contacts_first_wins")
 
-# pytest-xdist (scripts/test.sh, -n 2 --dist loadgroup): the module-scoped fixtures below are
-# costly, so every test of this file runs on one worker (docs/testing.md).
-pytestmark = pytest.mark.xdist_group("conform_input_complete")
 
 
 @pytest.fixture(scope="module")

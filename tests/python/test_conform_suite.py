@@ -29,9 +29,6 @@ REPO = Path(__file__).resolve().parents[2]
 STEPS = int(os.environ.get("SAFESTATE_CONFORM_STEPS", "10000"))
 SYSTEMS = [s.name for s in load_all(REPO / "systems") if s.conformance is not None]
 
-# pytest-xdist (scripts/test.sh, -n 2 --dist loadgroup): the module-scoped fixtures below are
-# costly, so every test of this file runs on one worker (docs/testing.md).
-pytestmark = pytest.mark.xdist_group("conform_suite")
 
 
 @pytest.fixture(scope="module", params=SYSTEMS)

@@ -56,7 +56,6 @@ def witnesses(tmp_path_factory: pytest.TempPathFactory) -> dict:
     return {inv.name: (model, inv) for inv in model.invariants}
 
 
-@pytest.mark.xdist_group("flagship_witnesses")  # one worker loads the graph and compiles the witnesses
 @pytest.mark.parametrize("prop", _flagship_properties())
 def test_property_is_not_vacuous_its_witness_is_reached(prop: str, witnesses: dict, state_graph) -> None:
     """Witness_<prop> is the negation of the property's antecedent: a reachable state of the

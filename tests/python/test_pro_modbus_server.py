@@ -16,9 +16,7 @@ import pytest
 from modbus_server_process import SERVE, ModbusServerProcess
 
 pymodbus_client = pytest.importorskip("pymodbus.client", reason="pymodbus not installed (pip install -e '.[test]')")
-# xdist_group: the tests share one server process (module fixture) and its state: one worker.
-pytestmark = [pytest.mark.skipif(not SERVE.is_file(), reason="C++ tree not built (bash scripts/setup.sh)"),
-              pytest.mark.xdist_group("pro_modbus_server")]
+pytestmark = pytest.mark.skipif(not SERVE.is_file(), reason="C++ tree not built (bash scripts/setup.sh)")
 
 # The process image pro_modbus_serve serves in these tests, in the controller's units.
 IMAGE = {"--temperature-c": -12, "--voltage-dv": 241, "--fan-percent": 100, "--protection-state": 1,
