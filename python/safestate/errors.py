@@ -20,6 +20,22 @@ class UsageError(SafestateError):
     """A bad argument or an unusable input file (exit code 2)."""
 
 
+def check_writable_file(path: str, option: str) -> None:
+    """Fail before any work when the output file `path` (of `option`) cannot be written:
+    opened for appending (and removed again if this created it), so the search that
+    would fill it is not run in vain."""
+    if os.path.isdir(path):
+        raise UsageError(f"{path}: {option} must be a file, this is a directory")
+    existed = os.path.exists(path)
+    try:
+        with open(path, "a", encoding="utf-8"):
+            pass
+    except OSError as e:
+        raise UsageError(f"{path}: {option} file is not writable ({e.strerror or e})") from None
+    if not existed:
+        os.remove(path)
+
+
 def one_line(e: BaseException) -> str:
     """The message of `e` on one line, located when it carries a location."""
     loc = getattr(e, "loc", None)

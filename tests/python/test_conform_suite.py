@@ -31,6 +31,7 @@ STEPS = int(os.environ.get("SAFESTATE_CONFORM_STEPS", "10000"))
 SYSTEMS = [s.name for s in load_all(REPO / "systems") if s.conformance is not None]
 
 
+
 @pytest.fixture(scope="module", params=SYSTEMS)
 def system(request):
     return find(request.param, REPO / "systems")
@@ -101,6 +102,8 @@ def test_hypothesis_lockstep_agrees_for_the_systems_test_steps(system, model):
 
 def test_input_complete_pass_agrees_on_every_64th_state(system, model, graph):
     """The full pass is `safestate conform <Name> --input-complete` (the main job)."""
+    if system.name == "SystemStateManager":
+        pytest.skip("the flagship's pass runs on every 16th state in test_conform_input_complete.py")
     h = make_harness(system, model)
     if type(h.adapter).input_alphabet is Adapter.input_alphabet:
         pytest.skip(f"{system.name} defines no input alphabet")
