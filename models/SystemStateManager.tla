@@ -161,7 +161,9 @@ VARIABLES inputs, event
 (*   obs_locked    -- RSM-04: a fault code was ever output.               *)
 (*   obs_ramp      -- RSM-11: the age of the stop episode: consecutive    *)
 (*                    cycles ending with the ramp-down request output on, *)
-(*                    whatever the speed read (capped at MaxStopCycles+2).*)
+(*                    whatever the speed read (capped at MaxStopCycles+2);*)
+(*                    1 again when a cycle reads standstill and accepts a *)
+(*                    command (a new trigger at standstill).              *)
 (*   last_accepted -- the kind of command the last cycle accepted, "NONE".*)
 (*   jog_in_auto   -- RSM-08: the last cycle popped JOG_START/JOG_STOP    *)
 (*                    with selector AUTO or session AUTO.                 *)
@@ -626,7 +628,11 @@ Cycle(in) ==
              enable   |-> n(obs_disagree.enable, in.enable_a # in.enable_b),
              selector |-> n(obs_disagree.selector, in.selector \notin Modes)]
        /\ obs_locked' = (obs_locked \/ m.fault_code # "NONE")
-       /\ obs_ramp' = IF RampDownOut(m) THEN Min(obs_ramp + 1, MaxStopCycles + 2) ELSE 0
+       \* a cycle that reads standstill and accepts a command starts a new episode
+       \* (a Servo-off after the Cat 2 stop reached HOLD in the same cycle)
+       /\ obs_ramp' = IF ~RampDownOut(m) THEN 0
+                      ELSE IF in.speed = "ZERO" /\ acc # "NONE" THEN 1
+                      ELSE Min(obs_ramp + 1, MaxStopCycles + 2)
        /\ last_accepted' = acc
        /\ jog_in_auto' = /\ Popped \in {"JOG_START", "JOG_STOP"}
                          /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
@@ -900,7 +906,9 @@ INV_ENABLE ==
 \* MaxStopCycles + 1 consecutive cycles (the trigger cycle, then
 \* MaxStopCycles full cycles), no cycle reads the arm moving.  The episode
 \* is the ramp-down output's, so a standstill reading in the cycle of an
-\* escalation from Cat 2 to Cat 1 does not restart it.
+\* escalation from Cat 2 to Cat 1 does not restart it; a command accepted in
+\* a cycle that reads standstill (a Servo-off when the Cat 2 stop has just
+\* reached HOLD) is a new trigger and starts a new episode.
 RSM11_STOP_BUDGET == obs_ramp > MaxStopCycles + 1 => inputs.speed = "ZERO"
 
 \* RSM-11: a Pause is a Cat 2 stop: power kept, ramp-down requested.

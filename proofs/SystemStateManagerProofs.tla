@@ -66,7 +66,8 @@ Strengthen_OBSERVERS ==
                        \/ /\ obs_ramp = MaxStopCycles + 2 /\ state_cycles = MaxStopCycles
                           /\ stop_category = "CAT1" /\ inputs.speed = "ZERO"
     /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
-    /\ obs_arming > 0 => state = "ARMING" /\ obs_arming = state_cycles + 1
+    /\ (obs_arming > 0) <=> (state = "ARMING")
+    /\ obs_arming > 0 => obs_arming = state_cycles + 1
     /\ t2_confirmed => obs_t2
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
