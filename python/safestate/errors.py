@@ -7,6 +7,7 @@ one line with the documented exit code (`safestate --help`), never a traceback.
 from __future__ import annotations
 
 import json
+import os
 import sys
 from collections.abc import Callable
 
@@ -27,6 +28,19 @@ def one_line(e: BaseException) -> str:
     return " ".join(text.split())
 
 
+SIGPIPE_EXIT = 128 + 13  # what a shell reports for a process ended by SIGPIPE
+
+
+def closed_stdout_exit() -> int:
+    """The reader of our output went away (``safestate check X | head -1``): stop quietly
+    like a Unix tool.  stdout is pointed at /dev/null so that the interpreter's final
+    flush of the buffered rest cannot raise again."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
+    os.close(devnull)
+    return SIGPIPE_EXIT
+
+
 def run_guarded(fn: Callable[[], int], what: str, usage_code: int) -> int:
     """Run a subcommand body; a user's error becomes one line on stderr and
     `usage_code`, an internal error one line naming it -- never a traceback."""
@@ -37,6 +51,8 @@ def run_guarded(fn: Callable[[], int], what: str, usage_code: int) -> int:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        return closed_stdout_exit()
     except (SafestateError, TlaError) as e:
         print(f"error: {one_line(e)}", file=sys.stderr)
         return usage_code

@@ -1,5 +1,6 @@
 """`safestate conform` on the CI configuration, for every system of the registry with
-a conformance adapter (the flagship and the Safety service): the C++ agrees with the model on every
+a conformance adapter (the flagship, the Safety service, the fan controller's
+Protection and RuntimeSupervisor): the C++ agrees with the model on every
 reachable transition and under Hypothesis lockstep testing, every table row is
 taken, and a deliberately wrong C++ build is caught by both methods.
 
@@ -68,7 +69,7 @@ def wrong_core(system, wrong_build):
 
 
 def test_registry_lists_every_system_with_a_conformance_adapter():
-    assert {"SystemStateManager", "SafetyService"} <= set(SYSTEMS)
+    assert {"SystemStateManager", "SafetyService", "Protection", "RuntimeSupervisor"} <= set(SYSTEMS)
 
 
 def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition(full_run, graph):
@@ -88,11 +89,14 @@ def test_table_audit_every_row_taken_except_the_declared_unreachable(full_run):
     assert len(a.rows_taken) == a.rows_total - len(h.adapter.unreachable_rows)
 
 
-def test_hypothesis_lockstep_agrees_for_at_least_10000_steps(system, model):
+def test_hypothesis_lockstep_agrees_for_the_systems_test_steps(system, model):
+    """10,000 steps, or the system's `test_hypothesis_steps` (seeded; the main job runs its
+    `hypothesis_steps`, at least 10,000)."""
+    want = system.conformance.test_hypothesis_steps or STEPS
     h = make_harness(system, model)
-    steps, failure = run_lockstep(h, model, STEPS, seed=0)
+    steps, failure = run_lockstep(h, model, want, seed=0)
     assert failure is None
-    assert steps >= STEPS
+    assert steps >= want
 
 
 def test_input_complete_pass_agrees_on_every_64th_state(system, model, graph):

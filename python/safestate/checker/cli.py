@@ -16,6 +16,7 @@ import sys
 import time
 from typing import Any
 
+from ..errors import closed_stdout_exit
 from ..tla.errors import TlaError
 from . import exit_codes
 from .explore import CheckResult, explore_states, print_progress
@@ -56,6 +57,8 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        return closed_stdout_exit()
     except Exception as e:  # noqa: BLE001 - the boundary: never show a traceback
         msg = f"internal error: {type(e).__name__}: {e}"
         if args.json:

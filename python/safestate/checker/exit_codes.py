@@ -21,6 +21,7 @@ BY_KIND = {
     "cfg syntax": ERROR,
     "unsupported": ERROR_CONFIG_PARSE,
     "eval": FAILURE_SPEC_EVAL,
+    "module eval": ERROR,        # a standard module's error while computing successors (Head(<<>>))
     "invariant eval": FAILURE_SAFETY_EVAL,
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,

@@ -30,10 +30,10 @@ from array import array
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from ..tla.errors import EvalError, TlaError
+from ..tla.errors import EvalError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
 from .model import Model
-from .deep_stack import call_with_deep_stack
+from .deep_stack import call_with_deep_stack, stack_overflow_message
 
 PROGRESS_SECONDS = 5.0
 
@@ -230,8 +230,7 @@ class Explorer:
                                            len(self.states) - self.head, error=err)
         except RecursionError:
             # TLC: "This was a Java StackOverflowError" (a recursion that does not end).
-            msg = ("recursion too deep while computing states (TLC: StackOverflowError): a recursive "
-                   "operator or function probably does not terminate")
+            msg = stack_overflow_message("computing states")
             # TLC exits with 75 when this happens in Init, with 255 (a system error) after.
             e = EvalError(msg) if not self.states else TlaError("stack overflow", msg)
             self.outcome = CheckResult("error", len(self.states), self.generated,
@@ -368,6 +367,8 @@ class Explorer:
         try:
             m.run_next(cur, on_succ)
         except TlaError as e:
+            if isinstance(e, ModuleEvalError):
+                e.kind = "module eval"  # TLC: the module's own error code, exit 255
             if isinstance(e, EvalError) or e.kind == "eval":
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
                                            len(self.states) - self.head - 1, error=e, trace=self.trace(i))
