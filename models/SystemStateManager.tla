@@ -1032,7 +1032,9 @@ Witness_RSM07_DRIVE_FAULT    == ~obs_drive_fault
 Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
 Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
-Witness_RSM14_QUEUE          == ~(event.kind = "submit" /\ last_reject_reason = "QUEUE_FULL")
+\* (a full queue: the next Submit takes RSM-14's QUEUE_FULL branch; that Submit
+\* itself changes only last_reject_reason, outside the View, so it adds no state)
+Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
 Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
 
