@@ -159,9 +159,11 @@ VARIABLES inputs, event
 (*   obs_disagree  -- RSM-04/02: consecutive cycles the inputs disagreed  *)
 (*                    (pairs) or read an invalid selector, capped at D+1.  *)
 (*   obs_locked    -- RSM-04: a fault code was ever output.               *)
-(*   obs_ramp      -- RSM-11: consecutive cycles ending with the          *)
-(*                    ramp-down request output on while the arm was       *)
-(*                    measured moving (not yet at standstill; capped).    *)
+(*   obs_ramp      -- RSM-11: the age of the stop episode: consecutive    *)
+(*                    cycles ending with the ramp-down request output on, *)
+(*                    whatever the speed read (capped at MaxStopCycles+2);*)
+(*                    1 again when a cycle reads standstill and accepts a *)
+(*                    command (a new trigger at standstill).              *)
 (*   last_accepted -- the kind of command the last cycle accepted, "NONE".*)
 (*   jog_in_auto   -- RSM-08: the last cycle popped JOG_START/JOG_STOP    *)
 (*                    with selector AUTO or session AUTO.                 *)
@@ -181,10 +183,18 @@ VARIABLES inputs, event
 (*                    session output (at its start) was T1.               *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
 (*                    self_test_ok = FALSE.                               *)
+(*   obs_arming    -- RSM-07/RSM-15: consecutive cycles ending with the   *)
+(*                    status state ARMING (capped at ArmingTimeout + 2).  *)
+(*   obs_popped    -- RSM-13: the last event was a cycle that began with  *)
+(*                    a command queued (queue_length > 0).                *)
+(*   obs_submit_lost -- RSM-14: the last event was a Submit that neither  *)
+(*                    grew queue_length by one (queue not full) nor was   *)
+(*                    rejected at once with QUEUE_FULL (queue full).      *)
 VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-          obs_booted, obs_self_test_failed
+          obs_booted, obs_self_test_failed,
+          obs_arming, obs_popped, obs_submit_lost
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
@@ -194,7 +204,8 @@ mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
 obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
               last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-              obs_booted, obs_self_test_failed>>
+              obs_booted, obs_self_test_failed,
+              obs_arming, obs_popped, obs_submit_lost>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -617,8 +628,11 @@ Cycle(in) ==
              enable   |-> n(obs_disagree.enable, in.enable_a # in.enable_b),
              selector |-> n(obs_disagree.selector, in.selector \notin Modes)]
        /\ obs_locked' = (obs_locked \/ m.fault_code # "NONE")
-       /\ obs_ramp' = IF RampDownOut(m) /\ in.speed # "ZERO"
-                      THEN Min(obs_ramp + 1, MaxStopCycles + 2) ELSE 0
+       \* a cycle that reads standstill and accepts a command starts a new episode
+       \* (a Servo-off after the Cat 2 stop reached HOLD in the same cycle)
+       /\ obs_ramp' = IF ~RampDownOut(m) THEN 0
+                      ELSE IF in.speed = "ZERO" /\ acc # "NONE" THEN 1
+                      ELSE Min(obs_ramp + 1, MaxStopCycles + 2)
        /\ last_accepted' = acc
        /\ jog_in_auto' = /\ Popped \in {"JOG_START", "JOG_STOP"}
                          /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
@@ -634,6 +648,9 @@ Cycle(in) ==
        /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
        /\ obs_booted' = TRUE
        /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
+       /\ obs_arming' = IF m.state = "ARMING" THEN Min(obs_arming + 1, ArmingTimeoutCycles + 2) ELSE 0
+       /\ obs_popped' = (queue # << >>)
+       /\ obs_submit_lost' = FALSE
 
 \* A RESET queued after the E-stop release is "issued after the release"
 \* (RSM-05); the Submit's result (queued / queue_full) is its output.
@@ -642,10 +659,15 @@ Submit(c) ==
     /\ event' = [kind |-> "submit", command |-> c]
     /\ obs_estop' = IF obs_estop = "RELEASED" /\ c.kind = "RESET" /\ Len(queue) < QueueCapacity
                     THEN "RESET_ISSUED" ELSE obs_estop
+    /\ obs_popped' = FALSE
+    \* RSM-14 over the outputs queue_length and last_reject_reason
+    /\ obs_submit_lost' =
+           ~IF Len(queue) < QueueCapacity THEN Len(queue') = Len(queue) + 1
+            ELSE Len(queue') = Len(queue) /\ last_reject_reason' = "QUEUE_FULL"
     /\ UNCHANGED <<inputs, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-                   obs_booted, obs_self_test_failed>>
+                   obs_booted, obs_self_test_failed, obs_arming>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -740,6 +762,7 @@ Init ==
     /\ obs_fieldbus_lost = FALSE  /\ obs_unexpected_motion = FALSE
     /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
     /\ obs_self_test_failed = FALSE
+    /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
 \* last_reject_reason changes), so when it is full one representative
@@ -796,11 +819,16 @@ TypeOK ==
     /\ obs_drive_fault \in BOOLEAN /\ obs_fieldbus_lost \in BOOLEAN
     /\ obs_unexpected_motion \in BOOLEAN /\ t1_overspeed \in BOOLEAN
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
+    /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
+    /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     \* per-state data is meaningful only where §4 says so
     /\ (session_mode # "NONE") <=> (state \in Powered)
     /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
     /\ t2_confirmed => state = "IDLE"
     /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"}
+    \* RSM-01: STOPPING is of category 1 or 2; HOLD is a category 2 pause
+    /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
+    /\ state = "HOLD" => stop_category = "CAT2"
     /\ (resume_to # "NONE") <=> (state = "HOLD" \/ (state = "STOPPING" /\ stop_category = "CAT2"))
     /\ (jog # NoJog) <=> (state = "MANUAL_JOGGING" \/ resume_to = "MANUAL_JOGGING")
 
@@ -874,10 +902,14 @@ INV_ENABLE ==
         /\ (inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE") \/ Cat1Ramp
 
 \* RSM-11: every stop reaches standstill within MaxStopCycles of its FIRST
-\* trigger: the ramp-down output is on with the arm moving for at most
+\* trigger: once the ramp-down output has been on for more than
 \* MaxStopCycles + 1 consecutive cycles (the trigger cycle, then
-\* MaxStopCycles full cycles), escalation from Cat 2 to Cat 1 included.
-RSM11_STOP_BUDGET == obs_ramp <= MaxStopCycles + 1
+\* MaxStopCycles full cycles), no cycle reads the arm moving.  The episode
+\* is the ramp-down output's, so a standstill reading in the cycle of an
+\* escalation from Cat 2 to Cat 1 does not restart it; a command accepted in
+\* a cycle that reads standstill (a Servo-off when the Cat 2 stop has just
+\* reached HOLD) is a new trigger and starts a new episode.
+RSM11_STOP_BUDGET == obs_ramp > MaxStopCycles + 1 => inputs.speed = "ZERO"
 
 \* RSM-11: a Pause is a Cat 2 stop: power kept, ramp-down requested.
 RSM11_PAUSE_CAT2 ==
@@ -936,6 +968,22 @@ RSM06_SERVO_ON ==
 RSM07_DRIVE_FAULT ==
     obs_drive_fault => Unpowered /\ (Locked \/ ~inputs.estop_a \/ ~inputs.estop_b)
 
+\* RSM-07 (arming timeout) and RSM-15 (timing in cycles, whatever the
+\* commands processed): the ARMING status is shown for at most
+\* ArmingTimeoutCycles + 1 consecutive cycles.
+RSM07_ARMING_TIMEOUT == obs_arming <= ArmingTimeoutCycles + 1
+
+\* RSM-13: a cycle that began with a command queued answers it: ACCEPTED, or
+\* its reason code, also shown as the last reject reason.
+RSM13_RESULT ==
+    obs_popped => \/ command_result = "ACCEPTED"
+                  \/ command_result \in Reasons /\ last_reject_reason = command_result
+
+\* RSM-14: a Submit is queued (queue_length + 1) when the queue is not full,
+\* else rejected at once with QUEUE_FULL and nothing else queued: nothing is
+\* dropped silently.
+RSM14_QUEUE == ~obs_submit_lost
+
 \* RSM-12: a failed self-test in the first cycle locks out for good.
 RSM12_SELF_TEST == obs_self_test_failed => fault_code = "SELF_TEST_FAILED" /\ Unpowered
 
@@ -972,7 +1020,7 @@ Witness_INV_GATE             == ~((inputs.selector = "AUTO" \/ session_mode = "A
                                   /\ (~inputs.gate_a \/ ~inputs.gate_b) /\ drive_enable)
 Witness_INV_ENABLE           == ~(session_mode \in {"T1", "T2"} /\ drive_enable
                                   /\ (inputs.enable_a # "MIDDLE" \/ inputs.enable_b # "MIDDLE"))
-Witness_RSM11_STOP_BUDGET    == ~(obs_ramp = MaxStopCycles + 1)
+Witness_RSM11_STOP_BUDGET    == ~(obs_ramp > MaxStopCycles + 1)
 Witness_RSM11_PAUSE_CAT2     == ~(last_accepted = "PAUSE")
 Witness_RSM11_STANDSTILL     == ~obs_unexpected_motion
 Witness_INV_NOJOG_AUTO       == ~(jog_in_auto /\ command_result = "JOG_IN_AUTO")
@@ -982,6 +1030,11 @@ Witness_INV_T1SPEED          == ~t1_overspeed
 Witness_RSM06_SERVO_ON       == ~(last_accepted = "SERVO_ON" /\ inputs.selector = "T2")
 Witness_RSM07_DRIVE_FAULT    == ~obs_drive_fault
 Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
+Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
+Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
+\* (a full queue: the next Submit takes RSM-14's QUEUE_FULL branch; that Submit
+\* itself changes only last_reject_reason, outside the View, so it adds no state)
+Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
 Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
 
