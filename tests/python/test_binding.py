@@ -34,7 +34,7 @@ def healthy(mode="AUTO", **overrides):
         "enabling_a": "MIDDLE" if manual else "RELEASED",
         "enabling_b": "MIDDLE" if manual else "RELEASED",
         "selector_auto": mode == "AUTO", "selector_t1": mode == "T1", "selector_t2": mode == "T2",
-        "self_test_ok": True, "servo_ready": True, "drive_fault": False, "fieldbus_ok": True,
+        "self_test_ok": True, "servo_ready": True, "drive_fault": False, "fieldbus_ok": True, "operator_link_ok": True,
         "q": POSE, "qd": REST,
     }
     inputs.update(overrides)
