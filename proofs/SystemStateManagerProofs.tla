@@ -78,4 +78,5 @@ Strengthen_ALL ==
     /\ RSM11_STOP_BUDGET /\ RSM11_PAUSE_CAT2 /\ RSM11_STANDSTILL /\ INV_NOJOG_AUTO
     /\ RSM09_JOG_START /\ RSM08_START /\ INV_T1SPEED /\ RSM06_SERVO_ON
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
+    /\ RSM13_LINK_LOSS
 =============================================================================
