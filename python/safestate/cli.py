@@ -21,6 +21,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "prove": ("safestate.prove.cli", "prove invariants with z3 (BMC, k-induction, PDR)"),
     "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
+    "panel": ("safestate.panel.cli", "the operator panel: cell simulator + C++ core + web bridge, prints the URL"),
 }
 
 DESCRIPTION = """\
