@@ -98,6 +98,12 @@ json status_json(const CellStatus& c) {
   const std::string_view cycle_row = row_id(c.cycle_row);
   const std::string_view command_row = row_id(c.command_row);
   const std::string_view transition_row = row_id(c.last_transition_row);
+  json recent = json::array();
+  for (std::size_t i = 0; i < c.recent.size(); ++i) {
+    const CellStatus::Transition& t = c.recent[(c.recent_next + i) % c.recent.size()];
+    if (t.row < 0) continue;
+    recent.push_back({{"cycle", t.cycle}, {"row", row_id(t.row)}, {"from", to_string(t.from)}, {"to", to_string(t.to)}});
+  }
   return json{
       {"cycle", c.cycle},
       {"state", to_string(s.state)},
@@ -132,6 +138,7 @@ json status_json(const CellStatus& c) {
         {"drive_fault", p.drive_fault}}},
       {"operator_link_ok", c.operator_link_ok},
       {"heartbeat_age_cycles", c.heartbeat_age_cycles},
+      {"recent_transitions", recent},
   };
 }
 
@@ -205,6 +212,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return self->closed();
+      self->open_ = true;
       self->send(frame([&] {
         json j = message("hello", nullptr);
         j["client_id"] = self->id_;
@@ -218,14 +226,16 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     });
   }
 
-  /// Queues a frame; a full queue drops a status frame (`droppable`) or closes the client.
+  /// Queues a frame. A status frame (`droppable`) is dropped when max_queued_frames are
+  /// waiting; replies are kept (reading from the client pauses at kPauseReadingAt queued
+  /// frames, so its requests wait in TCP), and beyond kMaxQueuedReplies the client is closed.
   void send(Frame f, bool droppable) {
-    if (closed_) return;
-    if (out_.size() >= bridge_.opts.max_queued_frames) {
-      if (droppable) {
-        bridge_.counters.status_frames_dropped.fetch_add(1);
-        return;
-      }
+    if (closed_ || !open_) return;
+    if (droppable && out_.size() >= bridge_.opts.max_queued_frames) {
+      bridge_.counters.status_frames_dropped.fetch_add(1);
+      return;
+    }
+    if (out_.size() >= kMaxQueuedReplies) {
       bridge_.counters.slow_consumers_closed.fetch_add(1);
       return abort();
     }
@@ -245,6 +255,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
 
  private:
   void read() {
+    reading_ = true;
     ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) {
         if (ec == websocket::error::message_too_big) self->bridge_.counters.frame_too_large.fetch_add(1);
@@ -253,7 +264,13 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       const std::string text = beast::buffers_to_string(self->buffer_.data());
       self->buffer_.consume(self->buffer_.size());
       self->bridge_.handle(self, text);
-      if (!self->closed_) self->read();
+      if (self->closed_) return;
+      if (self->out_.size() >= kPauseReadingAt) {  // backpressure: the client's requests wait in TCP
+        self->reading_ = false;
+        self->bridge_.counters.reads_paused.fetch_add(1);
+        return;
+      }
+      self->read();
     });
   }
 
@@ -263,6 +280,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     ws_.async_write(net::buffer(*out_.front()), [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) return self->closed();
       self->out_.pop_front();
+      if (!self->reading_ && !self->closed_ && self->out_.size() < kPauseReadingAt / 4) self->read();
       if (self->out_.empty() || self->closed_) {
         self->writing_ = false;
       } else {
@@ -283,8 +301,12 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   std::uint64_t id_;
   beast::flat_buffer buffer_;
   std::deque<Frame> out_;
+  bool open_{false};     // handshake done: frames may be written
+  bool reading_{false};  // a read is pending (FALSE while paused by backpressure)
   bool writing_{false};
   bool closed_{false};
+  static constexpr std::size_t kPauseReadingAt = 64;
+  static constexpr std::size_t kMaxQueuedReplies = 1024;
 };
 
 namespace {
@@ -396,6 +418,7 @@ json Bridge::Impl::link_json() const {
       {"results_lost", c.results_lost.load()},
       {"heartbeats", c.heartbeats.load()},
       {"control_lease_expired", c.control_lease_expired.load()},
+      {"reads_paused", c.reads_paused.load()},
   };
 }
 
@@ -511,10 +534,10 @@ void Bridge::Impl::handle(const std::shared_ptr<WsSession>& s, const std::string
       s->send(frame(message("confirm_control", id)), false);
       return;
     }
-    if (controller != nullptr) return refuse(counters.control_refused, "CONTROL_HELD_BY_OTHER");
     if (!req.contains("token") || !req["token"].is_string() || req["token"].get<std::string>() != opts.token) {
       return refuse(counters.control_refused, "BAD_TOKEN");
     }
+    if (controller != nullptr) return refuse(counters.control_refused, "CONTROL_HELD_BY_OTHER");
     controller = s.get();
     last_heartbeat = Clock::now();
     loop.heartbeat().beat();

@@ -64,6 +64,9 @@ void ControlLoop::run_one_cycle() noexcept {
     const bool by_command = snapshot_.command_row >= 0 && snapshot_.status.command_result == CommandResult::accepted();
     snapshot_.last_transition_row = by_command ? snapshot_.command_row : snapshot_.cycle_row;
     snapshot_.last_transition_from = before;
+    snapshot_.recent[snapshot_.recent_next] =
+        CellStatus::Transition{snapshot_.cycle + 1, snapshot_.last_transition_row, before, manager_.state()};
+    snapshot_.recent_next = static_cast<std::uint8_t>((snapshot_.recent_next + 1U) % snapshot_.recent.size());
   }
   snapshot_.plant_switches = word;
   snapshot_.operator_link_ok = link_ok;

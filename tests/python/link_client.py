@@ -21,6 +21,7 @@ Message = dict[str, Any]
 
 class LinkClient:
     def __init__(self, ws_url: str, timeout: float = 10.0) -> None:
+        self.timeout = timeout
         self.ws = websocket.create_connection(ws_url, timeout=timeout)
         self.hello = self.next()
         assert self.hello["type"] == "hello"
@@ -67,6 +68,21 @@ class LinkClient:
         """The next status frame whose status satisfies `pred` (its 'status' and 'link' parts merged)."""
         m = self.until(lambda m: m["type"] == "status" and pred(dict(m["status"], link=m["link"])), timeout)
         return dict(m["status"], link=m["link"])
+
+    def latest_status(self) -> Message:
+        """The newest status frame: every frame already received is read, the last status kept."""
+        latest = self.status()
+        self.ws.settimeout(0.005)
+        try:
+            while True:
+                m = json.loads(self.ws.recv())
+                if m["type"] == "status":
+                    latest = dict(m["status"], link=m["link"])
+        except websocket.WebSocketTimeoutException:
+            pass
+        finally:
+            self.ws.settimeout(self.timeout)
+        return latest
 
     def close(self) -> None:
         self.ws.close()

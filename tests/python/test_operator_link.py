@@ -81,7 +81,8 @@ def test_the_bridge_listens_on_the_loopback_interface_only(link: RunningLink) ->
     port = urlparse(link.url).port
     out = subprocess.run(["ss", "-ltnH", f"sport = :{port}"], capture_output=True, text=True, check=False).stdout
     if out.strip():  # ss is in iproute2; without it the URL check above stands alone
-        assert "127.0.0.1:" in out and "0.0.0.0:" not in out and "*:" not in out, out
+        local_addresses = {line.split()[3] for line in out.splitlines()}  # State Recv-Q Send-Q Local Peer
+        assert local_addresses == {f"127.0.0.1:{port}"}, out
 
 
 def test_one_controlling_client_observers_refused_and_counted(link: RunningLink, operator: LinkClient) -> None:
@@ -94,8 +95,8 @@ def test_one_controlling_client_observers_refused_and_counted(link: RunningLink,
     assert (answer["type"], answer["reason"]) == ("refused", "NO_CONTROL")
     third = LinkClient(link.ws_url)
     assert third.claim("not-the-token")["reason"] == "BAD_TOKEN"
-    counters = second.status(lambda s: s["link"]["observer_commands_refused"] >= 2)["link"]
-    assert counters["control_refused"] == 2
+    counters = second.status(lambda s: s["link"]["control_refused"] == 2)["link"]
+    assert counters["observer_commands_refused"] == 2
     assert counters["controller_id"] == operator.hello["client_id"]
     # The controller's commands reach the cycle and are answered after it popped them.
     assert operator.command("RESET")["result"] == "WRONG_STATE"  # IDLE: nothing to reset
@@ -159,7 +160,8 @@ def test_losing_the_controlling_client_stops_a_jog_cat2_and_nothing_else(link: R
     if how == "closed":
         operator.close()
     st = watcher.status(lambda s: s["state"] in ("STOPPING", "HOLD"))
-    assert st["rows"]["last_transition"] == "C26"
+    stops = [t for t in st["recent_transitions"] if t["cycle"] > before["cycle"]]
+    assert stops[0] == dict(stops[0], row="C26", **{"from": "MANUAL_JOGGING", "to": "STOPPING"}), stops
     assert st["stop_category"] == "CAT2"
     assert st["outputs"]["commanded_speed_mm_s"] == 0
     assert st["outputs"]["contactor_closed"] and st["outputs"]["drive_enable"]  # Cat 2: power kept
@@ -172,20 +174,22 @@ def test_ten_thousand_requests_from_one_client_are_each_answered(link: RunningLi
     n = 10_000
     answers: list[str] = []
 
-    def read() -> None:
+    def read() -> None:  # not validated frame by frame: the schema check would be the bottleneck
         while len(answers) < n:
-            m = operator.next()
-            if m["type"] == "result":
-                answers.append(m["result"])
+            m = json.loads(operator.ws.recv())
+            if m["type"] in ("result", "refused"):
+                answers.append(m.get("result") or m["reason"])
 
     reader = threading.Thread(target=read, daemon=True)
     reader.start()
+    beats = Heartbeats(operator)  # queued behind the burst: control may lapse (then NO_CONTROL)
     frame = json.dumps({"v": 1, "type": "command", "command": "PAUSE"})
     for _ in range(n):
         operator.ws.send(frame)
     reader.join(timeout=120)
+    beats.halt()
     assert len(answers) == n
-    assert set(answers) <= {"WRONG_STATE", "QUEUE_FULL"}  # PAUSE in IDLE; the queue holds 8
+    assert set(answers) <= {"WRONG_STATE", "QUEUE_FULL", "NO_CONTROL"}  # PAUSE in IDLE; the queue holds 8
     counters = operator.status(lambda s: s["link"]["queue_full"] > 0)
     assert counters["link"]["queue_full"] == answers.count("QUEUE_FULL")
     assert counters["link"]["slow_consumers_closed"] == 0
@@ -196,7 +200,7 @@ def test_a_hundred_observers_receive_the_status_broadcast(link: RunningLink) -> 
     cycles = [o.status()["cycle"] for o in observers]
     later = [o.status(lambda s, c=c: s["cycle"] > c)["cycle"] for o, c in zip(observers, cycles)]
     assert all(b > a for a, b in zip(cycles, later))
-    assert observers[0].status()["link"]["clients"] == 100
+    assert observers[0].status(lambda s: s["link"]["clients"] == 100)["link"]["status_frames_dropped"] == 0
     for o in observers:
         o.close()
 
@@ -206,15 +210,17 @@ def test_a_client_that_never_reads_is_bounded_and_others_are_served(link: Runnin
     watcher = LinkClient(link.ws_url)
     st = watcher.status(lambda s: s["link"]["status_frames_dropped"] > 0, timeout=60)
     assert st["link"]["clients"] == 2
-    # A client that floods requests without reading is disconnected once its replies pile up.
+    # A client that floods requests without reading: once its replies pile up the bridge
+    # stops reading from it (its requests wait in TCP), so its memory stays bounded.
     flood = websocket.create_connection(link.ws_url, sockopt=((socket.SOL_SOCKET, socket.SO_RCVBUF, 4096),))
+    flood.sock.settimeout(2)
     try:
         for _ in range(20_000):
             flood.send("{bad")
     except (OSError, websocket.WebSocketException):
-        pass
-    st = watcher.status(lambda s: s["link"]["slow_consumers_closed"] >= 1, timeout=60)
-    assert st["link"]["malformed_json"] > 0
+        pass  # the send blocked: the bridge no longer reads this client
+    st = watcher.status(lambda s: s["link"]["reads_paused"] >= 1, timeout=60)
+    assert 0 < st["link"]["malformed_json"] < 20_000
     later = watcher.status(lambda s, c=st["cycle"]: s["cycle"] > c)
     assert later["cycle"] > st["cycle"]
     silent.close()

@@ -18,7 +18,7 @@ from typing import Any
 
 import pytest
 
-from safestate.panel.server import DEFAULT_BUILD, PanelServer, RunningLink
+from safestate.panel.server import DEFAULT_BUILD, PanelServer
 
 from link_client import LinkClient
 
@@ -85,7 +85,7 @@ class Panel:
         page: dict[str, str] = {}
         cpp: dict[str, str] = {}
         while time.monotonic() < end:
-            status = self.observer.status()
+            status = self.observer.latest_status()
             cpp = {k: f(status) for k, f in FIELDS.items()}
             page = {k: self.text(k) for k in FIELDS}
             if page == cpp and all(cpp[k] == v for k, v in expected.items()):

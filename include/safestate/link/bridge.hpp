@@ -29,7 +29,7 @@ struct BridgeOptions {
   unsigned short port{0};                     ///< 0: an ephemeral port (see Bridge::port)
   std::size_t max_frame_bytes{4096};          ///< larger frames close the socket (1009)
   std::size_t max_clients{256};
-  std::size_t max_queued_frames{32};          ///< per client: status frames beyond are dropped, a reply beyond closes it
+  std::size_t max_queued_frames{32};          ///< per client: status frames beyond are dropped
   std::chrono::milliseconds status_period{50};
   std::chrono::milliseconds control_lease{1000};  ///< control released without heartbeat
 };
@@ -50,6 +50,7 @@ struct BridgeCounters {
   std::atomic<std::uint64_t> results_lost{0};
   std::atomic<std::uint64_t> heartbeats{0};
   std::atomic<std::uint64_t> control_lease_expired{0};
+  std::atomic<std::uint64_t> reads_paused{0};  ///< backpressure: a client's replies piled up
   std::atomic<std::uint64_t> clients{0};  ///< connected WebSocket clients now
 };
 

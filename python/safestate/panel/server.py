@@ -33,12 +33,17 @@ def link_binary(build_dir: Path = DEFAULT_BUILD) -> Path:
 
 def render_diagram(dest: Path) -> None:
     """The C++ table's DOT export rendered by Graphviz `dot` into dest/diagram.svg."""
-    from safestate import _core  # the binding: the same table the control cycle runs
+    from safestate.conform.binding import load_core
+    from safestate.errors import UsageError
 
+    try:
+        core = load_core("safestate._core")  # the binding: the same table the control cycle runs
+    except UsageError as e:
+        raise PanelError(str(e)) from None
     dot = shutil.which("dot")
     if dot is None:
         raise PanelError("Graphviz 'dot' not found on PATH (apt-get install graphviz)")
-    done = subprocess.run([dot, "-Tsvg"], input=_core.transition_table_dot(), capture_output=True,
+    done = subprocess.run([dot, "-Tsvg"], input=core.transition_table_dot(), capture_output=True,
                           text=True, check=False)
     if done.returncode != 0:
         raise PanelError(f"dot -Tsvg failed: {done.stderr.strip()}")
