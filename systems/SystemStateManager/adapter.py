@@ -74,7 +74,7 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_estop", "obs_open_a", "obs_open_b", "obs_disagree", "obs_locked", "obs_ramp",
                         "last_accepted", "jog_in_auto", "obs_guard_fault", "obs_servo_on_powered", "obs_t2",
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
-                        "obs_booted", "obs_self_test_failed")
+                        "obs_booted", "obs_self_test_failed", "obs_link_lost")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
