@@ -2,49 +2,22 @@
 // Issue 16 / RSM-15 with the operator link attached: while 50 WebSocket clients are
 // connected (one controlling client jogging with heartbeats, observers reading, one sending
 // malformed frames, one never reading), the control thread runs its cycles and makes no
-// heap allocation. Global operator new is replaced by a counting version that counts only
-// on the control thread.
+// heap allocation. Global operator new is replaced by the counting allocator of the no-heap
+// tests (counting_allocator.hpp), restricted to the control thread.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "counting_allocator.hpp"
 #include "link_ws_client.hpp"
 #include "safestate/link/bridge.hpp"
 #include "safestate/link/control_loop.hpp"
 
-namespace {
-thread_local bool t_control_thread = false;
-std::atomic<std::uint64_t> g_control_allocations{0};
-
-void* counted(std::size_t n) {
-  if (t_control_thread) g_control_allocations.fetch_add(1);
-  void* p = std::malloc(n == 0 ? 1 : n);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return counted(n); }
-void* operator new[](std::size_t n) { return counted(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  if (t_control_thread) g_control_allocations.fetch_add(1);
-  return std::malloc(n == 0 ? 1 : n);
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  if (t_control_thread) g_control_allocations.fetch_add(1);
-  return std::malloc(n == 0 ? 1 : n);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -60,13 +33,13 @@ TEST(RSM15_OperatorLinkNoHeap, TheControlCycleAllocatesNothingWith50ClientsConne
   std::thread bridge_thread([&] { bridge.run(); });
 
   std::atomic<bool> stop{false};
+  g_count_marked_threads_only.store(true);
   std::thread control([&] {
-    t_control_thread = true;
+    t_marked_thread = true;
     while (!stop.load()) {
       loop.run_one_cycle();
       std::this_thread::sleep_for(std::chrono::microseconds(500));
     }
-    t_control_thread = false;
   });
 
   std::vector<std::unique_ptr<WsClient>> clients;
@@ -80,7 +53,7 @@ TEST(RSM15_OperatorLinkNoHeap, TheControlCycleAllocatesNothingWith50ClientsConne
   ASSERT_TRUE(op.send_text(R"({"v":1,"type":"plant","id":2,"set":{"selector":"T1","enabling":"MIDDLE"}})"));
   ASSERT_TRUE(op.wait_for("plant_set", 5000));
   const std::uint64_t cycles_before = loop.cycles();
-  const std::uint64_t allocations_before = g_control_allocations.load();
+  g_counting.store(true);
 
   ASSERT_TRUE(op.send_text(R"({"v":1,"type":"command","id":3,"command":"SERVO_ON"})"));
   std::string result;
@@ -97,7 +70,8 @@ TEST(RSM15_OperatorLinkNoHeap, TheControlCycleAllocatesNothingWith50ClientsConne
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   const std::uint64_t cycles_after = loop.cycles();
-  const std::uint64_t allocations = g_control_allocations.load() - allocations_before;
+  g_counting.store(false);
+  const std::uint64_t allocations = g_allocations.load();
   stop.store(true);
   control.join();
   bridge.stop();
