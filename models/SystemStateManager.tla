@@ -67,7 +67,7 @@ InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
                   enable_a |-> "RELEASED", enable_b |-> "RELEASED",
                   selector |-> "AUTO", self_test_ok |-> TRUE,
                   servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO",
-                  fieldbus_ok |-> TRUE]
+                  fieldbus_ok |-> TRUE, operator_link_ok |-> TRUE]
 
 ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
@@ -122,7 +122,8 @@ NoJog == [axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
 Inputs == [estop_a: BOOLEAN, estop_b: BOOLEAN, gate_a: BOOLEAN, gate_b: BOOLEAN,
            enable_a: EnablePositions, enable_b: EnablePositions,
            selector: Selectors, self_test_ok: BOOLEAN, servo_ready: BOOLEAN,
-           drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN]
+           drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN,
+           operator_link_ok: BOOLEAN]
 
 Min(a, b) == IF a <= b THEN a ELSE b
 Max2(a, b) == IF a >= b THEN a ELSE b
@@ -176,6 +177,9 @@ VARIABLES inputs, event
 (*   obs_drive_fault -- RSM-07: the last cycle read drive_fault with the  *)
 (*                    outputs powered at its start.                      *)
 (*   obs_fieldbus_lost -- seed/RSM-03: a cycle read fieldbus_ok = FALSE.  *)
+(*   obs_link_lost -- RSM-13/seed (issue 16): the last cycle read the     *)
+(*                    operator link lost with a jog speed commanded at    *)
+(*                    its start.                                          *)
 (*   obs_unexpected_motion -- RSM-11 (standstill monitoring): the last    *)
 (*                    cycle read speed # ZERO with power on and no motion  *)
 (*                    commanded at its start.                              *)
@@ -194,7 +198,7 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
           obs_booted, obs_self_test_failed,
-          obs_arming, obs_popped, obs_submit_lost
+          obs_arming, obs_popped, obs_submit_lost, obs_link_lost
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
@@ -205,7 +209,7 @@ obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_r
               last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
               obs_booted, obs_self_test_failed,
-              obs_arming, obs_popped, obs_submit_lost>>
+              obs_arming, obs_popped, obs_submit_lost, obs_link_lost>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -338,6 +342,9 @@ C11_Guard(m, in) == m.state \in Powered /\ Manual(m) /\ EnablePanic(in)  \* RSM-
 C12_Guard(m, in) == StopCat1Free(m, in) /\ in.selector # m.session_mode      \* RSM-02
 C13_Guard(m, in) == StopCat1Free(m, in) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
 C14_Guard(m, in) == StopCat1Free(m, in) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
+\* issue 16: the controlling operator client's heartbeat expired (link lost,
+\* client hung or socket closed) while jogging: a Cat 2 stop, as a Pause.
+C26_Guard(m, in) == m.state = "MANUAL_JOGGING" /\ ~in.operator_link_ok     \* RSM-13, seed
 C15_Guard(m, in) == m.state = "ARMING" /\ in.servo_ready                 \* RSM-07
 C16_Guard(m, in) == m.state = "ARMING" /\ m.state_cycles = ArmingTimeoutCycles
 C17_Guard(m, in) == m.state = "ARMING"                                   \* RSM-07
@@ -374,6 +381,8 @@ StopCat1(m) == [WithCat(Enter(m, "STOPPING"), "CAT1")
 C12(m, in) == StopCat1(m)
 C13(m, in) == StopCat1(m)
 C14(m, in) == StopCat1(m)
+C26(m, in) == [WithCat(Enter(m, "STOPPING"), "CAT2")
+                 EXCEPT !.resume_to = "MANUAL_JOGGING", !.jog = m.jog]
 C15(m, in) == Enter(m, IF m.session_mode = "AUTO" THEN "AUTO_IDLE" ELSE "MANUAL_IDLE")
 C16(m, in) == Lockout(m, "ARMING_TIMEOUT")
 C17(m, in) == [m EXCEPT !.state_cycles = @ + 1]
@@ -402,6 +411,7 @@ SafetyRow(m, in) ==
     ELSE IF C12_Guard(m, in) THEN "C12"
     ELSE IF C13_Guard(m, in) THEN "C13"
     ELSE IF C14_Guard(m, in) THEN "C14"
+    ELSE IF C26_Guard(m, in) THEN "C26"
     ELSE IF C15_Guard(m, in) THEN "C15"
     ELSE IF C16_Guard(m, in) THEN "C16"
     ELSE IF C17_Guard(m, in) THEN "C17"
@@ -426,7 +436,7 @@ Safety(m, in) ==
       [] r = "C19" -> C19(m, in) [] r = "C20" -> C20(m, in)
       [] r = "C21" -> C21(m, in) [] r = "C22" -> C22(m, in)
       [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
-      [] r = "C25" -> C25(m, in)
+      [] r = "C25" -> C25(m, in) [] r = "C26" -> C26(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
@@ -651,6 +661,7 @@ Cycle(in) ==
        /\ obs_arming' = IF m.state = "ARMING" THEN Min(obs_arming + 1, ArmingTimeoutCycles + 2) ELSE 0
        /\ obs_popped' = (queue # << >>)
        /\ obs_submit_lost' = FALSE
+       /\ obs_link_lost' = (~in.operator_link_ok /\ CommandedSpeedOut(Mgr) > 0)
 
 \* A RESET queued after the E-stop release is "issued after the release"
 \* (RSM-05); the Submit's result (queued / queue_full) is its output.
@@ -667,7 +678,7 @@ Submit(c) ==
     /\ UNCHANGED <<inputs, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-                   obs_booted, obs_self_test_failed, obs_arming>>
+                   obs_booted, obs_self_test_failed, obs_arming, obs_link_lost>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -719,7 +730,7 @@ FreeDefault == [speed |-> "ZERO", servo_ready |-> FALSE, drive_fault |-> FALSE,
 
 WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
                             !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok,
-                            !.fieldbus_ok = TRUE]
+                            !.fieldbus_ok = TRUE, !.operator_link_ok = TRUE]
 
 \* Fieldbus/cycle watchdog loss (C24) is a cycle of its own, the other free
 \* signals at their defaults: C24 precedes every row that reads them but
@@ -728,15 +739,23 @@ FieldbusLoss(cur) ==
     IF state = "ERROR_LOCKOUT" \/ FALSE \notin FieldbusInputs THEN {}
     ELSE {[WithFree(cur, FreeDefault) EXCEPT !.fieldbus_ok = FALSE]}
 
+\* Operator link loss (C26, issue 16) is a cycle of its own, the other free
+\* signals at their defaults, offered only in MANUAL_JOGGING: no other row
+\* reads operator_link_ok, so elsewhere it cannot change the successor.
+LinkLoss(cur) ==
+    IF state # "MANUAL_JOGGING" THEN {}
+    ELSE {[WithFree(cur, FreeDefault) EXCEPT !.operator_link_ok = FALSE]}
+
 \* With CombineChanges a cycle may change a held group and choose the free
 \* signals at once; without it (the CI cfg) a cycle either changes one held
 \* group (free signals at their defaults) or holds them and chooses the
 \* free signals.
 NextInputs(cur) ==
     IF CombineChanges
-    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices} \cup FieldbusLoss(cur)
+    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
+         \cup FieldbusLoss(cur) \cup LinkLoss(cur)
     ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)}
-         \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur)
+         \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur) \cup LinkLoss(cur)
 
 \* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
 \* off, every axis Disabled.
@@ -761,7 +780,7 @@ Init ==
     /\ obs_t2 = FALSE             /\ obs_drive_fault = FALSE
     /\ obs_fieldbus_lost = FALSE  /\ obs_unexpected_motion = FALSE
     /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
-    /\ obs_self_test_failed = FALSE
+    /\ obs_self_test_failed = FALSE /\ obs_link_lost = FALSE
     /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
@@ -821,6 +840,7 @@ TypeOK ==
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
     /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
+    /\ obs_link_lost \in BOOLEAN
     \* per-state data is meaningful only where §4 says so
     /\ (session_mode # "NONE") <=> (state \in Powered)
     /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
@@ -1004,6 +1024,19 @@ INV_1OO2 ==
         /\ session_mode \in {"T1", "T2"} =>
                inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
 
+\* RSM-13 / seed 3.1 (issue 16, "if the PC hangs, the robot must stay
+\* safe"): the cycle that reads the operator link lost (heartbeat expired)
+\* while a jog speed is commanded ends the jog: no jog speed, no axis in
+\* motion, and a Cat 2 stop with power kept -- Cat 1 if that cycle also
+\* accepted a queued Servo-off, a lockout if a discrepancy counter expired.
+RSM13_LINK_LOSS ==
+    obs_link_lost =>
+        /\ commanded_speed_mm_s = 0
+        /\ \A i \in Axes : axes[i] \notin MotionStates
+        /\ \/ Locked
+           \/ /\ contactor_closed /\ ramp_down_request
+              /\ stop_category = "CAT2" \/ last_accepted = "SERVO_OFF"
+
 (***************************************************************************)
 (* Witnesses (vacuity): each is the negation of an invariant's antecedent; *)
 (* the checker must find a state violating it, i.e. reach the antecedent.  *)
@@ -1036,6 +1069,7 @@ Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
 \* itself changes only last_reject_reason, outside the View, so it adds no state)
 Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
+Witness_RSM13_LINK_LOSS      == ~obs_link_lost
 Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
 
 -----------------------------------------------------------------------------

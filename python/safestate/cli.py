@@ -23,6 +23,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
     "evidence": ("safestate.evidence.cli", "build (or --verify) the certification evidence package"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
+    "panel": ("safestate.panel.cli", "the operator panel: cell simulator + C++ core + web bridge, prints the URL"),
 }
 
 DESCRIPTION = """\
