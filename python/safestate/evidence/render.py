@@ -39,6 +39,11 @@ def page(title: str, body: str) -> str:
             f"<style>{CSS}</style></head><body>{body}</body></html>\n")
 
 
+def _count(n: object) -> str:
+    """A figure with thousands separators, or '?' when the step did not give it."""
+    return f"{n:,}" if isinstance(n, int) else "?"
+
+
 def _status(ok: bool, text: str) -> str:
     return f'<span class="{"ok" if ok else "bad"}">{escape(text)}</span>'
 
@@ -69,7 +74,7 @@ def summary_row(p: SystemPage, test_counts: dict[str, int]) -> str:
     tests = f"{test_counts.get('passed', 0)} passed, {test_counts.get('failed', 0)} failed" + (
         f", {test_counts['not run']} not run" if test_counts.get("not run") else "")
     return (f'<tr><td><a href="{p.href}">{escape(r.system.name)}</a></td>'
-            f"<td>{p.figures.get('control_states', '?')}</td><td>{p.figures.get('transitions', '?'):,}</td>"
+            f"<td>{p.figures.get('control_states', '?')}</td><td>{_count(p.figures.get('transitions'))}</td>"
             f"<td>{len(p.figures.get('invariants', []))}</td><td>{_status(check_verdict(r) == 'success', chk)}</td>"
             f"<td>{prf}</td><td>{cf}</td><td>{muts}</td><td>{tests}</td></tr>")
 
