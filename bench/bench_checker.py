@@ -1,89 +1,150 @@
 #!/usr/bin/env python3
-"""Benchmark of `safestate check`: distinct states per second.
+"""Benchmark of `safestate check` against TLC: distinct states per CPU second.
 
-Runs (a) the synthetic bench/specs/Counters spec (1,680,000 distinct states), and
-(b) every model under models/ that has a .cfg beside it.  When TLA2TOOLS_JAR names
-a jar, TLC runs on the same specs with the same number of workers and the ratio
-of distinct states per second (ours/TLC, wall clock) is printed.  "ours cpu" is
-the CPU time of our process (parent only), less sensitive to a busy machine.
+For each spec, runs `safestate check --json` (a fresh process) with each worker
+count in `--workers` (default 1,2) and, when TLA2TOOLS_JAR names a jar, TLC with
+the same worker counts, in the same run.  CPU seconds are the child process's
+user+system time, its worker processes included (os.wait4 / RUSAGE_CHILDREN), so
+the figures hold on a busy machine where wall time does not.  Printed per run:
+distinct states, wall and CPU seconds, distinct states per CPU second, peak RSS
+per distinct state, and the ratios: ours/TLC at the same worker count, and each
+run's rate over its own single-worker rate (the parallel speed-up, by wall time).
 Informational only: never pass/fail.
 
-usage: bench/bench_checker.py [--workers N] [--quick] [SPEC.tla ...]
+Default specs: bench/specs/*.tla and the flagship model with its CI .cfg.
+
+usage: bench/bench_checker.py [--workers 1,2] [--quick] [SPEC.tla[:CFG] ...]
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import re
+import resource
+import subprocess
 import sys
 import tempfile
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "python"))
 
-from safestate.checker.explore import explore_states  # noqa: E402
-from safestate.checker.model import load_model  # noqa: E402
 from safestate.checker.tlc import run_tlc, tlc_jar  # noqa: E402
 
-
-def bench_ours(tla: Path, cfg: Path, workers: int) -> tuple[float, float, int, str]:
-    start, cpu = time.monotonic(), time.process_time()
-    model = load_model(str(tla), str(cfg))
-    r = explore_states(model, workers=workers)
-    return time.monotonic() - start, time.process_time() - cpu, r.distinct_states, r.result
+FLAGSHIP = (REPO / "models" / "SystemStateManager.tla", REPO / "models" / "SystemStateManager.cfg")
 
 
-def bench_tlc(jar: str, tla: Path, cfg: Path, workers: int) -> tuple[float, int | None]:
+@dataclass
+class Run:
+    distinct: int | None
+    wall: float
+    cpu: float
+    peak_kib: int | None  # None for TLC: the JVM's heap is not the state store's size
+    result: str
+
+    @property
+    def rate(self) -> float:
+        """Distinct states per CPU second."""
+        return (self.distinct or 0) / self.cpu if self.cpu else 0.0
+
+
+def run_ours(tla: Path, cfg: Path, workers: int) -> Run:
+    cmd = [sys.executable, "-c", "import sys; from safestate.cli import main; sys.exit(main())",
+           "check", str(tla), "--config", str(cfg), "--workers", str(workers), "--json"]
+    env = dict(os.environ, PYTHONPATH=str(REPO / "python"), PYTHONHASHSEED="0")
+    start = time.monotonic()
+    with tempfile.TemporaryFile() as out:
+        p = subprocess.Popen(cmd, stdout=out, stderr=subprocess.DEVNULL, env=env)
+        _, _, usage = os.wait4(p.pid, 0)
+        p.returncode = 0  # reaped by wait4
+        wall = time.monotonic() - start
+        out.seek(0)
+        text = out.read().decode()
+    try:
+        summary = json.loads(text)
+    except json.JSONDecodeError:
+        return Run(None, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, "no JSON output")
+    return Run(summary.get("distinct_states"), wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss,
+               summary.get("result", "error"))
+
+
+def run_theirs(jar: str, tla: Path, cfg: Path, workers: int) -> Run:
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
     s = run_tlc(jar, str(tla), str(cfg), workers=workers)
-    return time.monotonic() - start, s.distinct_states
+    wall = time.monotonic() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return Run(s.distinct_states, wall, cpu, None, s.result)
+
+
+def spec_list(args: argparse.Namespace) -> list[tuple[Path, Path]]:
+    if args.specs:
+        out = []
+        for s in args.specs:
+            tla, _, cfg = s.partition(":")
+            out.append((Path(tla), Path(cfg) if cfg else Path(tla).with_suffix(".cfg")))
+        return out
+    out = [(tla, tla.with_suffix(".cfg")) for tla in sorted((REPO / "bench" / "specs").glob("*.tla"))]
+    if args.quick:
+        # Each constant 4x smaller (at least 2): a smoke run of the bench itself.
+        tmp = Path(tempfile.mkdtemp())
+        quick = []
+        for tla, cfg in out:
+            small = tmp / cfg.name
+            small.write_text(re.sub(r"= (\d+)", lambda m: f"= {max(2, int(m.group(1)) // 4)}", cfg.read_text()))
+            quick.append((tla, small))
+        out = quick
+    return out + [FLAGSHIP]
+
+
+def fmt_run(who: str, name: str, workers: int, r: Run) -> str:
+    per_state = f"{r.peak_kib * 1024 / r.distinct:>8.0f}" if r.peak_kib and r.distinct else f"{'-':>8}"
+    line = (f"{name:18} {who:5} {workers:>2} {r.distinct if r.distinct is not None else '-':>10} "
+            f"{r.wall:>8.2f} {r.cpu:>8.2f} {r.rate:>10.0f} {per_state}")
+    return line
 
 
 def main() -> int:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--workers", type=int, default=1)
-    ap.add_argument("--quick", action="store_true", help="shrink the synthetic spec's bounds 4x")
-    ap.add_argument("specs", nargs="*")
+    ap.add_argument("--workers", default="1,2", help="comma-separated worker counts (default 1,2)")
+    ap.add_argument("--quick", action="store_true", help="shrink the bench specs' constants 4x")
+    ap.add_argument("specs", nargs="*", help="SPEC.tla or SPEC.tla:CFG (default: bench/specs/*.tla, flagship)")
     args = ap.parse_args()
-    specs: list[tuple[Path, Path]] = []
-    if args.specs:
-        specs = [(Path(s), Path(s).with_suffix(".cfg")) for s in args.specs]
-    else:
-        synth = REPO / "bench" / "specs" / "Counters.tla"
-        cfg = synth.with_suffix(".cfg")
-        if args.quick:
-            quick = Path(tempfile.mkdtemp()) / "Counters.cfg"
-            quick.write_text(re.sub(r"= (\d+)", lambda m: f"= {max(2, int(m.group(1)) // 4)}", cfg.read_text()))
-            cfg = quick
-        specs.append((synth, cfg))
-        for tla in sorted((REPO / "models").rglob("*.tla")):
-            if tla.with_suffix(".cfg").exists():
-                specs.append((tla, tla.with_suffix(".cfg")))
+    counts = [int(w) for w in args.workers.split(",")]
     jar = tlc_jar()
-    print(f"workers: {args.workers}")
-    print(f"{'spec':24} {'distinct':>10} {'ours s':>8} {'ours cpu':>8} {'ours st/s':>10} {'TLC s':>8} "
-          f"{'TLC st/s':>10} {'ratio':>6}")
-    for tla, cfg in specs:
-        try:
-            secs, cpu, distinct, result = bench_ours(tla, cfg, args.workers)
-        except Exception as e:  # noqa: BLE001 - a benchmark reports and goes on
-            print(f"{tla.name:24} error: {e}")
-            continue
-        rate = distinct / secs if secs else 0.0
-        line = f"{tla.stem:24} {distinct:>10} {secs:>8.2f} {cpu:>8.2f} {rate:>10.0f}"
-        if jar:
-            tsecs, tdistinct = bench_tlc(jar, tla, cfg, args.workers)
-            trate = (tdistinct or 0) / tsecs if tsecs else 0.0
-            line += f" {tsecs:>8.2f} {trate:>10.0f} {rate / trate if trate else 0:>6.2f}"
-        print(line + ("" if result == "success" else f"  ({result})"), flush=True)
+    print(f"{'spec':18} {'who':5} {'w':>2} {'distinct':>10} {'wall s':>8} {'CPU s':>8} {'dist/CPUs':>10} "
+          f"{'B/state':>8}  ratios")
+    for tla, cfg in spec_list(args):
+        ours1: Run | None = None
+        tlc1: Run | None = None
+        for w in counts:
+            r = run_ours(tla, cfg, w)
+            t = run_theirs(jar, tla, cfg, w) if jar else None
+            ratios = []
+            if t is not None and t.rate:
+                ratios.append(f"ours/TLC {r.rate / t.rate:.2f}x")
+                if t.distinct != r.distinct:
+                    ratios.append(f"DISTINCT DIFFERS (TLC {t.distinct})")
+            if w == counts[0]:
+                ours1, tlc1 = r, t
+            elif ours1 is not None and r.wall:
+                ratios.append(f"ours {w}w/{counts[0]}w wall speed-up {ours1.wall / r.wall:.2f}x")
+            note = "" if r.result == "success" else f"  ({r.result})"
+            print(fmt_run("ours", tla.stem, w, r) + "  " + ", ".join(ratios) + note, flush=True)
+            if t is not None:
+                extra = ""
+                if tlc1 is not None and t is not tlc1 and t.wall:
+                    extra = f"  TLC {w}w/{counts[0]}w wall speed-up {tlc1.wall / t.wall:.2f}x"
+                print(fmt_run("TLC", tla.stem, w, t) + extra, flush=True)
     if not jar:
         print("(set TLA2TOOLS_JAR to compare with TLC)")
     return 0
 
 
 if __name__ == "__main__":
-    os.environ.setdefault("PYTHONHASHSEED", "0")
     sys.exit(main())

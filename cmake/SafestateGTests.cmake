@@ -12,6 +12,8 @@ function(safestate_add_gtests pattern library)
     target_include_directories(${test_name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
     target_link_libraries(${test_name} PRIVATE ${library} GTest::gtest GTest::gtest_main)
     target_compile_options(${test_name} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Werror)
+    # Lets tests read the design pages (table audits compare the C++ rows with them).
+    target_compile_definitions(${test_name} PRIVATE SAFESTATE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     gtest_discover_tests(${test_name} DISCOVERY_TIMEOUT 60)
   endforeach()
 endfunction()

@@ -7,8 +7,7 @@
 //   opened (Cat 1); Start again, Pause (Cat 2, HOLD), Resume; finally an E-stop channel
 //   sticks open: E-stop at once, ERROR_LOCKOUT when the discrepancy time has run out.
 //
-// A tiny plant closes the loop: drives report ready a few cycles after the contactor
-// closes, and the robot speeds up in motion states and ramps down (or is braked) otherwise.
+// A tiny plant closes the loop (sim/cell_plant.hpp, shared with the operator panel).
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +15,7 @@
 
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
+#include "safestate/sim/cell_plant.hpp"
 #include "safestate/system_state_manager.hpp"
 #include "safestate/transition_row.hpp"
 
@@ -23,56 +23,7 @@ namespace {
 
 using namespace safestate;  // NOLINT
 
-/// The cell around the controller: operator devices and a very simple robot.
-class Plant {
- public:
-  Plant() {
-    in_.estop_closed = {true, true};
-    in_.safeguard_closed = {true, true};
-    in_.enabling = {EnablePosition::Released, EnablePosition::Released};
-    select(SelectorReading::Auto);
-    in_.self_test_ok = true;
-    in_.fieldbus_ok = true;
-    in_.q = {0.0, -1.2, 1.1, -1.4, -1.57, 0.0};
-  }
-
-  ScanInputs& inputs() { return in_; }
-
-  void select(SelectorReading mode) {
-    in_.selector.auto_ = mode == SelectorReading::Auto;
-    in_.selector.t1 = mode == SelectorReading::T1;
-    in_.selector.t2 = mode == SelectorReading::T2;
-  }
-  void enabling(EnablePosition p) { in_.enabling = {p, p}; }
-
-  /// Advance the plant by one cycle given the controller's last outputs.
-  void react(const ScanOutputs& out, StateId state, const JogSetpoint& jog) {
-    // Drives become ready 3 cycles after power-on.
-    powered_cycles_ = out.contactor_closed ? powered_cycles_ + 1 : 0;
-    in_.servo_ready = powered_cycles_ >= 3;
-    // Robot speed: ramps toward 1 in motion, toward 0 otherwise; brakes stop it at once.
-    const bool moving = state == StateId::AutoRunning || state == StateId::ManualJogging;
-    if (!out.brake_release) {
-      speed_ = 0;
-    } else if (moving && speed_ < 10) {
-      ++speed_;
-    } else if (!moving && speed_ > 0) {
-      --speed_;
-    }
-    in_.qd = {};
-    const double rate = 0.01 * speed_;  // rad/s, well under the T1 limit at this pose
-    if (state == StateId::ManualJogging && jog.axis >= 1 && jog.axis <= 6) {
-      in_.qd[static_cast<std::size_t>(jog.axis - 1)] = rate * jog.direction;
-    } else if (speed_ > 0) {
-      in_.qd = {rate, -rate, rate, 0.0, 0.0, 0.0};
-    }
-  }
-
- private:
-  ScanInputs in_{};
-  int powered_cycles_{0};
-  int speed_{0};
-};
+using Plant = sim::CellPlant;
 
 struct Snapshot {
   StatusRecord status;

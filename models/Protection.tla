@@ -68,6 +68,10 @@ NextState(row) ==
     ELSE IF row = "P04" THEN "NORMAL"
     ELSE protection_state
 
+\* The row a snapshot fires, for the conformance harness (the C++ reports it):
+\* p is the record [t, v, ok, clr] of Tick's parameters.
+RowsFiredBy(p) == {Row(p.t, p.v, p.ok, p.clr)}
+
 Tick(t, v, ok, clr) ==
     LET row == Row(t, v, ok, clr)
         s == NextState(row) IN

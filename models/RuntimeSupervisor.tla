@@ -106,12 +106,19 @@ Dispatch(s, st) ==
         start == [slots |-> NoDispatch, n |-> 0]
     IN Keep(Keep(Keep(Keep(Keep(start, 1), 2), 3), 4), 5).slots
 
+FatalAfter(ev) == IF ev.kind = "FATAL_SET" THEN TRUE
+                  ELSE IF ev.kind = "FATAL_CLEAR" THEN FALSE ELSE fatal_fault
+WatchdogAfter(ev) == IF ev.kind = "WD_BAD" THEN FALSE
+                     ELSE IF ev.kind = "WD_OK" THEN TRUE ELSE watchdog_ok
+
+\* The row of page section 7 that event ev fires (the C++ reports it; the
+\* conformance harness compares them).
+RowsFiredBy(ev) == {Row(ev, StatusAfter(ev), FatalAfter(ev), WatchdogAfter(ev))}
+
 Tick(ev) ==
     LET st == StatusAfter(ev)
-        fatal == IF ev.kind = "FATAL_SET" THEN TRUE
-                 ELSE IF ev.kind = "FATAL_CLEAR" THEN FALSE ELSE fatal_fault
-        wd == IF ev.kind = "WD_BAD" THEN FALSE
-              ELSE IF ev.kind = "WD_OK" THEN TRUE ELSE watchdog_ok
+        fatal == FatalAfter(ev)
+        wd == WatchdogAfter(ev)
         row == Row(ev, st, fatal, wd)
         s == StateAfter(row) IN
     /\ Enabled(ev)

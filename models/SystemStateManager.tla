@@ -67,7 +67,7 @@ InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
                   enable_a |-> "RELEASED", enable_b |-> "RELEASED",
                   selector |-> "AUTO", self_test_ok |-> TRUE,
                   servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO",
-                  fieldbus_ok |-> TRUE]
+                  fieldbus_ok |-> TRUE, operator_link_ok |-> TRUE]
 
 ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
@@ -122,7 +122,8 @@ NoJog == [axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
 Inputs == [estop_a: BOOLEAN, estop_b: BOOLEAN, gate_a: BOOLEAN, gate_b: BOOLEAN,
            enable_a: EnablePositions, enable_b: EnablePositions,
            selector: Selectors, self_test_ok: BOOLEAN, servo_ready: BOOLEAN,
-           drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN]
+           drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN,
+           operator_link_ok: BOOLEAN]
 
 Min(a, b) == IF a <= b THEN a ELSE b
 Max2(a, b) == IF a >= b THEN a ELSE b
@@ -159,9 +160,11 @@ VARIABLES inputs, event
 (*   obs_disagree  -- RSM-04/02: consecutive cycles the inputs disagreed  *)
 (*                    (pairs) or read an invalid selector, capped at D+1.  *)
 (*   obs_locked    -- RSM-04: a fault code was ever output.               *)
-(*   obs_ramp      -- RSM-11: consecutive cycles ending with the          *)
-(*                    ramp-down request output on while the arm was       *)
-(*                    measured moving (not yet at standstill; capped).    *)
+(*   obs_ramp      -- RSM-11: the age of the stop episode: consecutive    *)
+(*                    cycles ending with the ramp-down request output on, *)
+(*                    whatever the speed read (capped at MaxStopCycles+2);*)
+(*                    1 again when a cycle reads standstill and accepts a *)
+(*                    command (a new trigger at standstill).              *)
 (*   last_accepted -- the kind of command the last cycle accepted, "NONE".*)
 (*   jog_in_auto   -- RSM-08: the last cycle popped JOG_START/JOG_STOP    *)
 (*                    with selector AUTO or session AUTO.                 *)
@@ -174,6 +177,9 @@ VARIABLES inputs, event
 (*   obs_drive_fault -- RSM-07: the last cycle read drive_fault with the  *)
 (*                    outputs powered at its start.                      *)
 (*   obs_fieldbus_lost -- seed/RSM-03: a cycle read fieldbus_ok = FALSE.  *)
+(*   obs_link_lost -- RSM-13/seed (issue 16): the last cycle read the     *)
+(*                    operator link lost with a jog speed commanded at    *)
+(*                    its start.                                          *)
 (*   obs_unexpected_motion -- RSM-11 (standstill monitoring): the last    *)
 (*                    cycle read speed # ZERO with power on and no motion  *)
 (*                    commanded at its start.                              *)
@@ -181,10 +187,18 @@ VARIABLES inputs, event
 (*                    session output (at its start) was T1.               *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
 (*                    self_test_ok = FALSE.                               *)
+(*   obs_arming    -- RSM-07/RSM-15: consecutive cycles ending with the   *)
+(*                    status state ARMING (capped at ArmingTimeout + 2).  *)
+(*   obs_popped    -- RSM-13: the last event was a cycle that began with  *)
+(*                    a command queued (queue_length > 0).                *)
+(*   obs_submit_lost -- RSM-14: the last event was a Submit that neither  *)
+(*                    grew queue_length by one (queue not full) nor was   *)
+(*                    rejected at once with QUEUE_FULL (queue full).      *)
 VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-          obs_booted, obs_self_test_failed
+          obs_booted, obs_self_test_failed,
+          obs_arming, obs_popped, obs_submit_lost, obs_link_lost
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
@@ -194,7 +208,8 @@ mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
 obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
               last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-              obs_booted, obs_self_test_failed>>
+              obs_booted, obs_self_test_failed,
+              obs_arming, obs_popped, obs_submit_lost, obs_link_lost>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -327,6 +342,9 @@ C11_Guard(m, in) == m.state \in Powered /\ Manual(m) /\ EnablePanic(in)  \* RSM-
 C12_Guard(m, in) == StopCat1Free(m, in) /\ in.selector # m.session_mode      \* RSM-02
 C13_Guard(m, in) == StopCat1Free(m, in) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
 C14_Guard(m, in) == StopCat1Free(m, in) /\ Manual(m) /\ ~EnableMiddle(in)    \* RSM-09
+\* issue 16: the controlling operator client's heartbeat expired (link lost,
+\* client hung or socket closed) while jogging: a Cat 2 stop, as a Pause.
+C26_Guard(m, in) == m.state = "MANUAL_JOGGING" /\ ~in.operator_link_ok     \* RSM-13, seed
 C15_Guard(m, in) == m.state = "ARMING" /\ in.servo_ready                 \* RSM-07
 C16_Guard(m, in) == m.state = "ARMING" /\ m.state_cycles = ArmingTimeoutCycles
 C17_Guard(m, in) == m.state = "ARMING"                                   \* RSM-07
@@ -363,6 +381,8 @@ StopCat1(m) == [WithCat(Enter(m, "STOPPING"), "CAT1")
 C12(m, in) == StopCat1(m)
 C13(m, in) == StopCat1(m)
 C14(m, in) == StopCat1(m)
+C26(m, in) == [WithCat(Enter(m, "STOPPING"), "CAT2")
+                 EXCEPT !.resume_to = "MANUAL_JOGGING", !.jog = m.jog]
 C15(m, in) == Enter(m, IF m.session_mode = "AUTO" THEN "AUTO_IDLE" ELSE "MANUAL_IDLE")
 C16(m, in) == Lockout(m, "ARMING_TIMEOUT")
 C17(m, in) == [m EXCEPT !.state_cycles = @ + 1]
@@ -391,6 +411,7 @@ SafetyRow(m, in) ==
     ELSE IF C12_Guard(m, in) THEN "C12"
     ELSE IF C13_Guard(m, in) THEN "C13"
     ELSE IF C14_Guard(m, in) THEN "C14"
+    ELSE IF C26_Guard(m, in) THEN "C26"
     ELSE IF C15_Guard(m, in) THEN "C15"
     ELSE IF C16_Guard(m, in) THEN "C16"
     ELSE IF C17_Guard(m, in) THEN "C17"
@@ -415,7 +436,7 @@ Safety(m, in) ==
       [] r = "C19" -> C19(m, in) [] r = "C20" -> C20(m, in)
       [] r = "C21" -> C21(m, in) [] r = "C22" -> C22(m, in)
       [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
-      [] r = "C25" -> C25(m, in)
+      [] r = "C25" -> C25(m, in) [] r = "C26" -> C26(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
@@ -617,8 +638,11 @@ Cycle(in) ==
              enable   |-> n(obs_disagree.enable, in.enable_a # in.enable_b),
              selector |-> n(obs_disagree.selector, in.selector \notin Modes)]
        /\ obs_locked' = (obs_locked \/ m.fault_code # "NONE")
-       /\ obs_ramp' = IF RampDownOut(m) /\ in.speed # "ZERO"
-                      THEN Min(obs_ramp + 1, MaxStopCycles + 2) ELSE 0
+       \* a cycle that reads standstill and accepts a command starts a new episode
+       \* (a Servo-off after the Cat 2 stop reached HOLD in the same cycle)
+       /\ obs_ramp' = IF ~RampDownOut(m) THEN 0
+                      ELSE IF in.speed = "ZERO" /\ acc # "NONE" THEN 1
+                      ELSE Min(obs_ramp + 1, MaxStopCycles + 2)
        /\ last_accepted' = acc
        /\ jog_in_auto' = /\ Popped \in {"JOG_START", "JOG_STOP"}
                          /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
@@ -634,6 +658,10 @@ Cycle(in) ==
        /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
        /\ obs_booted' = TRUE
        /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
+       /\ obs_arming' = IF m.state = "ARMING" THEN Min(obs_arming + 1, ArmingTimeoutCycles + 2) ELSE 0
+       /\ obs_popped' = (queue # << >>)
+       /\ obs_submit_lost' = FALSE
+       /\ obs_link_lost' = (~in.operator_link_ok /\ CommandedSpeedOut(Mgr) > 0)
 
 \* A RESET queued after the E-stop release is "issued after the release"
 \* (RSM-05); the Submit's result (queued / queue_full) is its output.
@@ -642,10 +670,15 @@ Submit(c) ==
     /\ event' = [kind |-> "submit", command |-> c]
     /\ obs_estop' = IF obs_estop = "RELEASED" /\ c.kind = "RESET" /\ Len(queue) < QueueCapacity
                     THEN "RESET_ISSUED" ELSE obs_estop
+    /\ obs_popped' = FALSE
+    \* RSM-14 over the outputs queue_length and last_reject_reason
+    /\ obs_submit_lost' =
+           ~IF Len(queue) < QueueCapacity THEN Len(queue') = Len(queue) + 1
+            ELSE Len(queue') = Len(queue) /\ last_reject_reason' = "QUEUE_FULL"
     /\ UNCHANGED <<inputs, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-                   obs_booted, obs_self_test_failed>>
+                   obs_booted, obs_self_test_failed, obs_arming, obs_link_lost>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -697,7 +730,7 @@ FreeDefault == [speed |-> "ZERO", servo_ready |-> FALSE, drive_fault |-> FALSE,
 
 WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
                             !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok,
-                            !.fieldbus_ok = TRUE]
+                            !.fieldbus_ok = TRUE, !.operator_link_ok = TRUE]
 
 \* Fieldbus/cycle watchdog loss (C24) is a cycle of its own, the other free
 \* signals at their defaults: C24 precedes every row that reads them but
@@ -706,15 +739,23 @@ FieldbusLoss(cur) ==
     IF state = "ERROR_LOCKOUT" \/ FALSE \notin FieldbusInputs THEN {}
     ELSE {[WithFree(cur, FreeDefault) EXCEPT !.fieldbus_ok = FALSE]}
 
+\* Operator link loss (C26, issue 16) is a cycle of its own, the other free
+\* signals at their defaults, offered only in MANUAL_JOGGING: no other row
+\* reads operator_link_ok, so elsewhere it cannot change the successor.
+LinkLoss(cur) ==
+    IF state # "MANUAL_JOGGING" THEN {}
+    ELSE {[WithFree(cur, FreeDefault) EXCEPT !.operator_link_ok = FALSE]}
+
 \* With CombineChanges a cycle may change a held group and choose the free
 \* signals at once; without it (the CI cfg) a cycle either changes one held
 \* group (free signals at their defaults) or holds them and chooses the
 \* free signals.
 NextInputs(cur) ==
     IF CombineChanges
-    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices} \cup FieldbusLoss(cur)
+    THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
+         \cup FieldbusLoss(cur) \cup LinkLoss(cur)
     ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)}
-         \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur)
+         \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur) \cup LinkLoss(cur)
 
 \* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
 \* off, every axis Disabled.
@@ -739,7 +780,8 @@ Init ==
     /\ obs_t2 = FALSE             /\ obs_drive_fault = FALSE
     /\ obs_fieldbus_lost = FALSE  /\ obs_unexpected_motion = FALSE
     /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
-    /\ obs_self_test_failed = FALSE
+    /\ obs_self_test_failed = FALSE /\ obs_link_lost = FALSE
+    /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
 \* last_reject_reason changes), so when it is full one representative
@@ -796,11 +838,17 @@ TypeOK ==
     /\ obs_drive_fault \in BOOLEAN /\ obs_fieldbus_lost \in BOOLEAN
     /\ obs_unexpected_motion \in BOOLEAN /\ t1_overspeed \in BOOLEAN
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
+    /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
+    /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
+    /\ obs_link_lost \in BOOLEAN
     \* per-state data is meaningful only where §4 says so
     /\ (session_mode # "NONE") <=> (state \in Powered)
     /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
     /\ t2_confirmed => state = "IDLE"
     /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"}
+    \* RSM-01: STOPPING is of category 1 or 2; HOLD is a category 2 pause
+    /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
+    /\ state = "HOLD" => stop_category = "CAT2"
     /\ (resume_to # "NONE") <=> (state = "HOLD" \/ (state = "STOPPING" /\ stop_category = "CAT2"))
     /\ (jog # NoJog) <=> (state = "MANUAL_JOGGING" \/ resume_to = "MANUAL_JOGGING")
 
@@ -874,10 +922,14 @@ INV_ENABLE ==
         /\ (inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE") \/ Cat1Ramp
 
 \* RSM-11: every stop reaches standstill within MaxStopCycles of its FIRST
-\* trigger: the ramp-down output is on with the arm moving for at most
+\* trigger: once the ramp-down output has been on for more than
 \* MaxStopCycles + 1 consecutive cycles (the trigger cycle, then
-\* MaxStopCycles full cycles), escalation from Cat 2 to Cat 1 included.
-RSM11_STOP_BUDGET == obs_ramp <= MaxStopCycles + 1
+\* MaxStopCycles full cycles), no cycle reads the arm moving.  The episode
+\* is the ramp-down output's, so a standstill reading in the cycle of an
+\* escalation from Cat 2 to Cat 1 does not restart it; a command accepted in
+\* a cycle that reads standstill (a Servo-off when the Cat 2 stop has just
+\* reached HOLD) is a new trigger and starts a new episode.
+RSM11_STOP_BUDGET == obs_ramp > MaxStopCycles + 1 => inputs.speed = "ZERO"
 
 \* RSM-11: a Pause is a Cat 2 stop: power kept, ramp-down requested.
 RSM11_PAUSE_CAT2 ==
@@ -936,6 +988,22 @@ RSM06_SERVO_ON ==
 RSM07_DRIVE_FAULT ==
     obs_drive_fault => Unpowered /\ (Locked \/ ~inputs.estop_a \/ ~inputs.estop_b)
 
+\* RSM-07 (arming timeout) and RSM-15 (timing in cycles, whatever the
+\* commands processed): the ARMING status is shown for at most
+\* ArmingTimeoutCycles + 1 consecutive cycles.
+RSM07_ARMING_TIMEOUT == obs_arming <= ArmingTimeoutCycles + 1
+
+\* RSM-13: a cycle that began with a command queued answers it: ACCEPTED, or
+\* its reason code, also shown as the last reject reason.
+RSM13_RESULT ==
+    obs_popped => \/ command_result = "ACCEPTED"
+                  \/ command_result \in Reasons /\ last_reject_reason = command_result
+
+\* RSM-14: a Submit is queued (queue_length + 1) when the queue is not full,
+\* else rejected at once with QUEUE_FULL and nothing else queued: nothing is
+\* dropped silently.
+RSM14_QUEUE == ~obs_submit_lost
+
 \* RSM-12: a failed self-test in the first cycle locks out for good.
 RSM12_SELF_TEST == obs_self_test_failed => fault_code = "SELF_TEST_FAILED" /\ Unpowered
 
@@ -956,6 +1024,19 @@ INV_1OO2 ==
         /\ session_mode \in {"T1", "T2"} =>
                inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
 
+\* RSM-13 / seed 3.1 (issue 16, "if the PC hangs, the robot must stay
+\* safe"): the cycle that reads the operator link lost (heartbeat expired)
+\* while a jog speed is commanded ends the jog: no jog speed, no axis in
+\* motion, and a Cat 2 stop with power kept -- Cat 1 if that cycle also
+\* accepted a queued Servo-off, a lockout if a discrepancy counter expired.
+RSM13_LINK_LOSS ==
+    obs_link_lost =>
+        /\ commanded_speed_mm_s = 0
+        /\ \A i \in Axes : axes[i] \notin MotionStates
+        /\ \/ Locked
+           \/ /\ contactor_closed /\ ramp_down_request
+              /\ stop_category = "CAT2" \/ last_accepted = "SERVO_OFF"
+
 (***************************************************************************)
 (* Witnesses (vacuity): each is the negation of an invariant's antecedent; *)
 (* the checker must find a state violating it, i.e. reach the antecedent.  *)
@@ -972,7 +1053,7 @@ Witness_INV_GATE             == ~((inputs.selector = "AUTO" \/ session_mode = "A
                                   /\ (~inputs.gate_a \/ ~inputs.gate_b) /\ drive_enable)
 Witness_INV_ENABLE           == ~(session_mode \in {"T1", "T2"} /\ drive_enable
                                   /\ (inputs.enable_a # "MIDDLE" \/ inputs.enable_b # "MIDDLE"))
-Witness_RSM11_STOP_BUDGET    == ~(obs_ramp = MaxStopCycles + 1)
+Witness_RSM11_STOP_BUDGET    == ~(obs_ramp > MaxStopCycles + 1)
 Witness_RSM11_PAUSE_CAT2     == ~(last_accepted = "PAUSE")
 Witness_RSM11_STANDSTILL     == ~obs_unexpected_motion
 Witness_INV_NOJOG_AUTO       == ~(jog_in_auto /\ command_result = "JOG_IN_AUTO")
@@ -982,7 +1063,13 @@ Witness_INV_T1SPEED          == ~t1_overspeed
 Witness_RSM06_SERVO_ON       == ~(last_accepted = "SERVO_ON" /\ inputs.selector = "T2")
 Witness_RSM07_DRIVE_FAULT    == ~obs_drive_fault
 Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
+Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
+Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
+\* (a full queue: the next Submit takes RSM-14's QUEUE_FULL branch; that Submit
+\* itself changes only last_reject_reason, outside the View, so it adds no state)
+Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
+Witness_RSM13_LINK_LOSS      == ~obs_link_lost
 Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
 
 -----------------------------------------------------------------------------

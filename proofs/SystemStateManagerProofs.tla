@@ -59,8 +59,15 @@ Strengthen_OBSERVERS ==
     /\ obs_self_test_failed => state = "ERROR_LOCKOUT" /\ fault_code = "SELF_TEST_FAILED"
     /\ ~obs_booted => state = "BOOT" /\ ~obs_self_test_failed
     /\ state = "BOOT" => ~obs_booted
-    /\ obs_ramp > 0 => state = "STOPPING" /\ obs_ramp <= state_cycles + 1
+    /\ obs_ramp > 0 => state = "STOPPING"
+    \* the episode's age is the stop timer's + 1, or one more after an
+    \* escalation in the timer's last cycle (C12-C14 cap it; the arm stood)
+    /\ obs_ramp > 0 => \/ obs_ramp <= state_cycles + 1
+                       \/ /\ obs_ramp = MaxStopCycles + 2 /\ state_cycles = MaxStopCycles
+                          /\ stop_category = "CAT1" /\ inputs.speed = "ZERO"
     /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
+    /\ (obs_arming > 0) <=> (state = "ARMING")
+    /\ obs_arming > 0 => obs_arming = state_cycles + 1
     /\ t2_confirmed => obs_t2
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
@@ -78,4 +85,5 @@ Strengthen_ALL ==
     /\ RSM11_STOP_BUDGET /\ RSM11_PAUSE_CAT2 /\ RSM11_STANDSTILL /\ INV_NOJOG_AUTO
     /\ RSM09_JOG_START /\ RSM08_START /\ INV_T1SPEED /\ RSM06_SERVO_ON
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
+    /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
 =============================================================================

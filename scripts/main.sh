@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
-# Sets up (scripts/setup.sh) and runs the main job: the demo scenario, then the
-# evidence chain for every model: model check (safestate check), unbounded proofs
-# (safestate prove) and conformance of the C++ against its model
-# (safestate conform), for every system of the registry (systems/*/system.toml).
+# Sets up (scripts/setup.sh) and runs the main job: the demo scenarios, then the
+# evidence chain for every system of the registry (systems/*/system.toml): model check
+# (safestate check), unbounded proofs (safestate prove), conformance of the C++
+# against its model (safestate conform), model mutants and tests -- run by
+# `safestate evidence`, which ends the job with the evidence package (build/evidence)
+# and prints its path and gap count.  SAFESTATE_CPP_MUTATION=N first measures the
+# C++ mutation score on a stratified sample of N mutants (slow).
 # Exits non-zero as soon as one step fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 SAFESTATE=.venv/bin/safestate
-mapfile -t MODELS < <("$SAFESTATE" systems --names)
-mapfile -t CONFORM < <("$SAFESTATE" systems --names --with-conformance)
 
 echo "== systems"
 "$SAFESTATE" systems
@@ -20,41 +21,29 @@ build/cpp/safestate_demo
 echo "== demo scenario (C++ Safety service over UDP on the loopback, one line per change)"
 "$SAFESTATE" demo saf
 
-# A system whose manifest says `expected_check = "violated INV"` (the defective press
-# reference) must fail exactly that invariant, and is not proved but refuted by BMC.
-expected_violation() {
-  .venv/bin/python -c "from safestate.systems.registry import find; print(find('$1').extra.get('expected_check', '').removeprefix('violated '))"
-}
+echo "== demo scenario (C++ fan controller closed around its thermal plant, one line per tick)"
+"$SAFESTATE" demo protection
 
-for m in "${MODELS[@]}"; do
-  echo "== model check: system $m (its model with its CI cfg)"
-  inv="$(expected_violation "$m")"
-  if [[ -n "$inv" ]]; then
-    rc=0; out="$("$SAFESTATE" check "$m" --workers 2)" || rc=$?
-    grep -E "is violated|states generated|depth of the" <<<"$out"
-    [[ $rc -eq 12 ]] && grep -q "Invariant $inv is violated" <<<"$out" || { echo "expected $inv violated (exit 12), got exit $rc"; exit 1; }
-    continue
-  fi
-  "$SAFESTATE" check "$m" --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
-done
+echo "== demo scenario (the hydraulic press accident: flat reference and chain press side by side)"
+"$SAFESTATE" demo press
 
 echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
 "$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 
-for m in "${MODELS[@]}"; do
-  inv="$(expected_violation "$m")"
-  if [[ -n "$inv" ]]; then
-    echo "== proofs: system $m is a defective reference: BMC must refute $inv"
-    rc=0; "$SAFESTATE" prove "$m" --engine bmc --depth 6 --invariant "$inv" --quiet || rc=$?
-    [[ $rc -eq 12 ]] || { echo "expected BMC to refute $inv (exit 12), got exit $rc"; exit 1; }
-    continue
-  fi
-  echo "== proofs: system $m (every constant symbolic where its ASSUME allows)"
-  "$SAFESTATE" prove "$m" --quiet
-done
+if [ -n "${SAFESTATE_CPP_MUTATION:-}" ]; then
+  echo "== C++ mutation score (universalmutator, stratified sample of $SAFESTATE_CPP_MUTATION mutants; slow)"
+  .venv/bin/python conform/cpp_mutants/score.py build/cpp-mutation --sample "$SAFESTATE_CPP_MUTATION" \
+    --budget "${SAFESTATE_CPP_MUTATION_BUDGET:-3600}"
+fi
 
-for m in "${CONFORM[@]}"; do
-  echo "== conformance: system $m, C++ against the model (trace replay of every transition, Hypothesis lockstep, input-complete pass)"
-  "$SAFESTATE" conform "$m" --input-complete
-done
+# The evidence chain of every system of the registry, and the package that shows it:
+# model check, unbounded proofs (every constant symbolic where its ASSUME allows),
+# conformance of the C++ against the model (trace replay of every transition,
+# Hypothesis lockstep, input-complete pass) where the system has an adapter, every
+# model mutant, GoogleTest and the requirement-named pytest tests, the flagship's
+# branch coverage under conformance; then index.html, the traceability matrix, the
+# diagrams and manifest.json (verify: safestate evidence --verify build/evidence).
+# The last C++ mutation score (build/cpp-mutation/score.json) goes into the package.
+echo "== evidence: check, prove, conform, mutants and tests of every system; the evidence package"
+"$SAFESTATE" evidence --out build/evidence --coverage
 echo "== main job: all steps passed"

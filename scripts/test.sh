@@ -10,5 +10,5 @@ echo "== lint and types (ruff, mypy)"
 .venv/bin/mypy
 echo "== C++ unit tests (ctest)"
 ctest --test-dir build/cpp --output-on-failure -j"$(nproc)"
-echo "== Python tests (pytest)"
-.venv/bin/python -m pytest -q -p no:cacheprovider "$@"
+echo "== Python tests (pytest, 2 workers; docs/testing.md)"
+.venv/bin/python -m pytest -q -p no:cacheprovider -n "${SAFESTATE_TEST_WORKERS:-2}" --dist loadfile "$@"

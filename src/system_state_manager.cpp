@@ -63,6 +63,7 @@ void SystemStateManager::derive_inputs(const ScanInputs& in) noexcept {
   d.servo_ready = in.servo_ready;
   d.drive_fault = in.drive_fault;
   d.fieldbus_ok = in.fieldbus_ok;
+  d.operator_link_ok = in.operator_link_ok;
   d.axes_at_rest = std::all_of(axes_.begin(), axes_.end(), [](const PlcopenAxis& a) {
     return a.state() == AxisState::Disabled || a.state() == AxisState::StandStill;
   });

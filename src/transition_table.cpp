@@ -124,6 +124,9 @@ bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_midd
 // C24: the fieldbus (EtherCAT) or the cycle watchdog reports a loss.
 bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
 
+// C26: the controlling operator client's heartbeat did not arrive within its period.
+bool operator_link_lost(const StepContext& c) noexcept { return !c.in.operator_link_ok; }
+
 // C25: power on, no motion commanded (every axis Disabled/StandStill), measured motion.
 bool moving_at_standstill(const StepContext& c) noexcept {
   return c.in.axes_at_rest && c.in.speed != SpeedLevel::Zero;

@@ -71,6 +71,7 @@ ScanInputs scan_inputs(const py::dict& d) {
     else if (key == "servo_ready") in.servo_ready = v.cast<bool>();
     else if (key == "drive_fault") in.drive_fault = v.cast<bool>();
     else if (key == "fieldbus_ok") in.fieldbus_ok = v.cast<bool>();
+    else if (key == "operator_link_ok") in.operator_link_ok = v.cast<bool>();
     else if (key == "q") in.q = joint_vector(v, "q");
     else if (key == "qd") in.qd = joint_vector(v, "qd");
     else throw py::key_error("unknown input '" + key + "'");
@@ -189,6 +190,7 @@ py::dict derived_dict(const DerivedInputs& d) {
   out["servo_ready"] = d.servo_ready;
   out["drive_fault"] = d.drive_fault;
   out["fieldbus_ok"] = d.fieldbus_ok;
+  out["operator_link_ok"] = d.operator_link_ok;
   out["axes_at_rest"] = d.axes_at_rest;
   out["discrepancy"] = str(to_string(d.discrepancy));
   return out;

@@ -20,6 +20,7 @@ struct DerivedInputs {
   bool servo_ready{false};
   bool drive_fault{false};
   bool fieldbus_ok{false};     ///< C24: FALSE = fieldbus / cycle watchdog lost
+  bool operator_link_ok{false};  ///< C26: FALSE = the operator link's heartbeat expired
   bool axes_at_rest{false};    ///< C25: every axis Disabled or StandStill at the cycle start
   /// First discrepancy fault in §3 order (E-stop, safeguard, enabling, selector), else None.
   FaultCode discrepancy{FaultCode::None};

@@ -21,6 +21,7 @@ struct ScanInputs {
   bool servo_ready{false};                    ///< every drive reports ready
   bool drive_fault{false};                    ///< any drive reports a fault
   bool fieldbus_ok{false};                    ///< fieldbus (EtherCAT) and cycle watchdog healthy (C24)
+  bool operator_link_ok{false};               ///< operator link heartbeat within its period (C26)
   JointVector q{};                            ///< joint positions, rad
   JointVector qd{};                           ///< joint velocities, rad/s
 };

@@ -32,7 +32,7 @@ namespace safestate {
 /// Threading: one producer thread may call submit() while the control thread calls cycle();
 /// every other member is for the control thread (or for a quiescent manager). Nothing here
 /// allocates after construction, throws, or blocks; a cycle does bounded work (at most one
-/// command, 58 table rows, one Jacobian).
+/// command, 64 table rows, one Jacobian).
 class SystemStateManager {
  public:
   using CommandQueue = SpscQueue<Command, kMaxQueueCapacity>;

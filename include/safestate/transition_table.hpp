@@ -53,6 +53,7 @@ bool in_auto(const StepContext&) noexcept;
 bool jog_arguments_invalid(const StepContext&) noexcept;
 bool enable_not_middle(const StepContext&) noexcept;
 bool fieldbus_lost(const StepContext&) noexcept;
+bool operator_link_lost(const StepContext&) noexcept;
 bool moving_at_standstill(const StepContext&) noexcept;
 bool reset_submitted_before_release(const StepContext&) noexcept;
 bool estop_channels_not_both_tested(const StepContext&) noexcept;
@@ -132,7 +133,7 @@ struct Effect {
 #define SAFESTATE_ACTION(fn) &::safestate::actions::fn, #fn
 
 // clang-format off
-inline constexpr std::array<TransitionRow, 63> kRows{{
+inline constexpr std::array<TransitionRow, 64> kRows{{
   // ---- §5: one scan cycle, after channel monitoring (§3) ---------------------------------------
   // id     event      source                    guard                                                              effect                                                                       stop        requirements
   row("C01", Ev::Cycle, {St::ErrorLockout},       SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-04, INV-DISCREPANCY"),
@@ -151,6 +152,7 @@ inline constexpr std::array<TransitionRow, 63> kRows{{
   row("C12", Ev::Cycle, powered(),                SAFESTATE_GUARD(selector_differs_from_session_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),             Stop::Cat1, "RSM-02, RSM-11"),
   row("C13", Ev::Cycle, powered(),                SAFESTATE_GUARD(auto_session_gate_open_unless_cat1_stopping),     enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),                Stop::Cat1, "RSM-08, RSM-11"),
   row("C14", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_enable_not_middle_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),          Stop::Cat1, "RSM-09, RSM-11"),
+  row("C26", Ev::Cycle, {St::ManualJogging},      SAFESTATE_GUARD(operator_link_lost),                              enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat2_pause)),          Stop::Cat2, "RSM-13, seed"),
   row("C15", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(servo_ready),                                     enter({St::AutoIdle, St::ManualIdle}, SAFESTATE_ACTION(enter_operational_idle)), Stop::Keep, "RSM-07"),
   row("C16", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(arming_timer_expired),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_arming_timeout)),         Stop::Cat0, "RSM-07"),
   row("C17", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(count_state_cycle)),                                   Stop::Keep, "RSM-07"),
@@ -210,8 +212,8 @@ inline constexpr std::array<TransitionRow, 63> kRows{{
 }  // namespace table_dsl
 
 /// The table, §5 rows then §6 rows.
-inline constexpr const std::array<TransitionRow, 63>& kTransitionTable = table_dsl::kRows;
-inline constexpr std::size_t kCycleRowCount = 25;    // C01..C25
+inline constexpr const std::array<TransitionRow, 64>& kTransitionTable = table_dsl::kRows;
+inline constexpr std::size_t kCycleRowCount = 26;    // C01..C26
 inline constexpr std::size_t kCommandRowCount = 38;  // K01..K38
 
 // ---- Compile-time audit of the table ---------------------------------------------------------
@@ -225,7 +227,7 @@ namespace table_check {
 }
 
 /// C rows then K rows, each id Cnn / Knn within its section's count (rows added by a later
-/// change take the next free number and sit where first-match needs them: C24, C25, K36-K38).
+/// change take the next free number and sit where first-match needs them: C24-C26, K36-K38).
 [[nodiscard]] constexpr bool ids_in_order() noexcept {
   for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
     const bool cycle = i < kCycleRowCount;
@@ -302,8 +304,8 @@ namespace table_check {
 
 }  // namespace table_check
 
-static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "63 rows: C01-C25, K01-K38");
-static_assert(table_check::ids_in_order(), "row ids must be C01..C25 then K01..K38");
+static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "64 rows: C01-C26, K01-K38");
+static_assert(table_check::ids_in_order(), "row ids must be C01..C26 then K01..K38");
 static_assert(table_check::ids_unique(), "row ids must be unique");
 static_assert(table_check::events_match_sections(), "C rows are cycle rows, K rows command rows");
 static_assert(table_check::effects_well_formed(), "every reject row needs a reason; effects must be well formed");

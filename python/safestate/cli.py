@@ -13,6 +13,7 @@ import os
 import sys
 
 from . import __version__
+from .errors import closed_stdout_exit
 
 # name -> (module, one-line help).
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
@@ -20,7 +21,9 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "check": ("safestate.checker.cli", "model-check a TLA+ specification (TLC-equivalent)"),
     "prove": ("safestate.prove.cli", "prove invariants with z3 (BMC, k-induction, PDR)"),
     "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
+    "evidence": ("safestate.evidence.cli", "build (or --verify) the certification evidence package"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
+    "panel": ("safestate.panel.cli", "the operator panel: cell simulator + C++ core + web bridge, prints the URL"),
 }
 
 DESCRIPTION = """\
@@ -31,12 +34,14 @@ safestate: formally verified safety state machines.  The pipeline, per system
   safestate check   SYSTEM|MODEL.tla      model checking, TLC's verdicts and counts
   safestate prove   SYSTEM|MODEL.tla      unbounded proofs of every invariant (z3)
   safestate conform SYSTEM|MODEL.tla      the C++ against the model (replay, Hypothesis)
+  safestate evidence [--out DIR]          the evidence package: matrix, diagrams, manifest
 """
 
 EXIT_CODES = """\
 exit codes (every subcommand):
   0     success: no error found / every invariant proved / conformant
-  1     check --tlc: TLC disagrees; prove: an invariant neither proved nor violated
+  1     check --tlc: TLC disagrees; prove: an invariant neither proved nor violated;
+        evidence: a step failed (the package is still written) / --verify found a difference
   2     usage or input error (bad argument, missing or malformed file, unknown system
         or binding module, unwritable output path): one line on stderr, no traceback
   12    an invariant is violated (check: TLC's code; prove: a counterexample)
@@ -80,7 +85,10 @@ def main(argv: list[str] | None = None) -> int:
         p.set_defaults(run=module.run)
     args = parser.parse_args(argv)
     _resolve_system_names(args)
-    return int(args.run(args))
+    try:
+        return int(args.run(args))
+    except BrokenPipeError:  # a subcommand without its own guard; `... | head` is not an error
+        return closed_stdout_exit()
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 """`safestate demo SYSTEM`: run a system's C++ demo scenario (built by scripts/setup.sh).
 
 `saf`: the Safety service over UDP on the loopback interface against its simulated peers
-(build/cpp/src/saf/saf_demo). `ssm`: the SystemStateManager scenario (build/cpp/safestate_demo).
+(build/cpp/src/saf/saf_demo). `protection`: the fan controller closed around its thermal
+plant (build/cpp/src/pro/pro_demo). `ssm`: the SystemStateManager scenario (build/cpp/safestate_demo).
 `press`: the hydraulic press accident, flat reference and chain press side by side
 (through the binding safestate._press; python/safestate/press_demo.py).
 """
@@ -20,6 +21,7 @@ REPO = Path(__file__).resolve().parents[2]
 DEMOS: dict[str, str] = {
     "saf": "src/saf/saf_demo",
     "ssm": "safestate_demo",
+    "protection": "src/pro/pro_demo",
 }
 
 

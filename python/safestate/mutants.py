@@ -1,4 +1,7 @@
-"""Model mutants written as patches (models/mutants/<Model>.toml).
+"""Model mutants written as patches (models/mutants/<Model>.toml), and model variants
+that check one invariant (a mutant's target, or a reachability witness `Witness_X`).
+The one implementation behind the mutant tests of every registered system
+(`systems/<Name>/system.toml` names its mutant file: `mutants = "..."`).
 
 A mutant is a list of exact text substitutions against the model's own files (the
 .tla, or its .cfg) plus the invariant that must catch it. `materialise` copies the
@@ -23,10 +26,17 @@ which file and what was looked for.
 
 from __future__ import annotations
 
+import re
 import shutil
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+from .errors import SafestateError
+
+if TYPE_CHECKING:
+    from .systems.registry import System
 
 # Keywords that open a section of a TLC .cfg file.
 _CFG_KEYWORDS = {"CONSTANT", "CONSTANTS", "INIT", "NEXT", "SPECIFICATION", "INVARIANT", "INVARIANTS",
@@ -34,7 +44,7 @@ _CFG_KEYWORDS = {"CONSTANT", "CONSTANTS", "INIT", "NEXT", "SPECIFICATION", "INVA
                  "ACTION_CONSTRAINT", "ACTION_CONSTRAINTS", "CHECK_DEADLOCK", "ALIAS", "POSTCONDITION"}
 
 
-class MutationError(Exception):
+class MutationError(SafestateError):
     """A mutant that no longer applies, or a malformed mutant file."""
 
 
@@ -96,6 +106,20 @@ def load_all(folder: Path) -> list[Mutant]:
     return [m for p in sorted(folder.glob("*.toml")) for m in load(p)]
 
 
+def of_system(system: System) -> list[Mutant]:
+    """The mutants the system's manifest names (none when it names no file)."""
+    if system.mutants is None:
+        return []
+    if not system.mutants.is_file():
+        raise MutationError(f"{system.manifest}: mutants file {system.mutants} does not exist")
+    return load(system.mutants)
+
+
+def witnesses(model: Path) -> list[str]:
+    """The model's reachability witnesses: its `Witness_X ==` operators, in order."""
+    return re.findall(r"^(Witness_\w+)\s+==", model.read_text(encoding="utf-8"), re.M)
+
+
 def apply_patch(text: str, patch: Patch, who: str) -> str:
     n = text.count(patch.original)
     if n != 1:
@@ -119,17 +143,24 @@ def only_invariant(cfg_text: str, invariant: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def materialise(mutant: Mutant, models: Path, dest: Path) -> Path:
-    """Writes the mutant (every file of `models`, patched) into `dest`; returns its .tla."""
+def variant(model: Path, invariant: str, dest: Path, patches: tuple[Patch, ...] = (),
+            who: str = "") -> Path:
+    """Writes every module and cfg of the model's folder into `dest`, `patches` applied,
+    with the model's .cfg checking only `invariant`; returns the copy of the model."""
     dest.mkdir(parents=True, exist_ok=True)
-    for f in models.iterdir():
+    for f in model.parent.iterdir():
         if f.is_file() and f.suffix in (".tla", ".cfg"):
             shutil.copyfile(f, dest / f.name)
-    for patch in mutant.patches:
+    for patch in patches:
         target = dest / patch.file
         if not target.is_file():
-            raise MutationError(f"{mutant.id}: no file {patch.file} in {models}")
-        target.write_text(apply_patch(target.read_text(encoding="utf-8"), patch, mutant.id), encoding="utf-8")
-    cfg = dest / f"{mutant.model}.cfg"
-    cfg.write_text(only_invariant(cfg.read_text(encoding="utf-8"), mutant.invariant), encoding="utf-8")
-    return dest / f"{mutant.model}.tla"
+            raise MutationError(f"{who}: no file {patch.file} in {model.parent}")
+        target.write_text(apply_patch(target.read_text(encoding="utf-8"), patch, who), encoding="utf-8")
+    cfg = dest / model.with_suffix(".cfg").name
+    cfg.write_text(only_invariant(cfg.read_text(encoding="utf-8"), invariant), encoding="utf-8")
+    return dest / model.name
+
+
+def materialise(mutant: Mutant, models: Path, dest: Path) -> Path:
+    """Writes the mutant (every file of `models`, patched) into `dest`; returns its .tla."""
+    return variant(models / f"{mutant.model}.tla", mutant.invariant, dest, mutant.patches, mutant.id)

@@ -74,7 +74,8 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_estop", "obs_open_a", "obs_open_b", "obs_disagree", "obs_locked", "obs_ramp",
                         "last_accepted", "jog_in_auto", "obs_guard_fault", "obs_servo_on_powered", "obs_t2",
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
-                        "obs_booted", "obs_self_test_failed")
+                        "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
+                        "obs_submit_lost", "obs_link_lost")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
@@ -111,6 +112,8 @@ class SystemStateManagerAdapter(Adapter):
             "drive_fault": rec["drive_fault"],
             # issue 17 (C24): the fieldbus/cycle watchdog input of ScanInputs.
             "fieldbus_ok": rec["fieldbus_ok"],
+            # issue 16 (C26): the operator link's heartbeat monitor.
+            "operator_link_ok": rec["operator_link_ok"],
             "q": POSE, "qd": self.speeds[rec["speed"]][0],  # type: ignore[index]
         }
         if key is not None:
@@ -159,7 +162,7 @@ class SystemStateManagerAdapter(Adapter):
                 dict(zip(SELECTOR_CONTACTS, contacts)))
         for label, level, qd in self.speeds["probes"]:
             add(f"speed: {label}", {"speed": level}, {"qd": qd})
-        for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok"):
+        for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok", "operator_link_ok"):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
         return probes
@@ -407,7 +410,7 @@ def flagship_rules(D: int, queue_capacity: int, timers: list[int]) -> type:  # n
         def command(self, kind: str, i: int) -> None:
             """One command and the cycle that pops it."""
             self._submit(kind, i)
-            self._cycle_where(lambda r: not r["drive_fault"] and r["fieldbus_ok"])
+            self._cycle_where(lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
 
         @rule(n=st.sampled_from(timers), i=st.integers(0, 7))
         def hold(self, n: int, i: int) -> None:

@@ -11,9 +11,18 @@
 
 inline std::atomic<std::uint64_t> g_allocations{0};
 inline std::atomic<bool> g_counting{false};
+// A test whose other threads allocate by design (the operator link's bridge and clients)
+// sets g_count_marked_threads_only and marks the thread it measures (the control thread).
+inline std::atomic<bool> g_count_marked_threads_only{false};
+inline thread_local bool t_marked_thread = false;
+
+inline bool counting_now() {
+  return g_counting.load(std::memory_order_relaxed) &&
+         (!g_count_marked_threads_only.load(std::memory_order_relaxed) || t_marked_thread);
+}
 
 inline void* counted_alloc(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (counting_now()) g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
@@ -21,7 +30,7 @@ inline void* counted_alloc(std::size_t size) {
 void* operator new(std::size_t size) { return counted_alloc(size); }
 void* operator new[](std::size_t size) { return counted_alloc(size); }
 void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (counting_now()) g_allocations.fetch_add(1, std::memory_order_relaxed);
   return std::malloc(size == 0 ? 1 : size);
 }
 void* operator new[](std::size_t size, const std::nothrow_t& t) noexcept { return operator new(size, t); }

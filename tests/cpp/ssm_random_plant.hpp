@@ -45,6 +45,7 @@ class RandomPlant {
     if (chance(0.05)) in_.servo_ready = chance(0.8);
     if (in_.drive_fault ? chance(0.1) : chance(0.002)) in_.drive_fault = !in_.drive_fault;
     in_.fieldbus_ok = !chance(0.0003);  // a lost EtherCAT frame / missed cycle deadline (C24)
+    in_.operator_link_ok = !chance(0.001);  // the operator client's heartbeat expired (C26)
     if (at_rest_commanded) {
       in_.qd = chance(0.002) ? kSlow : kRest;
     } else if (chance(0.05)) {

@@ -49,6 +49,7 @@ inline ScanInputs healthy(SelectorReading mode = SelectorReading::Auto) {
   in.servo_ready = true;
   in.drive_fault = false;
   in.fieldbus_ok = true;
+  in.operator_link_ok = true;
   in.q = kPose;
   in.qd = kRest;
   return in;

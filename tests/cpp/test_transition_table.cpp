@@ -20,14 +20,15 @@ using namespace safestate;  // NOLINT
 std::string two_digits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
 // Rows added by later changes take the next free number and sit where first-match needs
-// them: C24 (fieldbus loss) after C03, C25 (standstill) after C10, K36 after K02, K37 after
+// them: C24 (fieldbus loss) after C03, C25 (standstill) after C10, C26 (operator link) after C14, K36 after K02, K37 after
 // K04, K38 after K06.
-TEST(TransitionTable, RowIdsAreC01ToC25ThenK01ToK38InFirstMatchOrder) {
+TEST(TransitionTable, RowIdsAreC01ToC26ThenK01ToK38InFirstMatchOrder) {
   std::vector<std::string> expected;
   for (std::size_t i = 1; i <= 23; ++i) {
     expected.push_back("C" + two_digits(i));
     if (i == 3) expected.emplace_back("C24");
     if (i == 10) expected.emplace_back("C25");
+    if (i == 14) expected.emplace_back("C26");
   }
   for (std::size_t i = 1; i <= 35; ++i) {
     expected.push_back("K" + two_digits(i));
@@ -66,7 +67,7 @@ TEST(RSM03_StopCategories, TheTableSetsTheCategoriesOfTheDesignTriggerTable) {
       {"C02", StopUpdate::Cat0}, {"C03", StopUpdate::Cat0}, {"C04", StopUpdate::Cat0}, {"C06", StopUpdate::Cat0},
       {"C09", StopUpdate::Cat0}, {"C10", StopUpdate::Cat0}, {"C11", StopUpdate::Cat0}, {"C12", StopUpdate::Cat1},
       {"C13", StopUpdate::Cat1}, {"C14", StopUpdate::Cat1}, {"C16", StopUpdate::Cat0}, {"C20", StopUpdate::Cat0},
-      {"C24", StopUpdate::Cat0}, {"C25", StopUpdate::Cat0},
+      {"C24", StopUpdate::Cat0}, {"C25", StopUpdate::Cat0}, {"C26", StopUpdate::Cat2},
       {"K12", StopUpdate::Clear}, {"K14", StopUpdate::Cat1}, {"K20", StopUpdate::Cat2},
   };
   for (const TransitionRow& r : kTransitionTable) {
@@ -135,6 +136,7 @@ TEST(TransitionTable, RowsMatchTheDesignPage) {
       const std::string& target = cells[3];
       const StopUpdate stop = target.find("CAT0") != std::string::npos   ? StopUpdate::Cat0
                               : target.find("CAT1") != std::string::npos ? StopUpdate::Cat1
+                              : target.find("CAT2") != std::string::npos ? StopUpdate::Cat2
                                                                          : StopUpdate::Keep;
       EXPECT_EQ(r.stop, stop) << r.id;
       const bool stays = target.rfind("stay", 0) == 0 || target.rfind("`", 0) == 0 || target == "no change";

@@ -1,4 +1,6 @@
-"""Shared pytest fixtures for the model checker tests (test_checker_*.py)."""
+"""Shared pytest fixtures (docs/testing.md): small modules for the checker tests, the CLI
+in a subprocess, and `state_graph`, a model's explored state graph shared by every test
+of a session (explore a model at most once per model, cfg and checker version)."""
 
 from __future__ import annotations
 
@@ -30,6 +32,28 @@ def run_safestate(*args: str, cwd: Path | None = None) -> subprocess.CompletedPr
     env["PYTHONPATH"] = str(PYTHON_DIR) + os.pathsep + env.get("PYTHONPATH", "")
     return subprocess.run([sys.executable, "-m", "safestate.cli", *args], capture_output=True, text=True,
                           cwd=cwd, env=env, timeout=600)
+
+
+@pytest.fixture(scope="session")
+def state_graph():
+    """state_graph(tla, cfg=None) -> (Model, StateGraph): the reachable state graph of a
+    model under a cfg (its default .cfg when None).  Explored at most once: kept in memory
+    for the session, and on disk across sessions and pytest-xdist workers
+    (`conform.graph.cached_explore`, keyed by a hash of the model, the cfg and the
+    checker's sources; $SAFESTATE_CACHE_DIR).  Use it instead of running `safestate check`
+    on the same model again when a test only needs the reachable states or transitions."""
+    from safestate.checker.model import load_model
+    from safestate.conform.graph import cached_explore
+
+    memo: dict[tuple[str, str | None], tuple] = {}
+
+    def get(tla: Path | str, cfg: Path | str | None = None) -> tuple:
+        key = (str(tla), None if cfg is None else str(cfg))
+        if key not in memo:
+            model = load_model(*key)
+            memo[key] = (model, cached_explore(model))
+        return memo[key]
+    return get
 
 
 @pytest.fixture

@@ -34,7 +34,7 @@ def healthy(mode="AUTO", **overrides):
         "enabling_a": "MIDDLE" if manual else "RELEASED",
         "enabling_b": "MIDDLE" if manual else "RELEASED",
         "selector_auto": mode == "AUTO", "selector_t1": mode == "T1", "selector_t2": mode == "T2",
-        "self_test_ok": True, "servo_ready": True, "drive_fault": False, "fieldbus_ok": True,
+        "self_test_ok": True, "servo_ready": True, "drive_fault": False, "fieldbus_ok": True, "operator_link_ok": True,
         "q": POSE, "qd": REST,
     }
     inputs.update(overrides)
@@ -170,13 +170,14 @@ def test_bad_arguments_raise():
     assert m.observe()["state"] == "BOOT"  # nothing ran
 
 
-def test_transition_table_lists_c01_to_c25_and_k01_to_k38_and_matches_json_and_dot():
+def test_transition_table_lists_c01_to_c26_and_k01_to_k38_and_matches_json_and_dot():
     rows = core.transition_table()
     ids = [r["id"] for r in rows]
-    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 26)]
+    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 27)]
     assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 39)]
-    # rows added by issue 17 sit where first-match needs them
+    # rows added by issues 17 and 16 sit where first-match needs them
     assert ids[3] == "C24" and ids[ids.index("K02") + 1] == "K36" and ids[ids.index("K06") + 1] == "K38"
+    assert ids[ids.index("C14") + 1] == "C26"
     assert all(r["reason"] != "NONE" for r in rows if r["kind"] == "REJECT")
     k05 = rows[ids.index("K05")]
     assert k05["effective_source"] == ["ESTOP_RESET_NEEDED"] and k05["targets"] == ["IDLE"]

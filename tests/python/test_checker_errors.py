@@ -4,10 +4,13 @@ never a Python traceback."""
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 
 import pytest
 
-from conftest import ERRORS, load_expected, run_safestate
+from conftest import ERRORS, PYTHON_DIR, load_expected, run_safestate
 
 EXPECTED = load_expected(ERRORS)
 
@@ -50,3 +53,17 @@ def test_checker_unknown_file_is_a_clear_error(tmp_path) -> None:
 def test_checker_error_exit_code_is_tlc_exit_code(name: str) -> None:
     p = run_safestate("check", str(ERRORS / f"{name}.tla"))
     assert p.returncode == EXPECTED[name]["tlc_exit_code"], p.stdout + p.stderr
+
+
+def test_checker_output_into_a_closed_pipe_exits_quietly() -> None:
+    """`safestate check X | head -1`: the reader is gone; stop like a Unix tool, no
+    "internal error" and no traceback."""
+    rfd, wfd = os.pipe()
+    os.close(rfd)  # the reader has already exited: every write fails with EPIPE
+    env = dict(os.environ, PYTHONPATH=str(PYTHON_DIR))
+    p = subprocess.run([sys.executable, "-m", "safestate.cli", "check", str(ERRORS / "HeadOfEmpty.tla")],
+                       stdout=wfd, stderr=subprocess.PIPE, text=True, env=env, timeout=120)
+    os.close(wfd)
+    assert p.returncode == 141, p.stderr
+    # stderr carries only the progress lines (initial states), never an error
+    assert "error" not in p.stderr.lower() and "Traceback" not in p.stderr, p.stderr

@@ -290,3 +290,4 @@ def test_liveness_enabled_evaluations_do_not_keep_their_frames() -> None:
             f.enabled(state)
     assert any(f.enabled(model.successors(state)[0].state) for f in model.fairness)
     assert actions._FOUND.__traceback__ is None
+

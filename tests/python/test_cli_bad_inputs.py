@@ -112,6 +112,32 @@ def test_bad_input_gives_one_located_line_and_exit_code_2(bad_inputs, index, cap
     assert must in lines[0], f"{name}: '{must}' not in {lines[0]!r}"
 
 
+@pytest.mark.parametrize("option", ["--itf", "--graph"])
+@pytest.mark.parametrize("where", ["/proc/no-such-dir/out.json", "a directory"])
+def test_check_to_an_unwritable_output_path_fails_before_the_search(option, where, tmp_path, capsys, monkeypatch):
+    """The flagship's search takes minutes: an output path that cannot be written is
+    refused before it starts, with one line and exit code 2."""
+    import safestate.checker.cli as check_cli
+
+    def no_search(*a, **k):
+        raise AssertionError("the search ran")
+    monkeypatch.setattr(check_cli, "explore_states", no_search)
+    path = str(tmp_path) if where == "a directory" else where
+    code = main(["check", str(REPO / "models" / f"{FLAGSHIP}.tla"), option, path])
+    err = capsys.readouterr().err
+    assert code == 2, err
+    assert "Traceback" not in err
+    lines = [x for x in err.splitlines() if x.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error: ") and path in lines[0] and option in lines[0], lines
+
+
+def test_check_to_a_writable_output_path_leaves_no_empty_file(tmp_path, capsys):
+    out = tmp_path / "trace.itf.json"
+    code = main(["check", str(REPO / "models" / "PLCopenAxis.tla"), "--itf", str(out)])
+    assert code == 0, capsys.readouterr().err
+    assert not out.exists()  # no counterexample: nothing written, and the probe left nothing behind
+
+
 def test_version_and_help_list_the_exit_codes(capsys):
     with pytest.raises(SystemExit) as e:
         main(["--version"])

@@ -26,6 +26,7 @@ MUTANTS_DIR = REPO / "conform" / "cpp_mutants"
 SUBSET = ("estop_1oo2_as_xor", "t1_limit_inclusive", "tcp_speed_in_m_per_s", "selector_several_contacts_first_wins")
 
 
+
 @pytest.fixture(scope="module")
 def flagship():
     system = find("SystemStateManager", REPO / "systems")

@@ -1,5 +1,6 @@
 """`safestate conform` on the CI configuration, for every system of the registry with
-a conformance adapter (the flagship and the Safety service): the C++ agrees with the model on every
+a conformance adapter (the flagship, the Safety service, the fan controller's
+Protection and RuntimeSupervisor): the C++ agrees with the model on every
 reachable transition and under Hypothesis lockstep testing, every table row is
 taken, and a deliberately wrong C++ build is caught by both methods.
 
@@ -28,6 +29,7 @@ from safestate.systems.registry import find, load_all
 REPO = Path(__file__).resolve().parents[2]
 STEPS = int(os.environ.get("SAFESTATE_CONFORM_STEPS", "10000"))
 SYSTEMS = [s.name for s in load_all(REPO / "systems") if s.conformance is not None]
+
 
 
 @pytest.fixture(scope="module", params=SYSTEMS)
@@ -68,7 +70,8 @@ def wrong_core(system, wrong_build):
 
 
 def test_registry_lists_every_system_with_a_conformance_adapter():
-    assert {"SystemStateManager", "SafetyService", "HydraulicPress", "HydraulicPressFlat"} <= set(SYSTEMS)
+    assert {"SystemStateManager", "SafetyService", "Protection", "RuntimeSupervisor", "HydraulicPress",
+            "HydraulicPressFlat"} <= set(SYSTEMS)
 
 
 def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition(full_run, graph):
@@ -88,15 +91,20 @@ def test_table_audit_every_row_taken_except_the_declared_unreachable(full_run):
     assert len(a.rows_taken) == a.rows_total - len(h.adapter.unreachable_rows)
 
 
-def test_hypothesis_lockstep_agrees_for_at_least_10000_steps(system, model):
+def test_hypothesis_lockstep_agrees_for_the_systems_test_steps(system, model):
+    """10,000 steps, or the system's `test_hypothesis_steps` (seeded; the main job runs its
+    `hypothesis_steps`, at least 10,000)."""
+    want = system.conformance.test_hypothesis_steps or STEPS
     h = make_harness(system, model)
-    steps, failure = run_lockstep(h, model, STEPS, seed=0)
+    steps, failure = run_lockstep(h, model, want, seed=0)
     assert failure is None
-    assert steps >= STEPS
+    assert steps >= want
 
 
 def test_input_complete_pass_agrees_on_every_64th_state(system, model, graph):
     """The full pass is `safestate conform <Name> --input-complete` (the main job)."""
+    if system.name == "SystemStateManager":
+        pytest.skip("the flagship's pass runs on every 16th state in test_conform_input_complete.py")
     h = make_harness(system, model)
     if type(h.adapter).input_alphabet is Adapter.input_alphabet:
         pytest.skip(f"{system.name} defines no input alphabet")
@@ -130,7 +138,7 @@ def test_wrong_variant_is_caught_by_trace_replay(system, model, graph, wrong_cor
 
 def test_wrong_variant_is_caught_by_hypothesis(system, model, wrong_core):
     h = make_harness(system, model, system.conformance.wrong_binding)
-    steps, failure = run_lockstep(h, model, 50 * STEPS)
+    steps, failure = run_lockstep(h, model, 50 * STEPS, shrink=False)  # caught is enough here
     assert failure is not None, f"not caught in {steps} steps"
     print(failure)
     assert "MISMATCH" in failure

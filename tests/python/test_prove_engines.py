@@ -87,3 +87,10 @@ def test_untyped_variable_is_untracked_until_read(capsys) -> None:
     assert code == 0 and rep["untracked"] == ["log"]
     code, _, err = prove(capsys, spec("Untyped.tla"), "--proofs", "/dev/null", "--invariant", "Reads")
     assert code == 2 and "Untyped.tla:8:10: unsupported in proofs: a variable that TypeOK does not type" in err
+
+
+def test_empty_sequence_branch_is_refused_with_its_position(capsys) -> None:
+    code, rep, err = prove(capsys, spec("EmptySeqBranch.tla"), "--proofs", "/dev/null", "--invariant", "ShortOut")
+    assert code == 2 and rep is None
+    assert "EmptySeqBranch.tla:9:8: unsupported in proofs: cannot widen an empty sequence literal" in err
+    assert "Traceback" not in err

@@ -1,9 +1,9 @@
 """Agreement with the explicit checker: on the checked .cfg (every constant at its .cfg
-value), BMC finds each mutant of models/mutants/<Model>.toml (generated as patches into a
-temporary folder) violating its invariant, with a counterexample exactly as long as
+value), BMC finds each mutant of every registered system (systems/<Name>/system.toml
+names its mutant file; generated as patches into a temporary folder) violating its invariant, with a counterexample exactly as long as
 TLC's (BMC deepens one step at a time, so its counterexample is a shortest one).
 Mutants with counterexamples longer than MAX_BMC_LENGTH states are left to the explicit
-checker (tests/python/test_models.py), to keep the suite's time bounded."""
+checker (tests/python/test_model_mutants.py), to keep the suite's time bounded."""
 
 from __future__ import annotations
 
@@ -14,10 +14,10 @@ import pytest
 
 from prove_specs.helpers import MODELS, by_invariant, prove  # noqa: I001 (puts python/ on sys.path)
 from safestate import mutants
+from safestate.systems import registry
 
 MAX_BMC_LENGTH = 6
-ENTRIES = [m for name in ("SystemStateManager", "PLCopenAxis")
-           for m in mutants.load(Path(MODELS) / "mutants" / f"{name}.toml")
+ENTRIES = [m for s in registry.load_all(Path(MODELS).parent / "systems") for m in mutants.of_system(s)
            if m.expect == "violated" and m.trace_length and m.trace_length <= MAX_BMC_LENGTH]
 
 

@@ -16,6 +16,7 @@ import sys
 import time
 from typing import Any
 
+from ..errors import UsageError, check_writable_file, closed_stdout_exit, one_line
 from ..tla.errors import TlaError
 from . import exit_codes
 from .explore import CheckResult, explore_states, print_progress
@@ -50,12 +51,20 @@ def _workers(text: str) -> int:
 def run(args: argparse.Namespace) -> int:
     start = time.monotonic()
     try:
+        for option in ("itf", "graph"):
+            if getattr(args, option):
+                check_writable_file(getattr(args, option), f"--{option}")
+    except UsageError as e:
+        return _usage_error(args, e)
+    try:
         return _run(args, start)
     except TlaError as e:
         return _fail(args, e, start)
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        return closed_stdout_exit()
     except Exception as e:  # noqa: BLE001 - the boundary: never show a traceback
         msg = f"internal error: {type(e).__name__}: {e}"
         if args.json:
@@ -64,6 +73,15 @@ def run(args: argparse.Namespace) -> int:
         else:
             print(msg, file=sys.stderr)
         return exit_codes.ERROR
+
+
+def _usage_error(args: argparse.Namespace, e: UsageError) -> int:
+    """An unusable argument: exit code 2 (`safestate --help`), one line, before the search."""
+    if args.json:
+        print(json.dumps({"result": "error", "error": {"message": str(e), "kind": "usage", "file": None,
+                                                        "line": None, "column": None}}))
+    print(f"error: {one_line(e)}", file=sys.stderr)
+    return exit_codes.USAGE
 
 
 def _fail(args: argparse.Namespace, e: TlaError, start: float) -> int:

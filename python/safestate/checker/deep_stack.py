@@ -18,6 +18,12 @@ RECURSION_LIMIT = 120_000
 STACK_BYTES = 512 * 1024 * 1024  # reserved address space; only the pages used are allocated
 
 
+def stack_overflow_message(doing: str) -> str:
+    """TLC's StackOverflowError, in one line."""
+    return (f"recursion too deep while {doing} (TLC: StackOverflowError): a recursive operator or "
+            f"function probably does not terminate")
+
+
 def call_with_deep_stack(fn: Callable[[], T]) -> T:
     if threading.current_thread() is not threading.main_thread():
         return fn()

@@ -12,6 +12,7 @@ ERROR_SPEC_PARSE = 150       # syntax or semantic error in a module
 ERROR_CONFIG_PARSE = 151     # bad .cfg, unknown names, unsupported constructs (as TLC's "can't handle")
 ERROR_SYSTEM = 153           # memory limit reached
 ERROR = 255                  # internal error
+USAGE = 2                    # an unusable argument (unwritable --itf/--graph): `safestate --help`
 SECOND_OPINION_DISAGREES = 1  # `--tlc`: TLC's verdict or counts differ from ours
 
 BY_KIND = {
@@ -21,6 +22,7 @@ BY_KIND = {
     "cfg syntax": ERROR,
     "unsupported": ERROR_CONFIG_PARSE,
     "eval": FAILURE_SPEC_EVAL,
+    "module eval": ERROR,        # a standard module's error while computing successors (Head(<<>>))
     "invariant eval": FAILURE_SAFETY_EVAL,
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,

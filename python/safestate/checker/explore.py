@@ -23,17 +23,17 @@ verdict and trace is identical for any number of workers.
 
 from __future__ import annotations
 
-import os
 import sys
 import time
 from array import array
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from ..tla.errors import EvalError, TlaError
+from ..tla.enum_watch import ENUM_WATCH, MemoryLimitExceeded, rss_mb
+from ..tla.errors import EvalError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
 from .model import Model
-from .deep_stack import call_with_deep_stack
+from .deep_stack import call_with_deep_stack, stack_overflow_message
 
 PROGRESS_SECONDS = 5.0
 
@@ -88,10 +88,6 @@ class _Stop(Exception):
     """Ends the search: a violation, a deadlock or an error was recorded."""
 
 
-class MemoryLimitExceeded(Exception):
-    pass
-
-
 def default_memory_limit_mb() -> int:
     try:
         with open("/proc/meminfo") as f:
@@ -101,14 +97,6 @@ def default_memory_limit_mb() -> int:
     except OSError:
         pass
     return 8192
-
-
-def _rss_mb() -> float:
-    try:
-        with open("/proc/self/statm") as f:
-            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2 ** 20
-    except OSError:
-        return 0.0
 
 
 class Explorer:
@@ -131,6 +119,7 @@ class Explorer:
         self.next_check = 0
         self.last_progress = time.monotonic()
         self.head = 0
+        self.computing_init = False
         # The graph's steps as state ids, kept for liveness checking (compact arrays).
         self.live_edges = bool(model.liveness)
         self.edge_src = array("i")
@@ -152,7 +141,7 @@ class Explorer:
         return idx
 
     def _periodic(self) -> None:
-        if _rss_mb() > self.max_memory_mb:
+        if rss_mb() > self.max_memory_mb:
             raise MemoryLimitExceeded()
         now = time.monotonic()
         if self.progress is not None and now - self.last_progress >= PROGRESS_SECONDS:
@@ -216,22 +205,24 @@ class Explorer:
         m = self.m
         if RUNTIME.used:
             RUNTIME.search = self
+        ENUM_WATCH.arm(self.max_memory_mb, self.progress)
         try:
             try:
-                m.run_init(self._on_init)
+                self._initial_states()
                 self._expand_all()
             except _Stop:
                 pass
-            except MemoryLimitExceeded:
-                err = TlaError("memory", f"memory limit of {self.max_memory_mb} MB exceeded after "
-                               f"{len(self.states)} distinct states; raise it with --max-memory or "
-                               f"add a state constraint")
+            except MemoryLimitExceeded as over:
+                detail = f" ({over.where})" if over.where else ""
+                where = (f"while computing the initial states{detail}" if self.computing_init
+                         else f"after {len(self.states)} distinct states{detail}")
+                err = TlaError("memory", f"memory limit of {self.max_memory_mb} MB exceeded {where}; "
+                               f"raise it with --max-memory or add a state constraint")
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
                                            len(self.states) - self.head, error=err)
         except RecursionError:
             # TLC: "This was a Java StackOverflowError" (a recursion that does not end).
-            msg = ("recursion too deep while computing states (TLC: StackOverflowError): a recursive "
-                   "operator or function probably does not terminate")
+            msg = stack_overflow_message("computing states")
             # TLC exits with 75 when this happens in Init, with 255 (a system error) after.
             e = EvalError(msg) if not self.states else TlaError("stack overflow", msg)
             self.outcome = CheckResult("error", len(self.states), self.generated,
@@ -242,6 +233,8 @@ class Explorer:
             self.outcome = CheckResult("error", len(self.states), self.generated,
                                        self.max_level if self.generated else 0,
                                        len(self.states) - self.head, error=e)
+        finally:
+            ENUM_WATCH.disarm()
         if self.outcome is None:
             self.outcome = CheckResult("success", len(self.states), self.generated,
                                        self.max_level if self.generated else 0, 0)
@@ -251,9 +244,24 @@ class Explorer:
             self.outcome.edges = self.edges
         return self.outcome
 
+    def _initial_states(self) -> None:
+        """Init's states, with TLC's progress lines around them (it can take long)."""
+        if self.progress is not None:
+            self.progress("Computing initial states...")
+        self.computing_init = True
+        self.m.run_init(self._on_init)
+        self.computing_init = False
+        if self.progress is not None:
+            self.progress(f"Finished computing initial states: {len(self.states)} distinct "
+                          f"state{'' if len(self.states) == 1 else 's'} generated.")
+
     def _on_init(self, st: tuple, leaf: int, L: list) -> None:
         m = self.m
         self.generated += 1
+        if self.generated % 20000 == 0:
+            # Duplicates and states outside the constraints add nothing, so _add's check
+            # would not run: the memory limit and progress are checked here as well.
+            ENUM_WATCH.check("the initial states", self.generated)
         m.check_complete(st, None)
         new = True
         idx = -1
@@ -368,6 +376,8 @@ class Explorer:
         try:
             m.run_next(cur, on_succ)
         except TlaError as e:
+            if isinstance(e, ModuleEvalError):
+                e.kind = "module eval"  # TLC: the module's own error code, exit 255
             if isinstance(e, EvalError) or e.kind == "eval":
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
                                            len(self.states) - self.head - 1, error=e, trace=self.trace(i))

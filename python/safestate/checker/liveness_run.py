@@ -16,10 +16,10 @@ if TYPE_CHECKING:
 def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> None:
     """Check the model's liveness properties on the explored graph; on a violation
     set `result` to a "liveness failure" with the lasso as its trace."""
-    from .explore import _rss_mb
+    from ..tla.enum_watch import rss_mb
 
     def check_memory() -> None:
-        if _rss_mb() > explorer.max_memory_mb:
+        if rss_mb() > explorer.max_memory_mb:
             raise TlaError("memory", f"memory limit of {explorer.max_memory_mb} MB exceeded while checking "
                            f"liveness on {len(explorer.states)} states; raise it with --max-memory or add a "
                            f"state constraint")

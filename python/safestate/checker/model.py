@@ -33,7 +33,9 @@ from ..tla.resolve import check_modules
 from ..tla.tlcget import RUNTIME
 from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order, reset_token_order
 from .cfg import Config, ConfigEntry, parse_config
+from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
+from .symmetry import SymmetryReduction, permutation_group
 from .temporal import Fairness, Obligation, TemporalCompiler
 
 
@@ -74,7 +76,7 @@ class Model:
     alias: Named | None = None
     # POSTCONDITION: evaluated once after a search that found no error.
     postcondition: Named | None = None
-    symmetry: list[dict] | None = None
+    symmetry: SymmetryReduction | None = None
     leaves: list[Leaf] = field(default_factory=list)
     _init: Any = None
     _init_size: int = 0
@@ -157,11 +159,11 @@ class Model:
         return True
 
     def key(self, state: tuple) -> Any:
-        """The value TLC fingerprints: the VIEW (if any), reduced by SYMMETRY."""
-        k: Any = state if self.view is None else self.view.fn(state, None)
+        """The value TLC fingerprints: the state reduced by SYMMETRY (its smallest image),
+        then the VIEW (if any) of that."""
         if self.symmetry:
-            k = min((fmt(_permute(k, p)) for p in self.symmetry))
-        return k
+            state = self.symmetry.smallest_image(state)
+        return state if self.view is None else self.view.fn(state, None)
 
     # ---------------------------------------------------------------- evaluation API
     def eval_in_state(self, expr: str, state: tuple | None) -> Value:
@@ -192,19 +194,6 @@ class Model:
         return "\n".join(f"/\\ {n} = {fmt(v)}" for n, v in pairs)
 
 
-def _permute(v: Value, p: dict) -> Value:
-    t = type(v)
-    if t is ModelValue:
-        return p.get(v, v)
-    if t is tuple:
-        return tuple(_permute(x, p) for x in v)
-    if t is FnValue:
-        return FnValue({_permute(k, p): _permute(x, p) for k, x in v.d.items()})
-    if t is frozenset:
-        return frozenset(_permute(x, p) for x in v)
-    return v
-
-
 # ====================================================================== loading
 
 
@@ -213,7 +202,15 @@ def default_config_path(tla_path: str) -> str:
 
 
 def load_model(tla_path: str, cfg_path: str | None = None) -> Model:
-    """Parse, resolve and compile a model.  Raises `TlaError` on any problem."""
+    """Parse, resolve and compile a model.  Raises `TlaError` on any problem; a recursion
+    that does not end in an ASSUME or a constant is TLC's StackOverflowError (exit 255)."""
+    try:
+        return call_with_deep_stack(lambda: _load_model(tla_path, cfg_path))
+    except RecursionError:
+        raise TlaError("stack overflow", stack_overflow_message("loading the model")) from None
+
+
+def _load_model(tla_path: str, cfg_path: str | None) -> Model:
     RUNTIME.reset()
     RUNTIME.used = False
     module = load_module(tla_path)
@@ -477,7 +474,7 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
     return init, nexts[0]
 
 
-def _symmetry(model: Model, entry: ConfigEntry) -> list[dict]:
+def _symmetry(model: Model, entry: ConfigEntry) -> SymmetryReduction:
     sym = _lookup_def(model, entry, "symmetry")
     fn = model.compiler.evaluator(A.Name(sym.defn.loc, entry.name), model.scope)
     perms = []
@@ -489,7 +486,7 @@ def _symmetry(model: Model, entry: ConfigEntry) -> list[dict]:
         else:
             raise TlaError("config", f"The symmetry set {entry.name} must contain permutations (functions "
                            f"between model values); found {fmt(p)}", entry.loc)
-    return perms
+    return SymmetryReduction(permutation_group(perms))
 
 
 __all__ = ["Model", "Transition", "load_model", "BuiltinSym", "VarSym"]

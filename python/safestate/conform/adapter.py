@@ -180,6 +180,11 @@ class Adapter:
     def has_fast_replay(self) -> bool:
         return type(self).fast_replay is not Adapter.fast_replay
 
+    def measurements(self) -> dict[str, Any]:
+        """Figures the adapter measured on the C++ over the run (e.g. the Protection
+        adapter's worst-case response in ticks), reported by `safestate conform`."""
+        return {}
+
     def hypothesis_rules(self) -> type | None:
         """A mixin class of Hypothesis `@rule`s (see lockstep.py for the helpers it may use)."""
         return None

@@ -130,6 +130,7 @@ def _run(args: argparse.Namespace) -> int:
         "core_module": core.__name__,
         "system": system.name,
         "input_complete": complete.summary() if complete else None,
+        "measured": harness.adapter.measurements(),
         "replay_seconds": round(res.replay_seconds, 3),     # in batched binding calls
         "model_seconds": round(res.model_seconds, 3),       # materialising the model's traces
         "seconds": round(time.monotonic() - start, 3),
@@ -157,6 +158,8 @@ def _print_text(s: dict[str, Any], res: conformance.ConformResult, hyp_failure: 
           f"{' '.join(s['rows_unreachable']) or '-'}, missing: {' '.join(s['rows_missing']) or '-'}")
     if s["rows_unreachable_fired"]:
         print(f"rows declared unreachable but fired: {' '.join(s['rows_unreachable_fired'])}")
+    for key, value in s["measured"].items():
+        print(f"measured: {key}: {value}")
     print(f"seconds: {s['seconds']}")
 
 

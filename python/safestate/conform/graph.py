@@ -9,12 +9,15 @@ would not be deterministic per event).
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import json
 import os
 import pickle
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Iterator
 
 from ..checker.explore import explore_states
 from ..checker.model import Model
@@ -100,27 +103,57 @@ def graph_key(model: Model) -> str:
 
 
 def cached_explore(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
-    """`explore`, reusing the graph of an earlier run with the same `graph_key`."""
+    """`explore`, reusing the graph of an earlier run with the same `graph_key`.  Safe for
+    parallel processes (pytest-xdist workers): one explores while holding a lock beside the
+    cache file, the others wait and then read its result; the file appears atomically."""
     path = cache_dir() / f"{Path(model.module.file).stem}-{graph_key(model)}.pickle"
+    g = _read_cached(path, progress)
+    if g is not None:
+        return g
+    with _exploring(path):
+        g = _read_cached(path, progress)  # another process may have written it meanwhile
+        if g is not None:
+            return g
+        g = explore(model, progress=progress)
+        try:
+            tmp = path.with_suffix(f".{os.getpid()}.tmp")
+            with open(tmp, "wb") as f:
+                pickle.dump(g, f, protocol=pickle.HIGHEST_PROTOCOL)
+            os.replace(tmp, path)
+        except OSError:
+            pass  # a read-only cache only costs time
+    return g
+
+
+def _read_cached(path: Path, progress) -> StateGraph | None:  # type: ignore[no-untyped-def]
     try:
         with open(path, "rb") as f:
             g = pickle.load(f)
-        if isinstance(g, StateGraph):
-            if progress:
-                progress(f"conform: state graph from the cache {path}")
-            return g
     except (OSError, pickle.UnpicklingError, EOFError, AttributeError):
-        pass
-    g = explore(model, progress=progress)
+        return None
+    if not isinstance(g, StateGraph):
+        return None
+    if progress:
+        progress(f"conform: state graph from the cache {path}")
+    return g
+
+
+@contextmanager
+def _exploring(path: Path) -> Iterator[None]:
+    """An exclusive lock on `path`.lock for the time of one exploration (none when the
+    cache folder cannot be written: then each process explores on its own)."""
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        with open(tmp, "wb") as f:
-            pickle.dump(g, f, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(tmp, path)
+        lock = open(path.with_suffix(".lock"), "a")
     except OSError:
-        pass  # a read-only cache only costs time
-    return g
+        yield
+        return
+    with lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
 
 
 def load(model: Model, path: str) -> StateGraph:

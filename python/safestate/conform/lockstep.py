@@ -18,7 +18,7 @@ import os
 from collections.abc import Callable
 from typing import Any
 
-from hypothesis import HealthCheck, settings
+from hypothesis import HealthCheck, Phase, settings
 from hypothesis import seed as hypothesis_seed
 from hypothesis import strategies as st
 from hypothesis.stateful import RuleBasedStateMachine, invariant, rule, run_state_machine_as_test
@@ -107,10 +107,15 @@ def _base_machine(h: Harness, initial: tuple, count: Counter) -> type[RuleBasedS
 
 def run_lockstep(h: Harness, model: Model, min_steps: int, profile: str | None = None,
                  progress: Callable[[str], None] | None = None,
-                 seed: int | None = None) -> tuple[int, str | None]:
-    """Run until at least `min_steps` steps; (steps, failure report or None)."""
+                 seed: int | None = None, shrink: bool = True) -> tuple[int, str | None]:
+    """Run until at least `min_steps` steps; (steps, failure report or None).
+
+    shrink=False reports the first failing run as found: for a caller that only needs to
+    know a wrong build is caught (shrinking can cost minutes), not a minimal reproducer."""
     profile = profile or os.environ.get(PROFILE_ENV, "default")
     s = settings.get_profile(f"safestate-{profile}")
+    if not shrink:
+        s = settings(s, phases=[p for p in Phase if p is not Phase.shrink])
     count = Counter()
     machine = make_machine(h, model, count)
     batch = 0
@@ -120,7 +125,8 @@ def run_lockstep(h: Harness, model: Model, min_steps: int, profile: str | None =
         try:
             run_state_machine_as_test(machine, settings=s)
         except AssertionError:
-            return count.steps, f"Hypothesis (shrunk):\n{count.failure}"
+            found = "shrunk" if shrink else "first failing run, not shrunk"
+            return count.steps, f"Hypothesis ({found}):\n{count.failure}"
         batch += 1
         if progress:
             progress(f"conform: hypothesis {count.steps} steps ({batch} batches)")

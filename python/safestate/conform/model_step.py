@@ -30,7 +30,7 @@ class ModelStepper:
         self._defs: dict[str, Callable[[tuple], Value]] = {}
         self._applied: dict[str, Callable[[tuple, Value], Value]] = {}
         self.calls = 0
-        self._actions: dict[tuple[str, tuple[str, ...]], Callable[[tuple, list], list[tuple]]] = {}
+        self._actions: dict[tuple[str, tuple[str, ...]], Callable[[tuple, list], list[tuple]] | None] = {}
 
     def transitions(self, state: tuple) -> list[tuple[Event, tuple]]:
         return [(Event.of(t.action, t.params), t.state) for t in self.model.successors(state)]
@@ -50,10 +50,13 @@ class ModelStepper:
         self.calls += 1
         names = tuple(k for k, _ in event.params)
         key = (event.action, names)
-        run = self._actions.get(key)
+        if key not in self._actions:
+            self._actions[key] = self._compile_action(event.action, names)
+        run = self._actions[key]
         if run is None:
-            run = self._actions[key] = self._compile_action(event.action, names)
-        found = run(state, [v for _, v in event.params])
+            return self.successor(state, event)
+        values = dict(event.params)
+        found = run(state, [values[n] for n in self._call_order(event.action, names)])
         if len(found) != 1:
             raise ModelStepError(f"action {event} has {len(found)} successors in this state")
         return found[0]
@@ -70,9 +73,23 @@ class ModelStepper:
         env = Env(self.model.scope, frame).bind(**{n: SlotLocal(sl) for n, sl in zip(names, slots)})
         return env, frame, slots
 
-    def _compile_action(self, action: str, names: tuple[str, ...]) -> Callable[[tuple, list], list[tuple]]:
-        env, frame, slots = self._bound(names)
-        body = self._parse(f"{action}({', '.join(names)})" if names else action)
+    def _call_order(self, action: str, names: tuple[str, ...]) -> tuple[str, ...]:
+        """The event's parameter names in the order of the action's formal parameters
+        (an event keeps them sorted by name; Tick(t, v, ok, clr) must get them in order)."""
+        if len(names) < 2:
+            return names
+        sym = self.model.scope.lookup(action)
+        formals = tuple(p.name for p in getattr(getattr(sym, "defn", None), "params", ()))
+        return formals if sorted(formals) == sorted(names) else ()
+
+    def _compile_action(self, action: str, names: tuple[str, ...]) -> Callable[[tuple, list], list[tuple]] | None:
+        """The action called with the event's parameters; None when they cannot be matched
+        to its formal parameters by name (then the whole next-state relation is used)."""
+        order = self._call_order(action, names)
+        if len(order) != len(names):
+            return None
+        env, frame, slots = self._bound(order)
+        body = self._parse(f"{action}({', '.join(order)})" if order else action)
         out: list[tuple] = []
         code = ActionCompiler(self.model.compiler).action(body, env, lambda s, t, L: out.append(tuple(t)))
         nvars = len(self.model.variables)

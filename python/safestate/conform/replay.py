@@ -16,10 +16,19 @@ from collections import Counter
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..tla.values import fmt
 from .adapter import Adapter, differing
 from .diff import report
 from .events import Event
 from .model_step import ModelStepper
+
+
+def describe(event: Event) -> str:
+    """The event as a report shows it: with parameter names when there are several (an
+    Event keeps them sorted by name, not in the action's order)."""
+    if len(event.params) < 2:
+        return str(event)
+    return f"{event.action}({', '.join(f'{k}={fmt(v)}' for k, v in event.params)})"
 
 
 @dataclass
@@ -32,7 +41,7 @@ class Mismatch:
     text: str = ""            # the rendered report
 
     def render(self) -> str:
-        return self.text or report(self.step, str(self.event), self.model, self.cpp, self.message)
+        return self.text or report(self.step, describe(self.event), self.model, self.cpp, self.message)
 
 
 @dataclass

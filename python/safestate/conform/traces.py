@@ -5,6 +5,7 @@ along a path can differ from the node's representative in what the VIEW leaves o
 (e.g. last_reject_reason), and the C++ must match the concrete one.  So each step's
 state is the model successor of the previous concrete state under the edge's event
 (`ModelStepper.successor`), and its VIEW is checked to be the edge's target node.
+Without a VIEW the node is the concrete state, and the checker's edge is used as it is.
 
 Every trace starts with the BFS-tree path to a node; the concrete states along
 tree paths are the same for every trace, so they are computed once per node.
@@ -44,6 +45,8 @@ class Materializer:
         self.parent = [-1] * len(graph.states)
         self.tree: dict[int, tuple] = {}  # node -> concrete state at the end of its tree path
         self._keys: dict[int, object] = {}
+        # The checker found each edge's successor; only a VIEW can make it differ from the node.
+        self.no_view = stepper.model.view is None
 
     def set_tree(self, parent: list[int]) -> None:
         self.parent = parent
@@ -65,6 +68,8 @@ class Materializer:
             ev, dst = g.events[e], g.dst[e]
             on_tree = on_tree and self.parent[dst] == e
             nxt = self.tree.get(dst) if on_tree else None
+            if nxt is None and self.no_view:
+                nxt = g.states[dst]  # without a VIEW the node is the concrete state itself
             if nxt is None:
                 nxt = self.stepper.edge_successor(cur, ev)
                 self._check(nxt, dst)

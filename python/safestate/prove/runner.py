@@ -1,6 +1,13 @@
 """Runs the proof of each requested invariant with its engine, and confirms
 inconclusive inductions with BMC (a counterexample to induction is a
-violation only when BMC reaches it)."""
+violation only when BMC reaches it).
+
+Invariants proved by k-induction with the same k and the same strengthening are first
+proved together: one induction of their conjunction (Init => Q, Q /\\ Next => Q', Q the
+conjunction with the strengthening) proves each of them, at the cost of one proof instead
+of one per invariant.  When the joint proof fails, each invariant of the group is proved
+on its own, so a failing invariant is still reported by name with its own trace or
+counterexample to induction."""
 
 from __future__ import annotations
 
@@ -15,7 +22,7 @@ from .engines.pdr import pdr
 from .engines.result import Result
 from .plan import Plan, Step
 from .system import System
-from .vacuity import vacuity
+from .vacuity import vacuity, vacuity_of_group
 from .welldefined import Parts, first_on_trace, failing_under, parts_of, reach
 
 DEFAULT_DEPTH = {"bmc": 20, "kind": 4, "pdr": 0}
@@ -27,13 +34,22 @@ def prove_all(sys: System, invariants: list[str], plan: Plan, engine: str | None
               log: Callable[[str], None]) -> list[Result]:
     results = []
     bmc_batch = []
+    kind_groups: dict[tuple[int, tuple[str, ...]], list[str]] = {}
     for inv in invariants:
         step = plan.steps.get(inv, Step(inv))
         eng = engine or step.engine
         if eng == "bmc":
             bmc_batch.append(inv)
+        elif eng == "kind":
+            kind_groups.setdefault((_kind_depth(step, depth), tuple(step.strengthen)), []).append(inv)
+        else:
+            results.append(_prove_one(sys, inv, step, eng, depth, log))
+    for (k, strengthen), group in kind_groups.items():
+        joint = _prove_jointly(sys, group, list(strengthen), k, log) if len(group) > 1 else None
+        if joint is not None:
+            results.extend(joint)
             continue
-        results.append(_prove_one(sys, inv, step, eng, depth, log))
+        results.extend(_prove_one(sys, inv, plan.steps.get(inv, Step(inv)), "kind", depth, log) for inv in group)
     if bmc_batch:
         k = depth if depth is not None else DEFAULT_DEPTH["bmc"]
         with_obligations = {n: sys.predicate_obligations(n) for n in bmc_batch}
@@ -44,16 +60,63 @@ def prove_all(sys: System, invariants: list[str], plan: Plan, engine: str | None
     return sorted(results, key=lambda r: order[r.invariant])
 
 
+def _kind_depth(step: Step, depth: int | None) -> int:
+    return depth if depth is not None else (step.k or DEFAULT_DEPTH["kind"])
+
+
+def _strengthening(sys: System, names: list[str]) -> dict[str, z3.BoolRef]:
+    return {label: f for n in names for label, f in sys.conjuncts(n).items()}
+
+
+def _prove_jointly(sys: System, group: list[str], strengthen: list[str], k: int,
+                   log: Callable[[str], None]) -> list[Result] | None:
+    """One k-induction of the conjunction of `group`, then the well-definedness
+    obligations of Init, Next, the invariants and the strengthening checked once for the
+    whole group under the joint inductive invariant, and the vacuity of each: a Result
+    per invariant when all of that holds, None when not (the caller then proves each
+    invariant on its own, which names the failing one with its trace)."""
+    t0 = time.monotonic()
+    with_obligations = {inv: sys.predicate_obligations(inv) for inv in group}
+    first, *rest = group
+    strengthening = _strengthening(sys, strengthen)
+    res = kinduction(sys, first, with_obligations[first][0],
+                     {**{inv: with_obligations[inv][0] for inv in rest}, **strengthening}, k, log)
+    if res.status != "proved":
+        log(f"joint induction of {len(group)} invariants: {res.status}; proving each on its own")
+        return None
+    log(f"joint induction of {len(group)} invariants: proved ({time.monotonic() - t0:.1f}s); "
+        "well-definedness and vacuity")
+    q = z3.And([p for p, _ in with_obligations.values()] + [sys.domain] + list(strengthening.values()))
+    parts = parts_of(sys, {**{inv: obligations for inv, (_, obligations) in with_obligations.items()},
+                           **{n: sys.predicate_obligations(n)[1] for n in strengthen}})
+    failing = failing_under(sys, q, parts)
+    if failing:
+        log(f"joint induction of {len(group)} invariants: {len(failing)} well-definedness obligation(s) "
+            f"fail in the joint invariant (first: {failing[0].describe()}); proving each on its own")
+        return None
+    vacuous = vacuity_of_group(sys, group, q)
+    seconds = time.monotonic() - t0
+    note = f"proved in one induction with the {len(group) - 1} other invariants of the same k and strengthening"
+    log(f"joint induction of {len(group)} invariants: proved, {parts.count()} well-definedness obligations "
+        f"hold ({seconds:.1f}s)")
+    results = []
+    for inv in group:
+        r = Result(inv, "proved", "kind", res.k, seconds, note=note, obligations=parts.count())
+        if vacuous[inv]:
+            r.status, r.vacuity, r.note = "vacuous", vacuous[inv], "; ".join(vacuous[inv])
+        results.append(r)
+    return results
+
+
 def _prove_one(sys: System, inv: str, step: Step, eng: str, depth: int | None, log) -> Result:
     p, obligations = sys.predicate_obligations(inv)
     predicates = {inv: obligations, **{n: sys.predicate_obligations(n)[1] for n in step.strengthen}}
     parts = parts_of(sys, predicates)
     t0 = time.monotonic()
-    strengthen = {label: f for n in step.strengthen for label, f in sys.conjuncts(n).items()}
+    strengthen = _strengthening(sys, step.strengthen)
     q = z3.And([p, sys.domain] + list(strengthen.values()))
     if eng == "kind":
-        k = depth if depth is not None else (step.k or DEFAULT_DEPTH["kind"])
-        res = kinduction(sys, inv, p, strengthen, k, log)
+        res = kinduction(sys, inv, p, strengthen, _kind_depth(step, depth), log)
     else:
         res = pdr(sys, inv, p, step.timeout or PDR_TIMEOUT, log)
     if res.status != "proved" and res.trace is None:

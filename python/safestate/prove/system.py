@@ -63,6 +63,7 @@ class System:
     _copies: dict[int, list[z3.ExprRef]] = field(default_factory=dict)
     _aux: dict[int, list[z3.ExprRef]] = field(default_factory=dict)
     _base_quantified: bool | None = None
+    _predicates: dict[str, tuple[z3.BoolRef, list[Obligation]]] = field(default_factory=dict)
 
     # ----------------------------------------------------------- formulas
     def predicate(self, name: str) -> z3.BoolRef:
@@ -70,12 +71,16 @@ class System:
         return self.predicate_obligations(name)[0]
 
     def predicate_obligations(self, name: str) -> tuple[z3.BoolRef, list[Obligation]]:
-        """A state predicate and the well-definedness obligations of evaluating it."""
+        """A state predicate and the well-definedness obligations of evaluating it
+        (translated once: a joint proof and its vacuity check ask again)."""
+        if name in self._predicates:
+            return self._predicates[name]
         sym = self.scope.lookup(name)
         if not isinstance(sym, DefSym) or sym.defn.params:
             raise TlaError("config", f"{name} is not a state predicate of {self.module.name}", None)
         with self.tr.obl.capture() as obligations:
             f = self.tr.boolean(sym.defn.body, Ctx(self.scope, {}, False))
+        self._predicates[name] = (f, obligations)
         return f, obligations
 
     def implications(self, name: str) -> list[tuple[str, z3.BoolRef]]:

@@ -242,7 +242,7 @@ def ite(c: z3.BoolRef, a: Any, b: Any, loc: Loc | None = None) -> Any:
         if not sa.items or not sb.items:  # << >>: its slots are irrelevant, borrow the other's
             sa = SeqV(sb.items, sa.length) if not sa.items else sa
             sb = SeqV(sa.items, sb.length) if not sb.items else sb
-        sa, sb = pad(sa, cap), pad(sb, cap)
+        sa, sb = pad(sa, cap, loc), pad(sb, cap, loc)
         return SeqV(tuple(ite(c, x, y, loc) for x, y in zip(sa.items, sb.items)), z3.If(c, sa.length, sb.length))
     if isinstance(a, Fn) and isinstance(b, Fn):
         if set(a.keys) != set(b.keys):
@@ -253,12 +253,14 @@ def ite(c: z3.BoolRef, a: Any, b: Any, loc: Loc | None = None) -> Any:
     raise ProveError(f"IF/CASE branches of different kinds ({kind(a)} and {kind(b)})", loc)
 
 
-def pad(s: SeqV, cap: int) -> SeqV:
-    """`s` with `cap` slots (new slots repeat the last one: their content is irrelevant)."""
+def pad(s: SeqV, cap: int, loc: Loc | None = None) -> SeqV:
+    """`s` with `cap` slots (new slots repeat the last one: their content is irrelevant);
+    `loc` is the IF/CASE whose branches need the common width."""
     if s.cap >= cap:
         return s
     if s.cap == 0:
-        raise ProveError("cannot widen an empty sequence literal to a bounded sequence without a shape")
+        raise ProveError("cannot widen an empty sequence literal to a bounded sequence without a shape "
+                         "(the other branch of this IF/CASE is a non-empty sequence)", loc)
     return SeqV(s.items + (s.items[-1],) * (cap - s.cap), s.length)
 
 

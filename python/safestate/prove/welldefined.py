@@ -29,7 +29,9 @@ class Parts:
     predicates: dict[str, list[Obligation]] = field(default_factory=dict)
 
     def count(self) -> int:
-        return len(self.init) + len(self.trans) + sum(len(v) for v in self.predicates.values())
+        """How many obligations: Init's, and the distinct sites of Next and the predicates."""
+        rest = [*self.trans, *(o for v in self.predicates.values() for o in v)]
+        return len(self.init) + len({o.cond.get_id() for o in rest})
 
 
 @dataclass
@@ -50,30 +52,56 @@ def parts_of(sys: System, predicates: dict[str, list[Obligation]]) -> Parts:
 
 
 def failing_under(sys: System, q: z3.BoolRef, parts: Parts) -> list[Undefined]:
-    """The obligations that fail in some state of Q (Init's: under the ASSUMEs only)."""
-    out = _failing(sys, [sys.assumptions], parts.init, "Init")
-    out += _failing(sys, [sys.assumptions, q], parts.trans, "Next")
-    for name, obligations in parts.predicates.items():
-        out += _failing(sys, [sys.assumptions, q], obligations, name)
+    """The obligations that fail in some state of Q (Init's: under the ASSUMEs only).
+
+    One solver context for all of them: the ASSUMEs asserted once, Init's obligations
+    checked first, then Q added and Next's and every predicate's checked together; a
+    site shared by several parts (an operator used by Next and by two invariants) is one
+    obligation, checked once, and reported for the first part that has it."""
+    everything = [o.cond for o in parts.init] + [o.cond for o in parts.trans] + \
+        [o.cond for obligations in parts.predicates.values() for o in obligations]
+    s = sys.solver(q, *everything)
+    s.add(sys.assumptions)
+    out = _failing(sys, s, [(o, "Init") for o in parts.init])
+    s.add(q)
+    tagged = [(o, "Next") for o in parts.trans]
+    tagged += [(o, name) for name, obligations in parts.predicates.items() for o in obligations]
+    return out + _failing(sys, s, _one_per_site(tagged))
+
+
+def _one_per_site(tagged: list[tuple[Obligation, str]]) -> list[tuple[Obligation, str]]:
+    seen: set[int] = set()
+    out = []
+    for o, part in tagged:
+        key = o.cond.get_id()
+        if key not in seen:
+            seen.add(key)
+            out.append((o, part))
     return out
 
 
-def _failing(sys: System, context: list[z3.BoolRef], obligations: list[Obligation], part: str) -> list[Undefined]:
+def _failing(sys: System, s: z3.Solver, tagged: list[tuple[Obligation, str]]) -> list[Undefined]:
+    """The obligations of `tagged` some model of the solver's context violates: one query
+    for all of them (unsat: all hold), and one more per batch of violated ones found."""
     found: list[Undefined] = []
-    open_ = list(obligations)
+    open_ = list(tagged)
     while open_:
-        s = sys.solver(*context, *(o.cond for o in open_))
-        s.add(*context)
-        s.add(z3.Not(z3.And([o.cond for o in open_])))
-        if s.check() != z3.sat:
+        s.push()
+        s.add(z3.Not(z3.And([o.cond for o, _ in open_])))
+        r = s.check()
+        m = s.model() if r == z3.sat else None
+        s.pop()
+        if r == z3.unknown:  # not proved: every open obligation counts as failing (no state to show)
+            found.extend(Undefined(o, part) for o, part in open_)
             break
-        m = s.model()
-        bad = [o for o in open_ if not z3.is_true(m.eval(o.cond, model_completion=True))]
+        if m is None:
+            break
+        bad = [(o, part) for o, part in open_ if not z3.is_true(m.eval(o.cond, model_completion=True))]
         if not bad:
             break
-        state = sys.state_values(m, None)
-        found.extend(Undefined(o, part, state=state, params=sys.param_values(m)) for o in bad)
-        open_ = [o for o in open_ if all(o is not b for b in bad)]
+        state, params = sys.state_values(m, None), sys.param_values(m)
+        found.extend(Undefined(o, part, state=state, params=params) for o, part in bad)
+        open_ = [t for t in open_ if all(t[0] is not b for b, _ in bad)]
     return found
 
 

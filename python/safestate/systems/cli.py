@@ -29,6 +29,18 @@ def _file(p: Path | None) -> str:
     return "ok" if p.is_file() else "missing"
 
 
+def _mutant_count(s: System) -> str:
+    """How many mutants the system declares ("-": no file named, else why not)."""
+    from .. import mutants
+
+    if s.mutants is None:
+        return "-"
+    try:
+        return str(len(mutants.of_system(s)))
+    except mutants.MutationError as e:
+        return f"error ({e})"
+
+
 def status(s: System) -> dict[str, Any]:
     from ..conform.adapter import Adapter
 
@@ -36,7 +48,7 @@ def status(s: System) -> dict[str, Any]:
         "name": s.name, "summary": s.summary, "manifest": str(s.manifest.relative_to(s.root)),
         "design": _file(s.design), "model": _file(s.model),
         "configs": "ok" if all(c.is_file() for c in s.configs) else "missing",
-        "proofs": _file(s.proofs), "mutants": _file(s.mutants),
+        "proofs": _file(s.proofs), "mutants": _mutant_count(s),
         "requirements": s.requirements,
     }
     if s.conformance is None:

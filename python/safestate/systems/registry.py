@@ -34,6 +34,7 @@ class Conformance:
     adapter_class: str            # class in it
     config: Path | None = None    # the cfg conformance runs against (default: the system's ci_config)
     hypothesis_steps: int = 0     # Hypothesis lockstep steps of the main job
+    test_hypothesis_steps: int = 0  # fewer (seeded) steps in the test suite; 0: the suite's default
 
     @property
     def wrong_binding(self) -> str:
@@ -141,7 +142,8 @@ def load_manifest(path: Path) -> System:
                            adapter=path.parent / _req(c, "adapter", str, where),
                            adapter_class=_req(c, "class", str, where),
                            config=rel(c["config"]) if "config" in c else None,
-                           hypothesis_steps=int(c.get("hypothesis_steps", 0)))
+                           hypothesis_steps=int(c.get("hypothesis_steps", 0)),
+                           test_hypothesis_steps=int(c.get("test_hypothesis_steps", 0)))
     configs = [rel(p) for p in _req(doc, "configs", list, path)]
     return System(
         name=_req(doc, "name", str, path),

@@ -17,14 +17,14 @@ Continuations are fixed at compile time, so no closures are built while explorin
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable
 
 from . import ast as A
 from .compiler import Compiler, _enum_checked, _prefix, all_names, check_bool
 from .compiler import _assign as assign_binder
 from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
-from .errors import EvalError, Loc, TlaError, UnsupportedError
+from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
 from .values import LazySet, member, values_equal
@@ -348,10 +348,16 @@ class ActionCompiler:
             sym = env.scope.lookup(e.name)
             if isinstance(sym, VarSym):
                 return sym.index, sym.name
+            slot = self._scratch(sym, env)
+            if slot is not None:
+                return slot, e.name
         named = self._named_expr(e, env)
         if named is not None and depth < 20:
             return self._var_of(named[0], named[1], depth + 1)
         return None
+
+    def _scratch(self, sym: Any, env: Env) -> int | None:
+        return self.c.scratch_slot(sym, env) if isinstance(sym, SubstSym) and not env.init_mode else None
 
     @staticmethod
     def _named_expr(e: A.Expr, env: Env) -> tuple[A.Expr, Env] | None:
@@ -415,6 +421,10 @@ class ActionCompiler:
         (or tested), a tuple is taken element by element, names without
         arguments are expanded; anything else (an operator application too)
         compares e with e'."""
+        if isinstance(e, A.Name) and e.name not in env.locals:
+            slot = self._scratch(env.scope.lookup(e.name), env)
+            if slot is not None:  # ENABLED: the substituted expression's current value
+                return self._assign(slot, self.c.expr(e, replace(env, primed=False)), k, e.loc)
         idx = self._unchanged_vars(e, env, 0)
         if idx is not None:
             for i in reversed(idx):
@@ -446,7 +456,7 @@ class ActionCompiler:
             return out
         var = self._var_of(e, env)
         if var is not None:
-            return [var[0]]
+            return [var[0]] if var[0] < len(self.c.var_names) else None  # a scratch one: see `unchanged`
         named = self._named_expr(e, env)
         if named is not None:
             return self._unchanged_vars(named[0], named[1], depth + 1)
@@ -590,8 +600,14 @@ def compile_enabled(compiler: Compiler, arg: A.Expr, env: Env) -> Code:
     """``ENABLED A``: does A have a successor from the current state?"""
     if env.init_mode:
         raise UnsupportedError("ENABLED in the initial predicate", arg.loc)
-    act = ActionCompiler(compiler).action(arg, env, _found)
-    n = len(compiler.var_names)
+    outer = compiler.enabled_scratch
+    scratch: dict[str, int] = {}
+    compiler.enabled_scratch = scratch
+    try:
+        act = ActionCompiler(compiler).action(arg, env, _found)
+    finally:
+        compiler.enabled_scratch = outer
+    n = len(compiler.var_names) + len(scratch)
 
     def enabled(s: Any, t: Any, L: list) -> bool:
         t2 = [UNSET] * n
@@ -602,6 +618,11 @@ def compile_enabled(compiler: Compiler, arg: A.Expr, env: Env) -> Code:
             # it holds) onto the previous ones.
             _FOUND.__traceback__ = None
             return True
+        except UnassignedPrimeError as e:
+            # e.g. done' = TRUE where an INSTANCE substitutes an expression for done: TLC
+            # binds the instanced module's own variable done (docs/tla-subset.md).
+            raise UnsupportedError(f"ENABLED of an action that tests a primed expression before its "
+                                   f"variables are assigned is not supported ({e.loc}: {e.message})", arg.loc) from None
         return False
     return enabled
 

@@ -22,7 +22,7 @@ from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
-from .errors import EvalError, Loc, TlaError, UnsupportedError
+from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym, let_instance_scope
 from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
@@ -373,6 +373,9 @@ class Compiler:
         if isinstance(sym, BuiltinSym):
             return self._call_builtin(sym, args, env, loc)
         if isinstance(sym, SubstSym):
+            slot = self.scratch_slot(sym, env) if env.primed and not args else None
+            if slot is not None:
+                return self._next_var(slot, sym.name, loc)
             sub_env = Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
                                                   if p in env.locals}, env.init_mode, env.primed)
             if args:
@@ -381,6 +384,25 @@ class Compiler:
         if isinstance(sym, InstanceSym):
             raise TlaError("semantic", f"{name} is an instance; use {name}!Op", loc)
         raise self._unknown(name, loc)
+
+    # ENABLED computed as TLC does for an instanced module's variable that is
+    # substituted by an expression (done <- flag = 1 /\ tok = "w"): TLC's getPrimedVar
+    # stops at the substitution, so done' is a variable of its own in ENABLED's scratch
+    # state, assigned by done' = e and UNCHANGED done, read by done' elsewhere.
+    enabled_scratch: dict[str, int] | None = None
+
+    def scratch_slot(self, sym: SubstSym, env: Env) -> int | None:
+        """The scratch slot of `sym`'s primed value while compiling an ENABLED, if any."""
+        scratch = self.enabled_scratch
+        if scratch is None or not sym.variable:
+            return None
+        e = sym.expr
+        if isinstance(e, A.Name) and isinstance(sym.scope.lookup(e.name), (VarSym, SubstSym)):
+            return None  # a variable (or a further substitution): primed as usual
+        slot = scratch.get(sym.name)
+        if slot is None:
+            slot = scratch[sym.name] = len(self.var_names) + len(scratch)
+        return slot
 
     def _apply_operator_expr(self, op: A.Expr, args: list[A.Expr], op_env: Env, env: Env, loc: Loc) -> Code:
         """Apply an operator given as an expression (a substituted operator constant)."""
@@ -459,6 +481,15 @@ class Compiler:
         # An action-level argument (Send(p, x, x')) is passed by name, as TLC expands
         # the operator: its body may assign the primed variable.
         action_arg = any(self.info(a, env).action for a in args if not isinstance(a, A.Lambda))
+        # A recursive operator cannot be expanded at its call site; a state-level one is
+        # called instead: on the next state under a prime or in Init, else on the current
+        # state with arguments such as Len(log') evaluated first (TLC reads the body's
+        # unprimed variables in the current state too).
+        by_call = sym.recursive and not (info.action or sym.scope.parameterised)
+        if by_call and info.vars and (init or env.primed):
+            return self._call_on_next_state(sym, args, env, loc)
+        if by_call and action_arg and not (init or env.primed):
+            action_arg = False
         if info.action or sym.scope.parameterised or init or action_arg or (env.primed and info.vars):
             pre, body = self.inline_def(sym, args, env, loc, self.expr)
             return _prefix(pre, body)
@@ -491,6 +522,26 @@ class Compiler:
             a0, a1 = arg_codes
             return lambda s, t, L: holder.body(s, t, [a0(s, t, L), a1(s, t, L)] + pad)
         return lambda s, t, L: holder.body(s, t, [a(s, t, L) for a in arg_codes] + pad)
+
+    def _call_on_next_state(self, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
+        """A recursive state-level operator under a prime (``Sum(n)'``) or in Init: it
+        cannot be expanded at its call site, so its compiled body is run with the state
+        being built (or the next state) in place of the current one; its arguments are
+        compiled in the caller's primed (or Init) environment."""
+        arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, sym.defn.params)]
+        holder = self._compiled_def(sym)
+        names = self.var_names
+        reads = sorted(i for i in self.def_info(sym).vars if i >= 0)
+        mark = "" if env.init_mode else "'"
+
+        def call(s: Any, t: Any, L: list) -> Value:
+            for i in reads:
+                if t[i] is UNSET:
+                    raise UnassignedPrimeError(f"The variable {names[i]}{mark} is used before it is assigned a "
+                                               f"value", loc)
+            frame = [a(s, t, L) for a in arg_codes]
+            return holder.body(t, None, frame + [None] * (holder.size - len(frame)))
+        return call
 
     def _compiled_def(self, sym: DefSym) -> "CompiledDef":
         if sym.compiled is None:
@@ -1385,8 +1436,8 @@ class Compiler:
                 raise EvalError(f"{name}' evaluated outside an action", loc)
             v = t[i]
             if v is UNSET:
-                raise EvalError(f"The variable {name}{'' if init else chr(39)} is used before it is assigned "
-                                f"a value", loc)
+                raise UnassignedPrimeError(f"The variable {name}{'' if init else chr(39)} is used before it is "
+                                           f"assigned a value", loc)
             return v
         return next_var
 

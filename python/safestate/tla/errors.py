@@ -52,6 +52,16 @@ class EvalError(TlaError):
         super().__init__("eval", message, loc)
 
 
+class ModuleEvalError(EvalError):
+    """An error TLC raises inside a standard module's Java code (Head of <<>>, \\div 0,
+    % 0): TLC exits with 255 for it while computing successors (75 in Init, 76 in an
+    invariant, like any evaluation error)."""
+
+
+class UnassignedPrimeError(EvalError):
+    """x' read before the action has given it a value."""
+
+
 class UnsupportedError(TlaError):
     """A construct outside the supported subset (see docs/tla-subset.md)."""
 

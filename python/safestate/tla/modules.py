@@ -240,6 +240,7 @@ class SubstSym:
     expr: A.Expr
     scope: "Scope"
     instance_params: tuple[str, ...] = ()
+    variable: bool = False  # a VARIABLE (not a CONSTANT) of the instanced module
 
 
 @dataclass(eq=False)
@@ -311,14 +312,15 @@ def _add_builtins(scope: Scope, module: dict[str, Builtin]) -> None:
         scope.names.setdefault(name, BuiltinSym(b))
 
 
-def instance_parameters(mod: A.Module, loader: ModuleLoader) -> list[A.Param]:
-    """CONSTANTs and VARIABLEs of `mod`, including those of modules it EXTENDS."""
+def instance_parameters(mod: A.Module, loader: ModuleLoader, variables_only: bool = False) -> list[A.Param]:
+    """CONSTANTs and VARIABLEs of `mod` (only its VARIABLEs if `variables_only`),
+    including those of modules it EXTENDS."""
     out: list[A.Param] = []
     for name, loc in mod.extends:
         ext = loader.find(name, loc)
         if not isinstance(ext, dict):
-            out.extend(instance_parameters(ext, loader))
-    return out + mod.constants + mod.variables
+            out.extend(instance_parameters(ext, loader, variables_only))
+    return out + ([] if variables_only else mod.constants) + mod.variables
 
 
 def let_instance_scope(scope: Scope, inst: A.InstanceDef, let_locals: tuple[str, ...]) -> Scope:
@@ -340,11 +342,12 @@ def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str], let_locals:
     params = tuple(p.name for p in inst.params) + let_locals
     explicit = dict(inst.substs)
     substs: dict[str, SubstSym] = {}
+    variables = {p.name for p in instance_parameters(target, scope.loader, variables_only=True)}
     for p in instance_parameters(target, scope.loader):
         if p.name in explicit:
-            substs[p.name] = SubstSym(p.name, explicit[p.name], scope, params)
+            substs[p.name] = SubstSym(p.name, explicit[p.name], scope, params, p.name in variables)
         elif p.name in params or scope.lookup(p.name) is not None:
-            substs[p.name] = SubstSym(p.name, A.Name(inst.loc, p.name), scope, params)
+            substs[p.name] = SubstSym(p.name, A.Name(inst.loc, p.name), scope, params, p.name in variables)
         else:
             raise TlaError("semantic", f"INSTANCE of {inst.module} has no substitution for {p.name} and "
                            f"the instantiating module declares no {p.name}", inst.loc)

@@ -14,11 +14,11 @@ import sys
 from dataclasses import dataclass
 from typing import Callable
 
-from .errors import AssertFailure, EvalError
+from .errors import AssertFailure, EvalError, ModuleEvalError
 from .tlcget import tlc_get, tlc_set
 from .values import (
     BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
-    iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
+    is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
 )
 
 
@@ -70,14 +70,14 @@ def power(a: Value, b: Value) -> int:
 def div(a: Value, b: Value) -> int:
     a, b = _int(a, "\\div"), _int(b, "\\div")
     if b == 0:
-        raise EvalError(f"The second argument of \\div is 0 in {a} \\div 0")
+        raise ModuleEvalError("The second argument of \\div is 0.")
     return a // b
 
 
 def mod(a: Value, b: Value) -> int:
     a, b = _int(a, "%"), _int(b, "%")
     if b <= 0:
-        raise EvalError(f"The second argument of % should be a positive number, but instead it is:\n{b}")
+        raise ModuleEvalError(f"The second argument of % should be a positive number, but instead it is:\n{b}")
     return a % b
 
 
@@ -131,14 +131,14 @@ def seq_len(s: Value) -> int:
 def head(s: Value) -> Value:
     s = _seq(s, "Head")
     if not s:
-        raise EvalError("Attempted to apply Head to the empty sequence.")
+        raise ModuleEvalError("Attempted to apply Head to the empty sequence.")
     return s[0]
 
 
 def tail(s: Value) -> tuple:
     s = _seq(s, "Tail")
     if not s:
-        raise EvalError("Attempted to apply Tail to the empty sequence.")
+        raise ModuleEvalError("Attempted to apply Tail to the empty sequence.")
     return s[1:]
 
 
@@ -199,6 +199,8 @@ def is_finite_set(s: Value) -> bool:
 def cardinality(s: Value) -> int:
     if not is_set(s):
         raise EvalError(f"Attempted to compute the cardinality of the non-set {fmt(s)}")
+    if not is_finite(s):  # TLC: FiniteSets' own error (exit 255 while computing successors)
+        raise ModuleEvalError(f"Attempted to compute cardinality of the value\n{s.describe()}")
     return set_size(s)
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 import itertools
 from typing import Any, Iterable, Iterator
 
+from .enum_watch import ENUM_WATCH
 from .errors import EvalError
 
 Value = Any
@@ -118,7 +119,7 @@ class LazySet:
         if m is None:
             if not self.finite:
                 raise EvalError(f"Attempted to enumerate the infinite set {self.describe()}")
-            m = frozenset(self.iterate())
+            m = frozenset(ENUM_WATCH.watched(self.iterate(), self.describe))
             self._mat = m
         return m
 
@@ -514,7 +515,7 @@ def sorted_elems(s: Value) -> tuple:
             return tuple(range(s.lo, s.hi + 1))
         if isinstance(s, PowerSet):
             return tuple(sorted(s.materialize(), key=tlc_key))
-        return tuple(s.iterate())
+        return tuple(ENUM_WATCH.watched(s.iterate(), s.describe))
     raise EvalError(f"Attempted to enumerate a non-set value: {fmt(s)}")
 
 

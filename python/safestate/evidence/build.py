@@ -1,0 +1,378 @@
+"""Building the evidence package: runs (or reuses) every step, then writes the pages,
+diagrams, raw artefacts and the manifest into one self-contained folder."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from html import escape
+from pathlib import Path
+from typing import Any
+
+from ..errors import UsageError
+from ..systems.registry import System, load_all
+from . import diagrams, junit, manifest, render, sources, traces
+from .collect import Runner, StepResult
+from .matrix import (SystemFacts, build as build_matrix, cfg_invariants, check_verdict, conform_summary,
+                     proofs_by_invariant)
+from .render import SystemPage
+from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
+
+REQUIREMENTS_ENV = "SAFESTATE_REQUIREMENTS"
+CACHE_ENV = "SAFESTATE_EVIDENCE_CACHE"
+MUTATION_SCORE = Path("build") / "cpp-mutation" / "score.json"
+COVERAGE_DIR = Path("build") / "coverage"
+
+
+@dataclass
+class Options:
+    out: Path
+    root: Path
+    requirements: Path
+    systems: list[str] = field(default_factory=list)      # empty: every registered system
+    reuse: bool = False
+    conform_args: list[str] = field(default_factory=lambda: ["--input-complete", "--seed", "0"])
+    pytest: bool = True
+    screenshots: bool = True
+    coverage: bool = False
+    log: Callable[[str], None] = print
+
+
+@dataclass
+class Result:
+    out: Path
+    gaps: int
+    failures: list[str]
+
+
+def cache_dir(root: Path) -> Path:
+    """Where step results are cached: $SAFESTATE_EVIDENCE_CACHE, else build/evidence-cache
+    (the tests use their own, so that a main job beside them never rewrites their steps)."""
+    import os
+    return Path(os.environ.get(CACHE_ENV) or root / "build" / "evidence-cache")
+
+
+def find_requirements(root: Path) -> Path | None:
+    """REQUIREMENTS.md: $SAFESTATE_REQUIREMENTS, else ../shared/REQUIREMENTS.md of the
+    repository or of a folder above it (a worktree sits deeper than the main clone)."""
+    import os
+    env = os.environ.get(REQUIREMENTS_ENV)
+    if env:
+        return Path(env)
+    for d in (root, *root.parents):
+        p = d / "shared" / "REQUIREMENTS.md"
+        if p.is_file():
+            return p
+    return None
+
+
+def select_systems(root: Path, names: list[str]) -> list[System]:
+    every = load_all(root / "systems")
+    if not names:
+        return every
+    known = {s.name: s for s in every}
+    bad = [n for n in names if n not in known]
+    if bad:
+        raise UsageError(f"--system {', '.join(bad)}: not a registered system (registered: {', '.join(known)})")
+    return [known[n] for n in names]
+
+
+def build(opts: Options) -> Result:
+    root, out = opts.root, opts.out
+    systems = select_systems(root, opts.systems)
+    if not opts.requirements.is_file():
+        raise UsageError(f"{opts.requirements}: REQUIREMENTS.md not found (give --requirements FILE or set "
+                         f"{REQUIREMENTS_ENV})")
+    if out.exists():
+        if not (out / manifest.NAME).is_file() and any(out.iterdir()):
+            raise UsageError(f"{out}: exists and is not an evidence package; refusing to overwrite it")
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    reqs = sources.read_requirements(opts.requirements, root)
+    known = {r.id for r in reqs}
+    pages = sorted((root / "docs" / "design").glob("*.md"))
+    corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)],
+                            [t for d in [root / "tests" / "cpp", *sorted((root / "src").rglob("tests"))]
+                             for t in sources.gtests(d, root, known)]
+                            + sources.pytests(root / "tests" / "python", root, known))
+    runner = Runner(root, cache_dir(root), opts.reuse, opts.log)
+
+    facts: list[SystemFacts] = []
+    for s in systems:
+        runs = run_system(runner, s, opts.conform_args)
+        defs = [d for f in model_files(s.model) for d in sources.model_defs(f, root, known)]
+        facts.append(SystemFacts(runs, defs, cfg_invariants(runs),
+                                 sources.cpp_row_locations(cpp_files(s), root)))
+        opts.log(_one_line(runs))
+
+    owned = {rid for f in facts for rid in f.runs.system.requirements} | {
+        rid for f in facts for d in f.defs if d.name in f.invariants for rid in d.requirements}
+    elsewhere = _elsewhere(root, systems)
+    # Tests of this package's requirements and of those no registered system covers
+    # (listed in every package); not those of the systems left out.
+    wanted = owned | (known - set(elsewhere))
+    selected = [t for t in corpus.tests if set(t.requirements) & wanted]
+    ctest = run_ctest(runner, root, None if not opts.systems else
+                      "^(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")$")
+    pyt = run_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
+    results = {**junit.results(ctest.files.get("ctest.xml"), "gtest"),
+               **(junit.results(pyt.files.get("pytest.xml"), "pytest") if pyt else {})}
+    m = build_matrix(corpus, facts, results, elsewhere)
+
+    extras: list[tuple[str, str]] = []
+    _copy_junit(out, ctest, pyt, extras)
+    test_counts = {f.runs.system.name: junit.counts({t.name: results.get(t.name, "not run") for t in selected
+                                                      if set(t.requirements) & set(_ids_of(f))})
+                   for f in facts}
+    sys_pages = [_system_page(out, f, corpus) for f in facts]
+    if opts.coverage:
+        _coverage(out, root, runner, extras, opts.log)
+    _mutation_score(out, root, extras)
+    header = {"date": manifest.now(), "tools": manifest.tool_versions(root), "machine": manifest.machine()}
+    (out / "index.html").write_text(render.index_html(sys_pages, m, header, extras, test_counts), encoding="utf-8")
+    for p in sys_pages:
+        _write(out, p.href, render.system_html(p))
+    if opts.screenshots:
+        _screenshots(out, sys_pages, opts.log)
+
+    failures = _failures(facts, ctest, pyt)
+    inputs = sorted({f for s in systems for f in system_inputs(s)} | {opts.requirements, *pages}
+                    | {root / t.loc.file for t in selected})
+    checks = [_check_record(f.runs, root) for f in facts]
+    steps = [{"name": st.name, "returncode": st.returncode, "seconds": st.seconds, "cached": st.cached, "key": st.key}
+             for st in _all_steps(facts, ctest, pyt)]
+    manifest.write(out, root, inputs, {"systems": [s.name for s in systems], "requirements_file": str(opts.requirements),
+                                       "gaps": len(m.gaps), "gap_kinds": _kinds(m.gaps), "failures": failures,
+                                       "checks": checks, "steps": steps})
+    return Result(out, len(m.gaps), failures)
+
+
+def _one_line(r: SystemRuns) -> str:
+    """What a system's steps gave, for the main job's log."""
+    c = r.check.json()
+    parts = [f"== {r.system.name}: check {check_verdict(r)}" + (
+        f" ({c['distinct_states']:,} distinct, {c['states_generated']:,} generated, depth {c['depth']})"
+        if isinstance(c, dict) and "distinct_states" in c else "")]
+    if r.prove:
+        proofs = proofs_by_invariant(r)
+        parts.append(f"proofs {sum(1 for x in proofs.values() if x.get('status') == 'proved')}/{len(proofs)} proved")
+    conf = conform_summary(r)
+    if conf:
+        parts.append(f"conformance {conf.get('transitions_covered'):,}/{conf.get('transitions_total'):,} transitions, "
+                     f"{conf.get('mismatches')} mismatches, {len(conf.get('rows_taken', []))} rows taken")
+    elif r.conform:
+        parts.append(f"conformance exit {r.conform.returncode}")
+    if r.mutants:
+        parts.append(f"mutants {sum(1 for m in r.mutants if m.killed)}/{len(r.mutants)} killed")
+    return "; ".join(parts)
+
+
+def _elsewhere(root: Path, packaged: list[System]) -> dict[str, list[str]]:
+    """Requirement -> the registered systems not in this package that cover it (listed
+    in their manifest, or an invariant of their CI cfg named after it)."""
+    from ..checker.cfg import parse_config
+    names = {s.name for s in packaged}
+    out: dict[str, list[str]] = {}
+    for s in load_all(root / "systems"):
+        if s.name in names:
+            continue
+        ids = set(s.requirements)
+        ids |= {"INV-" + e.name[4:].replace("_", "-") for e in parse_config(str(s.ci_config)).invariants
+                if e.name.startswith("INV_")}
+        for rid in ids:
+            out.setdefault(rid, []).append(s.name)
+    return out
+
+
+def _ids_of(f: SystemFacts) -> list[str]:
+    return list(f.runs.system.requirements) + [r for d in f.defs if d.name in f.invariants for r in d.requirements]
+
+
+def _kinds(gaps: list[Any]) -> dict[str, int]:
+    out: dict[str, int] = {}
+    for g in gaps:
+        out[g.kind] = out.get(g.kind, 0) + 1
+    return out
+
+
+def _all_steps(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | None) -> list[StepResult]:
+    out: list[StepResult] = []
+    for f in facts:
+        r = f.runs
+        out += [x for x in (r.check, r.prove, r.conform) if x is not None] + [m.step for m in r.mutants]
+    return out + [ctest] + ([pyt] if pyt else [])
+
+
+def _failures(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | None) -> list[str]:
+    """Steps that did not succeed: these make `safestate evidence` exit non-zero."""
+    out = []
+    for f in facts:
+        r, n = f.runs, f.runs.system.name
+        if check_verdict(r) != "success":
+            out.append(f"{n}: model check {check_verdict(r)}")
+        if r.prove and r.prove.returncode != 0:
+            out.append(f"{n}: prove exit {r.prove.returncode}")
+        if r.conform and r.conform.returncode != 0:
+            out.append(f"{n}: conform exit {r.conform.returncode}")
+        out += [f"{n}: mutant {m.mutant.name} not killed" for m in r.mutants if not m.killed]
+        if r.mutant_error:
+            out.append(f"{n}: {r.mutant_error}")
+    if ctest.returncode != 0:
+        out.append(f"ctest exit {ctest.returncode}")
+    if pyt and pyt.returncode != 0:
+        out.append(f"pytest exit {pyt.returncode}")
+    return out
+
+
+def _check_record(r: SystemRuns, root: Path) -> dict[str, Any]:
+    j = r.check.json()
+    j = j if isinstance(j, dict) else {}
+    return {"system": r.system.name, "model": sources.rel(root, r.system.model),
+            "cfg": sources.rel(root, r.system.ci_config),
+            **{k: j.get(k) for k in ("result", "distinct_states", "states_generated", "depth")}}
+
+
+def _write(out: Path, rel: str, text: str) -> str:
+    p = out / rel
+    p.parent.mkdir(parents=True, exist_ok=True)
+    p.write_text(text, encoding="utf-8")
+    return rel
+
+
+def _copy_junit(out: Path, ctest: StepResult, pyt: StepResult | None, extras: list[tuple[str, str]]) -> None:
+    for step, name in ((ctest, "ctest.xml"), (pyt, "pytest.xml")):
+        if step is not None and name in step.files:
+            (out / "junit").mkdir(exist_ok=True)
+            shutil.copyfile(step.files[name], out / "junit" / name)
+            extras.append((f"JUnit XML: {name}", f"junit/{name}"))
+            _write(out, f"junit/{name}.log", step.stdout + step.stderr)
+            extras.append((f"log of the run that wrote {name}", f"junit/{name}.log"))
+
+
+def _system_page(out: Path, f: SystemFacts, corpus: sources.Corpus) -> SystemPage:
+    r = f.runs
+    s = r.system
+    p = SystemPage(r, f"systems/{s.name}.html")
+    p.figures["invariants"] = f.invariants
+    base = f"raw/{s.name}"
+    for step, stem in ((r.check, "check"), (r.prove, "prove"), (r.conform, "conform")):
+        if step is None:
+            continue
+        p.raw.append((f"{stem} output (JSON)", "../" + _write(out, f"{base}/{stem}.json", step.stdout)))
+        p.raw.append((f"{stem} log (stderr, exit {step.returncode}, {step.seconds} s)",
+                      "../" + _write(out, f"{base}/{stem}.log", step.stderr)))
+    table = None
+    try:
+        table = diagrams.cpp_table_dot(s)
+    except diagrams.DiagramError as e:
+        p.diagrams.append(("C++ transition table", "", f"not drawn: {e}"))
+    ids = set(_ids_of(f))
+    page = sources.rel(s.root, s.design)
+    if table is None:
+        rows = [row for row in corpus.rows if row.page == page and set(row.requirements) & ids]
+        table = (diagrams.design_rows_dot(f"{s.name} rows", rows),
+                 f"from the {len(rows)} rows of {page} (no DOT export in the binding)") if rows else None
+    if table is None:
+        p.diagrams.append(("C++ transition table", "", f"not drawn: no DOT export in the binding and no design-page "
+                           f"row with an ID for {', '.join(sorted(ids))} in {page}"))
+    else:
+        try:
+            rel = _write(out, f"diagrams/{s.name}-table.svg", diagrams.svg(table[0]))
+            p.diagrams.append(("C++ transition table (row IDs on the edges)", "../" + rel, f"source: {table[1]}"))
+        except diagrams.DiagramError as e:
+            p.diagrams.append(("C++ transition table", "", f"not drawn: {e}"))
+    control = str(s.extra.get("control_state", "state"))
+    try:
+        dot, figures = diagrams.model_states_dot(s, control)
+        p.figures.update(figures)
+        rel = _write(out, f"diagrams/{s.name}-model.svg", diagrams.svg(dot))
+        p.diagrams.append((f"model control states ({control})", "../" + rel,
+                           f"{figures['states']:,} states, {figures['transitions']:,} transitions of the CI cfg; "
+                           "edges: the model's actions" + (" and the rows RowsFiredBy gives on a sample of each "
+                                                           "edge's transitions" if s.conformance else "")))
+    except Exception as e:  # noqa: BLE001 - a diagram that cannot be drawn is said in the page, not hidden
+        p.diagrams.append(("model control states", "", f"not drawn: {type(e).__name__}: {e}"))
+    for mr in r.mutants:
+        p.mutant_html.append(_mutant_html(out, s, mr, control))
+    return p
+
+
+def _mutant_html(out: Path, s: System, mr: Any, control: str) -> str:
+    m = mr.mutant
+    status = "killed" if mr.killed else "SURVIVES"
+    head = (f'<h3 id="mutant-{escape(m.name)}">{escape(m.name)} — <span class="{"ok" if mr.killed else "bad"}">'
+            f'{status}</span></h3><p>{escape(m.requirement)} · target <code>{escape(m.invariant)}</code> '
+            f'(expect {escape(m.expect)}) · {escape(m.why)}</p>')
+    trace = mr.step.files.get("trace.itf.json")
+    if trace is None:
+        return head + ("<p class=muted>no counterexample: the mutant removes a witness situation (the check "
+                       "succeeds without reaching it)</p>" if m.expect == "holds" else "<p class=bad>no trace</p>")
+    itf = json.loads(trace.read_text(encoding="utf-8"))
+    base = f"mutants/{s.name}/{m.name}"
+    (out / "mutants" / s.name).mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(trace, out / f"{base}.itf.json")
+    ss = traces.steps(itf)
+    _write(out, f"{base}.svg", traces.sequence_svg(ss, s.name, control, f"{m.invariant} violated"))
+    return (head + f'<p><a href="../{base}.itf.json">ITF trace</a> ({len(ss)} states)</p>'
+            f'<img class="diagram" src="../{base}.svg" alt="sequence diagram of {escape(m.name)}">'
+            + traces.step_table_html(ss, control))
+
+
+def _mutation_score(out: Path, root: Path, extras: list[tuple[str, str]]) -> None:
+    src = root / MUTATION_SCORE
+    if not src.is_file():
+        extras.append(("C++ mutation score: not measured yet (conform/cpp_mutants/score.py)", "index.html#artefacts"))
+        return
+    (out / "mutation").mkdir(exist_ok=True)
+    shutil.copyfile(src, out / "mutation" / "score.json")
+    d = json.loads(src.read_text(encoding="utf-8"))
+    extras.append((f"C++ mutation score: {d.get('score_percent')}% ({d.get('killed')}/{d.get('sampled')} sampled "
+                   f"mutants killed, of {d.get('generated')} generated; {d.get('date')})", "mutation/score.json"))
+    surv = "".join(f"<tr><td><code>{escape(x.get('file', ''))}:{x.get('line')}</code></td>"
+                   f"<td><code>{escape(x.get('original', ''))}</code></td><td><code>{escape(x.get('mutant', ''))}</code></td>"
+                   f"<td>{escape(x.get('note', ''))}</td></tr>" for x in d.get("survivors", []))
+    html = render.page("C++ mutation score", f'<p><a href="../index.html">← summary</a></p><h1>C++ mutation score</h1>'
+                       f"<pre>{escape(json.dumps({k: v for k, v in d.items() if k != 'survivors'}, indent=1))}</pre>"
+                       f"<h2>Survivors</h2><table><tr><th>where</th><th>original</th><th>mutant</th><th>note</th></tr>"
+                       f"{surv}</table>")
+    _write(out, "mutation/index.html", html)
+    extras.append(("C++ mutation survivors", "mutation/index.html"))
+
+
+def _coverage(out: Path, root: Path, runner: Runner, extras: list[tuple[str, str]], log: Callable[[str], None]) -> None:
+    """gcovr branch coverage of the flagship's C++ under its conformance replay
+    (conform/coverage.sh builds the coverage variant in build/coverage)."""
+    import subprocess
+    import sys
+    build_dir = root / COVERAGE_DIR
+    log("evidence: coverage: conform/coverage.sh (flagship only: the coverage build and a full replay)")
+    p = subprocess.run(["bash", str(root / "conform" / "coverage.sh"), str(build_dir)], cwd=root,
+                       capture_output=True, text=True)
+    _write(out, "coverage/summary.txt", p.stdout + p.stderr)
+    extras.append((f"gcovr branch coverage of src/ under the flagship's conformance (exit {p.returncode})",
+                   "coverage/summary.txt"))
+    if p.returncode == 0:
+        subprocess.run([sys.executable, "-m", "gcovr", "--root", str(root), "--object-directory", str(build_dir),
+                        "--filter", str(root / "src") + "/", "--exclude-unreachable-branches", "--exclude-throw-branches",
+                        "--html-details", str(out / "coverage" / "index.html"), "--json-summary",
+                        str(out / "coverage" / "summary.json")], cwd=root, capture_output=True, text=True)
+        if (out / "coverage" / "index.html").is_file():
+            extras.append(("gcovr HTML report", "coverage/index.html"))
+
+
+def _screenshots(out: Path, pages: list[SystemPage], log: Callable[[str], None]) -> None:
+    from .. import browser
+    why = browser.missing()
+    if why:
+        log(f"evidence: no screenshots: {why}")
+        return
+    (out / "screenshots").mkdir(exist_ok=True)
+    with browser.system_chromium(1400, 1000) as d:
+        d.get((out / "index.html").resolve().as_uri())
+        d.save_screenshot(str(out / "screenshots" / "summary.png"))
+        if pages:
+            d.get((out / pages[0].href).resolve().as_uri())
+            d.save_screenshot(str(out / "screenshots" / f"{pages[0].runs.system.name}.png"))

@@ -1,0 +1,78 @@
+"""``safestate evidence [--out DIR] [--reuse] [--system NAME ...] [--coverage]`` and
+``safestate evidence --verify DIR``.
+
+Builds the certification evidence package: for every registered system (or the ones
+named) runs -- or with --reuse takes from build/evidence-cache/ when the inputs are
+unchanged -- the model check, the proofs, the conformance, each model mutant, the
+GoogleTest tests (ctest) and the pytest tests named after requirement IDs, and writes
+DIR/index.html (summary, traceability matrix of every requirement ID, gaps in red),
+one page per system (diagrams, proofs, counterexamples), the raw artefacts and
+manifest.json (SHA-256 of every input and output, tool versions, machine, date).
+Prints the package's path and its gap count.
+
+--verify DIR re-hashes the inputs and outputs and re-runs the model check of each CI
+cfg; it prints every difference.
+
+Exit codes: 0 built (or verified) and every step succeeded; 1 a step failed (a check,
+proof, conformance, mutant or test; the package is still written, with the failure
+in it) / --verify found a difference; 2 usage or input error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from ..errors import run_guarded
+from ..systems.registry import registry_dir
+from .build import Options, build, find_requirements
+from .verify import verify
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--out", default="build/evidence", metavar="DIR", help="the package folder (default build/evidence)")
+    p.add_argument("--reuse", action="store_true", help="reuse cached step results whose inputs are unchanged")
+    p.add_argument("--system", action="append", default=[], metavar="NAME",
+                   help="only this registered system (repeatable; default every system)")
+    p.add_argument("--requirements", metavar="FILE", help="REQUIREMENTS.md (default ../shared/REQUIREMENTS.md)")
+    p.add_argument("--conform-args", default="--input-complete --seed 0",
+                   help="arguments of each `safestate conform` run (default: %(default)s)")
+    p.add_argument("--no-pytest", action="store_true", help="leave the pytest tests out (GoogleTest still runs)")
+    p.add_argument("--no-screenshots", action="store_true", help="no headless-Chromium screenshots")
+    p.add_argument("--coverage", action="store_true",
+                   help="also gcovr branch coverage of the flagship's C++ under conformance (slow)")
+    p.add_argument("--verify", metavar="DIR", help="verify the package DIR instead of building one")
+    p.add_argument("--root", metavar="DIR", help="with --verify: the repository whose inputs to re-hash "
+                   "(default: the one recorded in the manifest)")
+
+
+def _log(msg: str) -> None:
+    print(msg, file=sys.stderr, flush=True)
+
+
+def run(args: argparse.Namespace) -> int:
+    return run_guarded(lambda: _run(args), "evidence", 2)
+
+
+def _run(args: argparse.Namespace) -> int:
+    if args.verify:
+        diffs = verify(Path(args.verify), Path(args.root).resolve() if args.root else None, _log)
+        for d in diffs:
+            print(d)
+        print(f"{args.verify}: {'verified, no difference' if not diffs else f'{len(diffs)} difference(s)'}")
+        return 1 if diffs else 0
+    root = registry_dir().parent.resolve()
+    req = Path(args.requirements) if args.requirements else find_requirements(root)
+    if req is None:
+        from ..errors import UsageError
+        raise UsageError("REQUIREMENTS.md not found (give --requirements FILE or set SAFESTATE_REQUIREMENTS)")
+    t0 = time.monotonic()
+    res = build(Options(out=Path(args.out).resolve(), root=root, requirements=req.resolve(), systems=args.system,
+                        reuse=args.reuse, conform_args=args.conform_args.split(), pytest=not args.no_pytest,
+                        screenshots=not args.no_screenshots, coverage=args.coverage, log=_log))
+    for f in res.failures:
+        print(f"FAILED: {f}")
+    print(f"evidence package: {res.out}/index.html ({res.gaps} gaps; built in {time.monotonic() - t0:.0f} s)")
+    return 1 if res.failures else 0

@@ -1,0 +1,228 @@
+"""The traceability matrix: every requirement ID of REQUIREMENTS.md to its design-page
+rows, C++ rows, model operators and invariants, check / proof / conformance results,
+tests and source locations -- and the gaps, counted, never dropped."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..checker.cfg import parse_config
+from .sources import Corpus, DesignRow, Loc, ModelDef, Requirement, TestCase
+from .steps import SystemRuns
+
+
+@dataclass(frozen=True)
+class Gap:
+    kind: str        # "no test", "test failed", "not modelled", "invariant without a mutant", ...
+    subject: str     # the requirement, invariant or row
+    detail: str
+
+
+@dataclass
+class CppRow:
+    system: str
+    id: str
+    locs: list[Loc]
+    taken: bool | None      # None: the system has no conformance run
+
+
+@dataclass
+class Invariant:
+    system: str
+    name: str
+    loc: Loc | None
+    check: str              # the system's check result for its cfg
+    proof: dict[str, Any] | None
+    mutants: list[str]      # killing mutants' names
+
+
+@dataclass
+class Entry:
+    req: Requirement
+    systems: list[str] = field(default_factory=list)
+    rows: list[DesignRow] = field(default_factory=list)
+    cpp_rows: list[CppRow] = field(default_factory=list)
+    operators: list[ModelDef] = field(default_factory=list)
+    invariants: list[Invariant] = field(default_factory=list)
+    conformance: dict[str, dict[str, Any]] = field(default_factory=dict)
+    tests: list[tuple[TestCase, str]] = field(default_factory=list)    # (test, outcome)
+    gaps: list[Gap] = field(default_factory=list)
+    outside: list[str] = field(default_factory=list)   # registered systems not in this package
+
+
+@dataclass
+class SystemFacts:
+    """What the matrix needs of one system besides its runs."""
+    runs: SystemRuns
+    defs: list[ModelDef]
+    invariants: list[str]
+    cpp_rows: dict[str, list[Loc]]
+
+
+@dataclass
+class Matrix:
+    entries: list[Entry]
+    gaps: list[Gap]           # every gap once (requirement, invariant and row gaps)
+
+
+def check_verdict(runs: SystemRuns) -> str:
+    j = runs.check.json()
+    return str(j.get("result")) if isinstance(j, dict) else f"exit {runs.check.returncode}"
+
+
+def proofs_by_invariant(runs: SystemRuns) -> dict[str, dict[str, Any]]:
+    j = runs.prove.json() if runs.prove else None
+    return {r["invariant"]: r for r in j.get("results", [])} if isinstance(j, dict) else {}
+
+
+def conform_summary(runs: SystemRuns) -> dict[str, Any] | None:
+    j = runs.conform.json() if runs.conform else None
+    return j if isinstance(j, dict) else None
+
+
+def cfg_invariants(runs: SystemRuns) -> list[str]:
+    return [e.name for e in parse_config(str(runs.system.ci_config)).invariants]
+
+
+def build(corpus: Corpus, facts: list[SystemFacts], test_results: dict[str, str],
+          elsewhere: dict[str, list[str]]) -> Matrix:
+    """`elsewhere`: requirement -> registered systems left out of this package (built
+    with --system): such a requirement is listed, marked as not in the package, and
+    its missing chain is not counted as gaps."""
+    by_name = {f.runs.system.name: f for f in facts}
+    gaps: list[Gap] = []
+    entries = []
+    for req in corpus.requirements:
+        e = Entry(req)
+        for f in facts:
+            sys_ = f.runs.system
+            owns = req.id in sys_.requirements or any(req.id in d.requirements for d in f.defs if d.name in f.invariants)
+            if owns:
+                e.systems.append(sys_.name)
+        if not e.systems and elsewhere.get(req.id):
+            e.outside = elsewhere[req.id]
+            entries.append(e)
+            continue
+        e.rows = [r for r in corpus.rows if req.id in r.requirements]
+        e.tests = [(t, test_results.get(t.name, "not run")) for t in corpus.tests if req.id in t.requirements]
+        for name in e.systems:
+            _fill_system(e, by_name[name])
+        e.gaps = _requirement_gaps(e)
+        gaps += e.gaps
+        entries.append(e)
+    gaps += _invariant_gaps(facts) + _row_gaps(corpus, facts)
+    return Matrix(entries, gaps)
+
+
+def _fill_system(e: Entry, f: SystemFacts) -> None:
+    runs = f.runs
+    proofs = proofs_by_invariant(runs)
+    verdict = check_verdict(runs)
+    conf = conform_summary(runs)
+    taken = set(conf.get("rows_taken", [])) if conf else None
+    only = runs.system.requirements[0] if len(runs.system.requirements) == 1 else None
+    for d in f.defs:
+        if e.req.id not in d.requirements and not (d.name in f.invariants and not d.requirements and only == e.req.id):
+            continue
+        if d.name in f.invariants:
+            killers = [m.mutant.name for m in runs.mutants if m.killed and m.mutant.invariant == d.name]
+            e.invariants.append(Invariant(runs.system.name, d.name, d.loc, verdict, proofs.get(d.name), killers))
+        else:
+            e.operators.append(d)
+    page = str(runs.system.design.relative_to(runs.system.root))
+    for r in e.rows:
+        if r.page == page and r.id in f.cpp_rows:
+            e.cpp_rows.append(CppRow(runs.system.name, r.id, f.cpp_rows[r.id], None if taken is None else r.id in taken))
+    if conf is not None:
+        e.conformance[runs.system.name] = conf
+
+
+def _requirement_gaps(e: Entry) -> list[Gap]:
+    rid = e.req.id
+    out = []
+    if not e.systems:
+        out.append(Gap("not in a registered system", rid, "no system of systems/ lists it and no registered model "
+                       "has an invariant named after it: not model-checked, proved or conformance-tested"))
+    elif not e.invariants:
+        out.append(Gap("no invariant", rid, "no invariant of the CI cfg names this requirement"))
+    elif not e.conformance:
+        out.append(Gap("no conformance", rid, f"{', '.join(e.systems)}: no C++ binding and adapter: the C++ is not "
+                       "run against the model"))
+    if not e.rows:
+        out.append(Gap("no design row", rid, "no row of a design-page table (| ID | ...) names it"))
+    if not e.cpp_rows:
+        out.append(Gap("no C++ row", rid, "no C++ table row of its system(s) names one of its design rows (a string literal such "
+                       "as \"C06\" in the system's cpp_sources)"))
+    if e.systems and not e.operators and not e.invariants:
+        out.append(Gap("no model operator", rid, "no operator of the model names it"))
+    if not e.tests:
+        out.append(Gap("no test", rid, "no GoogleTest or pytest test is named after it"))
+    for t, outcome in e.tests:
+        if outcome in ("failed", "not run"):
+            out.append(Gap(f"test {outcome}", rid, f"{t.name} ({t.loc})"))
+    for inv in e.invariants:
+        if inv.check != "success":
+            out.append(Gap("model check failed", rid, f"{inv.system}: {inv.check}"))
+        if inv.proof is None:
+            out.append(Gap("not proved", rid, f"{inv.system}.{inv.name}: no proof run"))
+        elif inv.proof.get("status") != "proved":
+            out.append(Gap("not proved", rid, f"{inv.system}.{inv.name}: {inv.proof.get('status')}"))
+    for name, conf in e.conformance.items():
+        if conf.get("mismatches"):
+            out.append(Gap("conformance mismatch", rid, f"{name}: {conf.get('first_mismatch')}"))
+    return out
+
+
+def _invariant_gaps(facts: list[SystemFacts]) -> list[Gap]:
+    out = []
+    for f in facts:
+        runs = f.runs
+        for inv in f.invariants:
+            killers = [m for m in runs.mutants if m.mutant.invariant == inv]
+            if not any(m.killed for m in killers):
+                why = "a mutant targets it but survives" if killers else "no model mutant targets it"
+                out.append(Gap("invariant without a mutant", f"{runs.system.name}.{inv}", why))
+            if len(runs.system.requirements) != 1 and not any(inv == d.name and d.requirements for d in f.defs):
+                out.append(Gap("invariant names no requirement", f"{runs.system.name}.{inv}",
+                               "neither its name nor the comment above it names a requirement ID"))
+        for m in runs.mutants:
+            if not m.killed:
+                out.append(Gap("mutant survives", f"{runs.system.name}:{m.mutant.name}",
+                               f"{m.mutant.invariant} ({m.mutant.expect}) not caught: exit {m.step.returncode}"))
+        if runs.mutant_error:
+            out.append(Gap("mutant does not apply", runs.system.name, runs.mutant_error))
+    return out
+
+
+def _row_gaps(corpus: Corpus, facts: list[SystemFacts]) -> list[Gap]:
+    """A design-page row is exercised when a system with conformance and that design
+    page fired it; every other row of a page of a packaged system is a gap."""
+    pages = {str(f.runs.system.design.relative_to(f.runs.system.root)): f for f in facts}
+    taken: dict[str, set[str]] = {}
+    unreachable: dict[str, set[str]] = {}
+    conformed: set[str] = set()
+    for f in facts:
+        conf = conform_summary(f.runs)
+        page = str(f.runs.system.design.relative_to(f.runs.system.root))
+        if conf is not None:
+            conformed.add(page)
+            taken.setdefault(page, set()).update(conf.get("rows_taken", []))
+            unreachable.setdefault(page, set()).update(conf.get("rows_unreachable", []))
+    ids: dict[str, set[str]] = {}
+    for f in facts:
+        page = str(f.runs.system.design.relative_to(f.runs.system.root))
+        ids.setdefault(page, set()).update(f.runs.system.requirements)
+        ids[page].update(r for d in f.defs if d.name in f.invariants for r in d.requirements)
+    out = []
+    for r in corpus.rows:
+        if r.page not in pages or not set(r.requirements) & ids[r.page]:
+            continue   # another system's row (a shared design page)
+        if r.page not in conformed:
+            out.append(Gap("row never exercised", f"{r.page} {r.id}", "no system with this design page has "
+                           "conformance: the C++ of this row is not run against the model"))
+        elif r.id not in taken.get(r.page, set()):
+            why = "declared unreachable by construction" if r.id in unreachable.get(r.page, set()) else \
+                "conformance never fired it"
+            out.append(Gap("row never exercised", f"{r.page} {r.id}", why))
+    return out

@@ -1,0 +1,158 @@
+"""The evidence steps of one system and of the test suites: which command, which
+inputs (for the cache key and the manifest), which outputs."""
+
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .. import mutants as mutants_mod
+from ..systems.registry import System
+from .collect import Runner, StepResult, files_under, safestate_argv
+
+PKG = Path(__file__).resolve().parents[1]   # python/safestate
+# The tool sources each step depends on (its "version" in the cache key).
+TOOL = {"check": ("checker", "tla"), "prove": ("prove", "checker", "tla"),
+        "conform": ("conform", "checker", "tla", "systems")}
+
+
+def tool_files(step: str) -> list[Path]:
+    return files_under([PKG / d for d in TOOL[step]], (".py",))
+
+
+def model_files(model: Path) -> list[Path]:
+    """The model and every module of its folder it EXTENDS or INSTANCEs, transitively."""
+    out: list[Path] = []
+    todo = [model]
+    while todo:
+        m = todo.pop()
+        if m in out or not m.is_file():
+            continue
+        out.append(m)
+        text = m.read_text(encoding="utf-8")
+        names = re.findall(r"\bINSTANCE\s+([A-Za-z_]\w*)", text)
+        for ext in re.findall(r"^EXTENDS\s+([^\n]+)", text, re.M):
+            names += [n.strip() for n in ext.split(",")]
+        todo += [m.parent / f"{n}.tla" for n in names]
+    return sorted(out)
+
+
+def cpp_files(system: System) -> list[Path]:
+    pats = system.extra.get("cpp_sources", [])
+    found: list[Path] = []
+    for p in pats:
+        found += sorted(system.root.glob(p)) if any(c in p for c in "*?[") else [system.root / p]
+    return files_under(found, (".hpp", ".cpp", ".h"))
+
+
+def mutants_file(system: System) -> Path | None:
+    if system.mutants:
+        return system.mutants
+    p = system.root / "models" / "mutants" / f"{system.model.stem}.toml"
+    return p if p.is_file() else None
+
+
+def proof_files(system: System) -> list[Path]:
+    if system.proofs is None:
+        return []
+    return [system.proofs, *sorted(system.proofs.parent.glob(f"{system.model.stem}Proofs*.tla"))]
+
+
+def system_inputs(system: System) -> list[Path]:
+    """Every input of the system's evidence: what the manifest hashes."""
+    files = [system.manifest, system.design, *model_files(system.model), *system.configs, *proof_files(system),
+             *cpp_files(system)]
+    mf = mutants_file(system)
+    if mf:
+        files.append(mf)
+    if system.conformance:
+        files.append(system.conformance.adapter)
+    return sorted(set(f for f in files if f.is_file()))
+
+
+@dataclass
+class MutantRun:
+    mutant: mutants_mod.Mutant
+    step: StepResult
+    killed: bool
+
+
+@dataclass
+class SystemRuns:
+    system: System
+    check: StepResult
+    prove: StepResult | None
+    conform: StepResult | None
+    mutants: list[MutantRun] = field(default_factory=list)
+    mutant_error: str | None = None
+
+
+def run_system(runner: Runner, system: System, conform_args: list[str]) -> SystemRuns:
+    model, cfg = system.model, system.ci_config
+    mfiles = [*model_files(model), cfg]
+    check = runner.run(f"{system.name}-check", safestate_argv("check", str(model), "--config", str(cfg), "--json"),
+                       [*mfiles, *tool_files("check")])
+    prove = None
+    if system.proofs:
+        prove = runner.run(f"{system.name}-prove",
+                           safestate_argv("prove", str(model), "--config", str(cfg), "--proofs", str(system.proofs),
+                                          "--json"),
+                           [*mfiles, *proof_files(system), *tool_files("prove")])
+    conform = None
+    if system.conformance:
+        conform = runner.run(f"{system.name}-conform",
+                             safestate_argv("conform", system.name, "--json", *conform_args),
+                             [*mfiles, system.manifest, system.conformance.adapter, *cpp_files(system),
+                              *tool_files("conform")])
+    runs = SystemRuns(system, check, prove, conform)
+    _run_mutants(runner, runs)
+    return runs
+
+
+def _run_mutants(runner: Runner, runs: SystemRuns) -> None:
+    """Each model mutant checked on its own (materialised by safestate.mutants), with
+    its counterexample written as ITF."""
+    system = runs.system
+    mf = mutants_file(system)
+    if mf is None:
+        return
+    try:
+        muts = mutants_mod.load(mf)
+    except mutants_mod.MutationError as e:
+        runs.mutant_error = str(e)
+        return
+    for m in muts:
+        dest = runner.cache / "mutant-models" / system.name / m.name
+        try:
+            tla = mutants_mod.materialise(m, system.model.parent, dest)
+        except mutants_mod.MutationError as e:
+            runs.mutant_error = str(e)
+            continue
+        step = runner.run(f"{system.name}-mutant-{m.name}",
+                          safestate_argv("check", str(tla), "--json", "--itf", "{out}/trace.itf.json"),
+                          [*files_under([dest], (".tla", ".cfg")), *tool_files("check")], outputs=["trace.itf.json"])
+        killed = step.returncode == 12 if m.expect == "violated" else step.returncode == 0
+        runs.mutants.append(MutantRun(m, step, killed))
+
+
+def run_ctest(runner: Runner, root: Path, regex: str | None) -> StepResult:
+    build = root / "build" / "cpp"
+    argv = ["ctest", "--test-dir", str(build), "--output-junit", "{out}/ctest.xml", "-j1"]
+    if regex:
+        argv += ["-R", regex]
+    inputs = files_under([root / "include", root / "src", root / "tests" / "cpp"], (".hpp", ".cpp", ".h", ".txt"))
+    # The built test executables too: a cached result of an older build is not reused.
+    inputs += sorted(f for f in build.rglob("test_*") if f.is_file() and os.access(f, os.X_OK))
+    return runner.run("ctest", argv, inputs, outputs=["ctest.xml"])
+
+
+def run_pytest(runner: Runner, root: Path, node_ids: list[str]) -> StepResult | None:
+    if not node_ids:
+        return None
+    argv = [*safestate_argv()[:2], "pytest", "-q", "-p", "no:cacheprovider", "--junitxml", "{out}/pytest.xml",
+            *node_ids]
+    inputs = [*files_under([root / "tests" / "python"], (".py",)), *files_under([PKG], (".py",))]
+    inputs = [f for f in inputs if "evidence" not in f.parts]
+    return runner.run("pytest", argv, inputs, outputs=["pytest.xml"], timeout=3600)

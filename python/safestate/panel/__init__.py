@@ -1,0 +1,1 @@
+"""The operator panel (issue 16): the web page served by the operator link's bridge."""

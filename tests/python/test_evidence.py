@@ -1,0 +1,184 @@
+"""The certification evidence package (`safestate evidence`, issue 15) on one small
+system (PLCopenAxis: a 104-state model, its proofs, 3 mutants, 16 GoogleTest tests),
+built once per session with --reuse (build/evidence-cache): the matrix lists every
+requirement ID of REQUIREMENTS.md, gaps are shown and counted, --verify passes on a
+fresh package and fails after one byte of a model changes (on a copy of the inputs),
+and the report works in a real browser (headless system Chromium)."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+from collections.abc import Iterator
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+
+import pytest
+
+from conftest import REPO, run_safestate
+from safestate import browser
+from safestate.evidence.build import CACHE_ENV, find_requirements
+from safestate.evidence.sources import read_requirements
+
+REQUIREMENTS = find_requirements(REPO)
+pytestmark = pytest.mark.skipif(REQUIREMENTS is None, reason="REQUIREMENTS.md (../shared/) not found")
+
+
+@pytest.fixture(scope="module")
+def package(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
+    out = tmp_path_factory.mktemp("evidence") / "pkg"
+    # A cache of the tests' own: a main job running beside them never rewrites these steps.
+    old = os.environ.get(CACHE_ENV)
+    os.environ[CACHE_ENV] = str(REPO / "build" / "evidence-cache-tests")
+    r = run_safestate("evidence", "--system", "PLCopenAxis", "--reuse", "--no-pytest", "--out", str(out), cwd=REPO)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert f"evidence package: {out}/index.html" in r.stdout
+    yield out
+    if old is None:
+        del os.environ[CACHE_ENV]
+    else:
+        os.environ[CACHE_ENV] = old
+
+
+def _manifest(pkg: Path) -> dict:
+    return json.loads((pkg / "manifest.json").read_text())
+
+
+def test_evidence_matrix_has_one_row_per_requirement_id_in_order(package: Path) -> None:
+    assert REQUIREMENTS is not None
+    ids = [r.id for r in read_requirements(REQUIREMENTS, REPO)]
+    html = (package / "index.html").read_text()
+    rows = re.findall(r'<tr class="req"><td id="([^"]+)"', html)
+    assert rows == ids
+    assert {"RSM-01", "INV-RESET", "SAF-04", "INV-SAF-EMERGENCY", "SCH-05", "INV-PRESS", "PRO-05"} <= set(rows)
+
+
+def test_evidence_gaps_are_counted_and_shown_in_red(package: Path) -> None:
+    man = _manifest(package)
+    html = (package / "index.html").read_text()
+    assert f'id="gap-count">{man["gaps"]} gaps<' in html
+    # PLCopenAxis has no conformance adapter and 5 invariants no mutant targets: both are gaps.
+    assert man["gap_kinds"]["no conformance"] == 1
+    assert man["gap_kinds"]["invariant without a mutant"] >= 1
+    assert html.count('<td class="gap">') >= man["gaps"]
+    # SCH-05 is in no registered system: a gap, not silently dropped.
+    assert re.search(r'<td class="gap">not in a registered system</td><td><code>SCH-05</code>', html)
+
+
+def test_evidence_chain_of_a_requirement_has_proof_check_tests_and_locations(package: Path) -> None:
+    html = (package / "index.html").read_text()
+    row = html[html.index('<td id="RSM-17">'):]
+    row = row[: row.index("</tr>")]
+    assert "INV_LEGAL" in row and "models/PLCopenAxis.tla:" in row
+    assert "proved (kind, k=1" in row
+    assert "PLCopenAxis: success" in row
+    assert "RSM17_PlcopenAxis." in row and "tests/cpp/test_plcopen_axis.cpp:" in row and ">passed<" in row
+
+
+def test_evidence_package_has_diagrams_counterexamples_and_raw_artefacts(package: Path) -> None:
+    # No C++ table diagram: the axis table of the design page has no row IDs -- said, not drawn empty.
+    assert not (package / "diagrams" / "PLCopenAxis-table.svg").exists()
+    assert "not drawn: no DOT export in the binding and no design-page row with an ID for RSM-17" in \
+        (package / "systems" / "PLCopenAxis.html").read_text()
+    for rel in ("diagrams/PLCopenAxis-model.svg", "junit/ctest.xml",
+                "raw/PLCopenAxis/check.json", "raw/PLCopenAxis/prove.json", "raw/PLCopenAxis/prove.log"):
+        assert (package / rel).is_file(), rel
+    itfs = sorted((package / "mutants" / "PLCopenAxis").glob("*.itf.json"))
+    assert len(itfs) == 3
+    for itf in itfs:
+        assert json.loads(itf.read_text())["states"]
+        assert "<svg" in itf.with_name(itf.name.replace(".itf.json", ".svg")).read_text()
+    assert "<svg" in (package / "diagrams" / "PLCopenAxis-model.svg").read_text()
+    man = _manifest(package)
+    assert "models/PLCopenAxis.tla" in man["inputs"] and "index.html" in man["outputs"]
+    assert man["tools"]["z3"] and man["tools"]["compiler"] and man["checks"][0]["distinct_states"] == 104
+
+
+def _input_copy(pkg: Path, dest: Path) -> Path:
+    """The package's inputs copied under `dest` (never edit the repository's models)."""
+    for rel in _manifest(pkg)["inputs"]:
+        if not Path(rel).is_absolute():
+            (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(REPO / rel, dest / rel)
+    return dest
+
+
+def test_evidence_verify_passes_fresh_and_fails_after_one_model_byte_changes(package: Path, tmp_path: Path) -> None:
+    root = _input_copy(package, tmp_path / "repo")
+    ok = run_safestate("evidence", "--verify", str(package), "--root", str(root))
+    assert ok.returncode == 0, ok.stdout + ok.stderr
+    assert "verified, no difference" in ok.stdout
+    model = root / "models" / "PLCopenAxis.tla"
+    data = bytearray(model.read_bytes())
+    i = data.index(b"RSM-17")
+    data[i + 5] = ord("8")          # "RSM-17" -> "RSM-18" in a comment: one byte
+    model.write_bytes(bytes(data))
+    bad = run_safestate("evidence", "--verify", str(package), "--root", str(root))
+    assert bad.returncode == 1
+    assert "input models/PLCopenAxis.tla: SHA-256 differs from the manifest" in bad.stdout
+
+
+def test_evidence_verify_reports_a_changed_output_and_a_changed_count(package: Path, tmp_path: Path) -> None:
+    copy = tmp_path / "pkg"
+    shutil.copytree(package, copy)
+    (copy / "junit" / "ctest.xml").write_text((copy / "junit" / "ctest.xml").read_text().replace("passed", "passes", 1)
+                                              + " ")
+    man = _manifest(copy)
+    man["checks"][0]["distinct_states"] = 105
+    (copy / "manifest.json").write_text(json.dumps(man))
+    bad = run_safestate("evidence", "--verify", str(copy), "--root", str(REPO))
+    assert bad.returncode == 1
+    assert "output junit/ctest.xml: SHA-256 differs from the manifest" in bad.stdout
+    assert "check PLCopenAxis: distinct_states is 104, the package says 105" in bad.stdout
+
+
+def test_evidence_bad_inputs_give_one_line_and_exit_2(tmp_path: Path) -> None:
+    r = run_safestate("evidence", "--verify", str(tmp_path))
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "not an evidence package" in r.stderr
+    r = run_safestate("evidence", "--system", "NoSuchSystem", "--out", str(tmp_path / "x"), cwd=REPO)
+    assert r.returncode == 2 and "not a registered system" in r.stderr and "Traceback" not in r.stderr
+    (tmp_path / "keep.txt").write_text("mine")
+    r = run_safestate("evidence", "--system", "PLCopenAxis", "--out", str(tmp_path), cwd=REPO)
+    assert r.returncode == 2 and "refusing to overwrite" in r.stderr and (tmp_path / "keep.txt").is_file()
+
+
+@pytest.mark.skipif(browser.missing() is not None, reason=str(browser.missing()))
+def test_evidence_report_in_headless_chromium_loads_clean_with_every_link_and_image(package: Path) -> None:
+    assert REQUIREMENTS is not None
+    ids = [r.id for r in read_requirements(REQUIREMENTS, REPO)]
+    pages = [package / "index.html", *sorted((package / "systems").glob("*.html"))]
+    with browser.system_chromium() as d:
+        for page in pages:
+            d.get(page.resolve().as_uri())
+            errors = [e for e in d.get_log("browser") if e.get("level") == "SEVERE"]
+            assert errors == [], (page, errors)
+            for img in d.find_elements("tag name", "img"):
+                src = img.get_attribute("src")
+                assert d.execute_script("return arguments[0].complete && arguments[0].naturalWidth > 0", img), src
+            for a in d.find_elements("tag name", "a"):
+                url = urlparse(a.get_attribute("href"))
+                assert url.scheme == "file", url      # no external resource
+                target = Path(unquote(url.path))
+                assert target.is_file(), target
+                if url.fragment and target.suffix == ".html":
+                    assert f'id="{url.fragment}"' in target.read_text(), url.geturl()
+            if page.name == "index.html":
+                rows = d.find_elements("css selector", "#matrix-table tr.req")
+                assert [r.find_element("css selector", "td").get_attribute("id") for r in rows] == ids
+    for shot in ("summary.png", "PLCopenAxis.png"):
+        assert (package / "screenshots" / shot).stat().st_size > 10_000
+
+
+def test_evidence_requirement_ids_are_read_from_names_as_code_spells_them() -> None:
+    from safestate.evidence.sources import code_ids
+    known = {"RSM-05", "SAF-02", "INV-POWER", "INV-PRESS", "INV-NOJOG-AUTO"}
+    assert code_ids("RSM05_Estop.ResetIsRejected", known) == ("RSM-05",)
+    assert code_ids("test_estop_release_needs_reset_rsm05", known) == ("RSM-05",)
+    assert code_ids("INV_NOJOG_AUTO", known) == ("INV-NOJOG-AUTO",)
+    assert code_ids("HydraulicPress.INV_PRESS_MotorOffSwitchesEveryOutputOff", known) == ("INV-PRESS",)
+    assert code_ids("INV_POWER_OFF", known) == ()          # another invariant, not INV-POWER
+    assert code_ids("SAF02_InvSafEmergency.HoldsOnRandomMessageSequences", known | {"INV-SAF-EMERGENCY"}) == \
+        ("INV-SAF-EMERGENCY", "SAF-02")
+    assert code_ids("| P01 | PAIRING | ... | A, SAF-02 |", known) == ("SAF-02",)

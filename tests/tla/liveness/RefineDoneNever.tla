@@ -1,0 +1,17 @@
+-------------------------- MODULE RefineDoneNever ----------------------------
+(* As RefineDoneLazy, but refining DoneNever, whose Detect asks both       *)
+(* done' = TRUE and done' = FALSE: never enabled, so its weak fairness      *)
+(* holds.  TLC: success, 6 states generated, 4 distinct, depth 2.          *)
+EXTENDS Naturals
+VARIABLES x, flag, tok
+vars == <<x, flag, tok>>
+done == flag = 1 /\ tok = "w"
+Init == x \in 0..2 /\ flag = 0 /\ tok = "b"
+Dec == x > 0 /\ x' = x - 1 /\ UNCHANGED <<flag, tok>>
+Pass == x = 0 /\ tok = "b" /\ tok' = "w" /\ UNCHANGED <<x, flag>>
+Detect == x = 0 /\ tok = "w" /\ flag' = 1 /\ UNCHANGED <<x, tok>>
+Next == Dec \/ Pass
+Spec == Init /\ [][Next]_vars /\ WF_vars(Next)
+D == INSTANCE DoneNever
+DSpec == D!Spec
+=============================================================================
