@@ -33,8 +33,16 @@ class Invariant:
     name: str
     loc: Loc | None
     check: str              # the system's check result for its cfg
+    check_ok: bool          # as the manifest expects (a defective reference: its violation)
     proof: dict[str, Any] | None
     mutants: list[str]      # killing mutants' names
+    expected_violated: bool = False   # a defective reference's invariant, violated by design
+
+    @property
+    def refuted_as_expected(self) -> bool:
+        """A defective reference's expected violation, found by the check and by BMC."""
+        return self.expected_violated and self.check_ok and self.proof is not None and \
+            self.proof.get("status") == "violated"
 
 
 @dataclass
@@ -68,7 +76,23 @@ class Matrix:
 
 def check_verdict(runs: SystemRuns) -> str:
     j = runs.check.json()
-    return str(j.get("result")) if isinstance(j, dict) else f"exit {runs.check.returncode}"
+    verdict = str(j.get("result")) if isinstance(j, dict) else f"exit {runs.check.returncode}"
+    expected = runs.system.expected_violation
+    if expected is not None and isinstance(j, dict):
+        got = j.get("violated")
+        return f"{got} violated as expected (defective reference)" if got == expected else \
+            f"{verdict}, expected {expected} violated (defective reference)"
+    return verdict
+
+
+def check_ok(runs: SystemRuns) -> bool:
+    """The check did what the system's manifest expects: pass, or (a defective reference)
+    violate exactly its expected invariant."""
+    expected = runs.system.expected_violation
+    if expected is None:
+        return check_verdict(runs) == "success"
+    j = runs.check.json()
+    return isinstance(j, dict) and j.get("violated") == expected and runs.check.returncode == 12
 
 
 def proofs_by_invariant(runs: SystemRuns) -> dict[str, dict[str, Any]]:
@@ -127,7 +151,9 @@ def _fill_system(e: Entry, f: SystemFacts) -> None:
             continue
         if d.name in f.invariants:
             killers = [m.mutant.name for m in runs.mutants if m.killed and m.mutant.invariant == d.name]
-            e.invariants.append(Invariant(runs.system.name, d.name, d.loc, verdict, proofs.get(d.name), killers))
+            e.invariants.append(Invariant(runs.system.name, d.name, d.loc, verdict, check_ok(runs),
+                                              proofs.get(d.name), killers,
+                                              d.name == runs.system.expected_violation))
         else:
             e.operators.append(d)
     page = str(runs.system.design.relative_to(runs.system.root))
@@ -162,8 +188,10 @@ def _requirement_gaps(e: Entry) -> list[Gap]:
         if outcome in ("failed", "not run"):
             out.append(Gap(f"test {outcome}", rid, f"{t.name} ({t.loc})"))
     for inv in e.invariants:
-        if inv.check != "success":
+        if not inv.check_ok:
             out.append(Gap("model check failed", rid, f"{inv.system}: {inv.check}"))
+        if inv.refuted_as_expected:
+            continue
         if inv.proof is None:
             out.append(Gap("not proved", rid, f"{inv.system}.{inv.name}: no proof run"))
         elif inv.proof.get("status") != "proved":

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from html import escape
 from typing import Any
 
-from .matrix import Entry, Gap, Matrix, check_verdict, conform_summary, proofs_by_invariant
+from .matrix import Entry, Gap, Matrix, check_ok, conform_summary, proofs_by_invariant
 from .steps import SystemRuns
 
 CSS = """
@@ -75,7 +75,7 @@ def summary_row(p: SystemPage, test_counts: dict[str, int]) -> str:
         f", {test_counts['not run']} not run" if test_counts.get("not run") else "")
     return (f'<tr><td><a href="{p.href}">{escape(r.system.name)}</a></td>'
             f"<td>{p.figures.get('control_states', '?')}</td><td>{_count(p.figures.get('transitions'))}</td>"
-            f"<td>{len(p.figures.get('invariants', []))}</td><td>{_status(check_verdict(r) == 'success', chk)}</td>"
+            f"<td>{len(p.figures.get('invariants', []))}</td><td>{_status(check_ok(r), chk)}</td>"
             f"<td>{prf}</td><td>{cf}</td><td>{muts}</td><td>{tests}</td></tr>")
 
 
@@ -110,7 +110,7 @@ def matrix_row(e: Entry) -> str:
         ops.append(f"… {len(e.operators) - 8} more")
     invs = [f"<b><code>{escape(i.name)}</code></b> <code>{escape(str(i.loc))}</code>" for i in e.invariants]
     cells.append(f"<td>{_ul(invs + ops)}</td>" if invs or ops else _gapcell("no model operator or invariant"))
-    checks = [_status(i.check == "success", f"{i.system}: {i.check}") for i in e.invariants]
+    checks = [_status(i.check_ok, f"{i.system}: {i.check}") for i in e.invariants]
     cells.append(f"<td>{'<br>'.join(sorted(set(checks)))}</td>" if checks else _gapcell("not model-checked"))
     proofs = []
     for i in e.invariants:

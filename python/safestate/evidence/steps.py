@@ -95,7 +95,12 @@ def run_system(runner: Runner, system: System, conform_args: list[str]) -> Syste
     check = runner.run(f"{system.name}-check", safestate_argv("check", str(model), "--config", str(cfg), "--json"),
                        [*mfiles, *tool_files("check")])
     prove = None
-    if system.proofs:
+    if system.expected_violation:  # a defective reference: BMC must refute its invariant (exit 12)
+        prove = runner.run(f"{system.name}-prove",
+                           safestate_argv("prove", str(model), "--config", str(cfg), "--engine", "bmc", "--depth", "6",
+                                          "--invariant", system.expected_violation, "--json"),
+                           [*mfiles, *tool_files("prove")])
+    elif system.proofs:
         prove = runner.run(f"{system.name}-prove",
                            safestate_argv("prove", str(model), "--config", str(cfg), "--proofs", str(system.proofs),
                                           "--json"),

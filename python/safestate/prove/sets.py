@@ -16,7 +16,7 @@ from typing import Any, Callable
 import z3
 
 from ..tla.errors import Loc
-from .values import ProveError, eq, fresh_like, ite
+from .values import ProveError, eq, fresh_like
 
 
 class SetV:

@@ -59,6 +59,13 @@ class System:
     conformance: Conformance | None
     extra: dict[str, Any] = field(default_factory=dict)
 
+    @property
+    def expected_violation(self) -> str | None:
+        """The invariant a defective reference's model must violate (manifest key
+        `expected_check = "violated INV"`), or None for a system whose checks must pass."""
+        expected = str(self.extra.get("expected_check", ""))
+        return expected.removeprefix("violated ").strip() or None
+
     def load_adapter_class(self) -> type:
         """The conformance adapter class (loaded from its file, by path)."""
         if self.conformance is None:
