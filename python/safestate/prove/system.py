@@ -141,8 +141,8 @@ class System:
         one configured for QF_AUFLIA (measured on the flagship model).
         """
         if self._base_quantified is None:
-            self._base_quantified = any(_quantified(f) for f in (self.init, self.trans, self.assumptions, self.domain))
-        quantified = self._base_quantified or any(_quantified(f) for f in formulas)
+            self._base_quantified = _quantified(self.init, self.trans, self.assumptions, self.domain)
+        quantified = self._base_quantified or _quantified(*formulas)
         return z3.Solver() if quantified else z3.SolverFor("QF_AUFLIA")
 
     # ----------------------------------------------------------- models
@@ -164,12 +164,16 @@ class System:
             n: _set_value(v, model, self.strings) for n, v in self.params.items() if isinstance(v, EnumSet)}
 
 
-def _quantified(f: z3.ExprRef) -> bool:
-    """Does `f` contain a quantifier?  (Walks the DAG through the C API: z3py's wrappers are slow.)"""
+def _quantified(*formulas: z3.ExprRef) -> bool:
+    """Does one of `formulas` contain a quantifier?  (Walks the DAG through the C API:
+    z3py's wrappers are slow; one walk for all, since thousands of well-definedness
+    obligations share their path conditions.)"""
     from z3 import z3core as C
-    ctx = f.ctx.ref()
+    if not formulas:
+        return False
+    ctx = formulas[0].ctx.ref()
     seen: set[int] = set()
-    stack = [f.as_ast()]
+    stack = [f.as_ast() for f in formulas]
     while stack:
         a = stack.pop()
         i = C.Z3_get_ast_id(ctx, a)
