@@ -78,6 +78,8 @@ def test_whole_conformance_on_ci_cfg_has_no_mismatch_and_covers_every_transition
     res, h = full_run
     assert [f.mismatch.render() for f in res.found] == []
     assert res.transitions_covered == res.transitions_total > 0
+    if h.adapter.rows_operator is None:  # no C++ transition table (the presses): no rows to compare
+        return
     firing = sum(1 for ev in graph.events if h.adapter.fires_rows(ev))
     assert h.stats.row_checks >= firing > 0  # every row-firing transition's rows compared
 
