@@ -881,6 +881,14 @@ RSM05_RESET_ACCEPTED == last_accepted = "RESET" => obs_estop = "CLEAR" /\ ~obs_g
 \* a one-channel demand leaves a stuck channel undetected otherwise.
 RSM04_CHANNEL_TEST == last_accepted = "RESET" => obs_open_a /\ obs_open_b
 
+\* INV-POWER (RSM-03, RSM-16): drive power only in ARMING, OPERATIONAL,
+\* STOPPING and HOLD; in ESTOP_ACTIVE and ERROR_LOCKOUT the contactor is open
+\* and the brakes engaged. Read from the status record and the outputs, not
+\* from `state` (the outputs are defined from it, so that would be a
+\* tautology): a fault code shown (ERROR_LOCKOUT) or an E-stop demand not yet
+\* reset (ESTOP_ACTIVE / ESTOP_RESET_NEEDED) has every power output off.
+INV_POWER == Locked \/ obs_estop # "CLEAR" => Unpowered
+
 \* RSM-03/RSM-05: an E-stop demand on either channel removes drive power and
 \* engages the brakes in the same cycle (Cat 0); every axis disabled.
 RSM03_ESTOP_CAT0 ==
@@ -1071,6 +1079,8 @@ Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
 Witness_RSM13_LINK_LOSS      == ~obs_link_lost
 Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
+\* (the lockout part: the E-stop part is INV_RESET's witness)
+Witness_INV_POWER            == ~Locked
 
 -----------------------------------------------------------------------------
 (*********** Input profiles, substituted by the .cfg files with <- *********)
