@@ -198,6 +198,8 @@ Spec == Init /\ [][Next]_vars
 
 -----------------------------------------------------------------------------
 (******************************** Invariants *******************************)
+\* SAF-01: every variable in its type; the state one of PAIRING, OPERATIONAL,
+\* EMERGENCY, FAULT.
 TypeOK ==
     /\ state \in States
     /\ estop \in EstopViews

@@ -96,6 +96,7 @@ ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
 
 -----------------------------------------------------------------------------
 (***************************** Value sets (§4-§8) *************************)
+\* RSM-01: the manager's states (OPERATIONAL = the four AUTO_/MANUAL_ sub-states).
 States == {"BOOT", "ERROR_LOCKOUT", "ESTOP_ACTIVE", "ESTOP_RESET_NEEDED", "IDLE",
            "ARMING", "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE", "MANUAL_JOGGING",
            "STOPPING", "HOLD"}
@@ -808,6 +809,8 @@ queue_length         == Len(queue)
 (******************************* Invariants ********************************)
 JogType == {NoJog} \cup [axis: Axes, direction: {-1, 1}, speed_mm_s: Nat \ {0}]
 
+\* RSM-01: every variable in its type; the state one of the RSM-01 states, the
+\* stop category of STOPPING 1 or 2, HOLD a category 2 pause.
 TypeOK ==
     /\ state \in States
     /\ selector \in Selectors
