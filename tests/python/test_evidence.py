@@ -252,3 +252,19 @@ def test_evidence_parametrised_gtest_cases_fold_into_their_test(tmp_path: Path) 
                    '<testcase name="Inputs/RSM04_Discrepancy.Latches/Estop  # GetParam() = Estop" status="run"/>'
                    '</testsuite>')
     assert results(xml, "gtest") == {"RSM05_EstopPriority.Enters": "failed", "RSM04_Discrepancy.Latches": "passed"}
+
+
+def test_evidence_gap_reasons_keep_the_gap_counted_and_a_stale_one_is_shown(tmp_path: Path) -> None:
+    from safestate.evidence.matrix import REQUIREMENT_GAP_KINDS, Gap, _explained, _stale_reasons
+    from safestate.evidence.sources import RequirementLinkError, gap_reasons
+    page = tmp_path / "p.md"
+    page.write_text("- RSM-15 (no design row, no C++ row): a property of the whole C++, not a row.\n")
+    reasons = gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS)
+    gaps = _explained([Gap("no design row", "RSM-15", "generic"), Gap("no test", "RSM-15", "generic")], reasons)
+    assert gaps == [Gap("no design row", "RSM-15", "a property of the whole C++, not a row. (p.md:1)"),
+                    Gap("no test", "RSM-15", "generic")]
+    assert _stale_reasons(reasons, gaps) == [Gap("stale gap reason", "RSM-15",
+                                                 "p.md:1 explains 'no C++ row', which is not a gap of it")]
+    page.write_text("- RSM-15 (no row): x\n")
+    with pytest.raises(RequirementLinkError, match=r"p.md:1:11: no row: not a gap kind"):
+        gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS)

@@ -16,8 +16,8 @@ from ..errors import UsageError
 from ..systems.registry import System, load_all
 from . import diagrams, junit, manifest, render, sources, traces
 from .collect import Runner, StepResult
-from .matrix import (SystemFacts, build as build_matrix, cfg_invariants, check_verdict, conform_summary,
-                     proofs_by_invariant)
+from .matrix import (REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_verdict,
+                     conform_summary, proofs_by_invariant)
 from .render import SystemPage
 from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
 
@@ -97,10 +97,11 @@ def build(opts: Options) -> Result:
     try:
         tests = [t for d in [root / "tests" / "cpp", *sorted((root / "src").rglob("tests"))]
                  for t in sources.gtests(d, root, known)] + sources.pytests(root / "tests" / "python", root, known)
+        reasons = [g for p in pages for g in sources.gap_reasons(p, root, known, REQUIREMENT_GAP_KINDS)]
     except sources.RequirementLinkError as e:
         raise UsageError(str(e)) from None
     corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)], tests,
-                            [u for p in pages for u in sources.unreachable_rows(p, root)])
+                            [u for p in pages for u in sources.unreachable_rows(p, root)], reasons)
     runner = Runner(root, cache_dir(root), opts.reuse, opts.log)
 
     facts: list[SystemFacts] = []

@@ -8,8 +8,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..checker.cfg import parse_config
-from .sources import Corpus, DesignRow, Loc, ModelDef, Requirement, TestCase, Unreachable
+from .sources import Corpus, DesignRow, GapReason, Loc, ModelDef, Requirement, TestCase, Unreachable
+
 from .steps import SystemRuns
+
+# The gaps of one requirement that a design page may explain (sources.gap_reasons).
+REQUIREMENT_GAP_KINDS = {"no invariant", "no conformance", "no design row", "no C++ row", "no model operator",
+                         "no test"}
 
 
 @dataclass(frozen=True)
@@ -118,9 +123,10 @@ def build(corpus: Corpus, facts: list[SystemFacts], test_results: dict[str, str]
         e.tests = [(t, test_results.get(t.name, "not run")) for t in corpus.tests if req.id in t.requirements]
         for name in e.systems:
             _fill_system(e, by_name[name])
-        e.gaps = _requirement_gaps(e)
+        e.gaps = _explained(_requirement_gaps(e), corpus.gap_reasons)
         gaps += e.gaps
         entries.append(e)
+    gaps += _stale_reasons(corpus.gap_reasons, gaps)
     row_gaps, unreachable = _row_gaps(corpus, facts)
     gaps += _invariant_gaps(facts) + row_gaps
     return Matrix(entries, gaps, unreachable)
@@ -183,6 +189,20 @@ def _requirement_gaps(e: Entry) -> list[Gap]:
         if conf.get("mismatches"):
             out.append(Gap("conformance mismatch", rid, f"{name}: {conf.get('first_mismatch')}"))
     return out
+
+
+def _explained(gaps: list[Gap], reasons: list[GapReason]) -> list[Gap]:
+    """A gap a design page explains keeps its kind (it stays counted), with the reason."""
+    why = {(r.requirement, k): r for r in reasons for k in r.kinds}
+    return [Gap(g.kind, g.subject, f"{why[g.subject, g.kind].reason} ({why[g.subject, g.kind].loc})")
+            if (g.subject, g.kind) in why else g for g in gaps]
+
+
+def _stale_reasons(reasons: list[GapReason], gaps: list[Gap]) -> list[Gap]:
+    """A reason for a gap that is not there any more is itself shown (the page is out of date)."""
+    open_ = {(g.subject, g.kind) for g in gaps}
+    return [Gap("stale gap reason", r.requirement, f"{r.loc} explains '{k}', which is not a gap of it")
+            for r in reasons for k in r.kinds if (r.requirement, k) not in open_]
 
 
 def _invariant_gaps(facts: list[SystemFacts]) -> list[Gap]:

@@ -24,6 +24,8 @@ _PYREQ = re.compile(r"^\s*@pytest\.mark\.req\((.*)\)\s*$")
 _GTREQ = re.compile(r"^\s*// req:(.*)$")
 # "- K17 unreachable by construction: <reason>" on a design page.
 _UNREACHABLE = re.compile(r"^- ([A-Z]{1,2}\d{2}) unreachable by construction: (.+)$")
+# "- RSM-15 (no design row, no C++ row): <reason>": why a requirement's gap stays open.
+_GAP_REASON = re.compile(r"^- (" + REQ_ID.pattern[2:-2] + r") \(([^)]*)\): (.+)$")
 
 
 @dataclass(frozen=True)
@@ -71,6 +73,15 @@ class TestCase:
 
 
 @dataclass(frozen=True)
+class GapReason:
+    """A design page's reason why gaps of a requirement stay open (they stay counted)."""
+    requirement: str
+    kinds: tuple[str, ...]
+    reason: str
+    loc: Loc
+
+
+@dataclass(frozen=True)
 class Unreachable:
     """A design-page row its page declares unreachable by construction, with the reason."""
     page: str
@@ -85,6 +96,7 @@ class Corpus:
     rows: list[DesignRow] = field(default_factory=list)
     tests: list[TestCase] = field(default_factory=list)
     unreachable: list[Unreachable] = field(default_factory=list)
+    gap_reasons: list[GapReason] = field(default_factory=list)
 
 
 def rel(root: Path, p: Path) -> str:
@@ -283,4 +295,24 @@ def unreachable_rows(page: Path, root: Path) -> list[Unreachable]:
         m = _UNREACHABLE.match(line)
         if m:
             out.append(Unreachable(rel(root, page), m.group(1), m.group(2).strip(), Loc(rel(root, page), i)))
+    return out
+
+
+def gap_reasons(page: Path, root: Path, known: set[str], kinds: set[str]) -> list[GapReason]:
+    """The `- ID (kind, kind): reason` items of a design page; an unknown ID or kind is a
+    located error (a reason that explains nothing would pass unnoticed)."""
+    out = []
+    for i, line in enumerate(page.read_text(encoding="utf-8").splitlines(), start=1):
+        m = _GAP_REASON.match(line)
+        if not m:
+            continue
+        where = f"{rel(root, page)}:{i}"
+        if m.group(1) not in known:
+            raise RequirementLinkError(f"{where}:3: {m.group(1)}: not a requirement ID of REQUIREMENTS.md")
+        named = tuple(k.strip() for k in m.group(2).split(","))
+        bad = [k for k in named if k not in kinds]
+        if bad:
+            raise RequirementLinkError(f"{where}:{line.index('(') + 2}: {', '.join(bad)}: not a gap kind (expected "
+                                       f"one of: {', '.join(sorted(kinds))})")
+        out.append(GapReason(m.group(1), named, m.group(3).strip(), Loc(rel(root, page), i)))
     return out
