@@ -59,9 +59,14 @@ def test_evidence_gaps_are_counted_and_shown_in_red(package: Path) -> None:
     man = _manifest(package)
     html = (package / "index.html").read_text()
     assert f'id="gap-count">{man["gaps"]} gaps<' in html
-    # PLCopenAxis has no conformance adapter and 5 invariants no mutant targets: both are gaps.
+    # PLCopenAxis has no conformance adapter: a gap; each of its 8 invariants has a killing mutant.
     assert man["gap_kinds"]["no conformance"] == 1
-    assert man["gap_kinds"]["invariant without a mutant"] >= 1
+    assert "invariant without a mutant" not in man["gap_kinds"]
+    # RSM-17's rows: the gap stays counted, with the design page's reason (not a stale one:
+    # the reasons of requirements outside this package are not checked).
+    assert re.search(r'<td class="gap">no design row</td><td><code>RSM-17</code></td><td>§8&#x27;s two axis tables '
+                     r'have no row IDs.*\(docs/design/system-state-manager.md:\d+\)</td>', html)
+    assert "stale gap reason" not in man["gap_kinds"]
     assert html.count('<td class="gap">') >= man["gaps"]
     # SCH-05 is in no registered system: a gap, not silently dropped.
     assert re.search(r'<td class="gap">not in a registered system</td><td><code>SCH-05</code>', html)
@@ -86,7 +91,7 @@ def test_evidence_package_has_diagrams_counterexamples_and_raw_artefacts(package
                 "raw/PLCopenAxis/check.json", "raw/PLCopenAxis/prove.json", "raw/PLCopenAxis/prove.log"):
         assert (package / rel).is_file(), rel
     itfs = sorted((package / "mutants" / "PLCopenAxis").glob("*.itf.json"))
-    assert len(itfs) == 3
+    assert len(itfs) == 8
     for itf in itfs:
         assert json.loads(itf.read_text())["states"]
         assert "<svg" in itf.with_name(itf.name.replace(".itf.json", ".svg")).read_text()

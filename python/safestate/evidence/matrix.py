@@ -126,7 +126,8 @@ def build(corpus: Corpus, facts: list[SystemFacts], test_results: dict[str, str]
         e.gaps = _explained(_requirement_gaps(e), corpus.gap_reasons)
         gaps += e.gaps
         entries.append(e)
-    gaps += _stale_reasons(corpus.gap_reasons, gaps)
+    here = {e.req.id for e in entries if not e.outside}
+    gaps += _stale_reasons([r for r in corpus.gap_reasons if r.requirement in here], gaps)
     row_gaps, unreachable = _row_gaps(corpus, facts)
     gaps += _invariant_gaps(facts) + row_gaps
     return Matrix(entries, gaps, unreachable)
