@@ -207,6 +207,9 @@ def test_evidence_req_marker_links_a_test_and_an_unknown_id_is_a_located_error(t
     (tmp_path / "test_a.py").write_text('import pytest\n\n\n@pytest.mark.req("RSM-99")\ndef test_x():\n    pass\n')
     with pytest.raises(RequirementLinkError, match=r"test_a.py:4:19: RSM-99: not a requirement ID"):
         pytests(tmp_path, tmp_path, _known())
+    (tmp_path / "test_a.py").write_text('import pytest\n\n\n@pytest.mark.req(\n    "RSM-05")\ndef test_x():\n    pass\n')
+    with pytest.raises(RequirementLinkError, match=r'test_a.py:4:2: expected @pytest.mark.req\("ID", ...\) on one line'):
+        pytests(tmp_path, tmp_path, _known())
 
 
 def test_evidence_gtest_req_comment_links_the_test_right_below(tmp_path: Path) -> None:

@@ -265,7 +265,7 @@ def pytests(folder: Path, root: Path, known: set[str]) -> list[TestCase]:
             if r:
                 pending += declared_ids(r.group(1), line, known, f"{rel(root, f)}:{i}")
                 continue
-            if "pytest.mark.req" in line and not line.lstrip().startswith("#"):
+            if line.lstrip().startswith("@pytest.mark.req"):
                 raise RequirementLinkError(f"{rel(root, f)}:{i}:{line.index('pytest.mark.req') + 1}: expected "
                                            '@pytest.mark.req("ID", ...) on one line, above a test or a test class')
             c = _PYCLASS.match(line)
