@@ -79,6 +79,8 @@ class CheckResult:
     loop_step: Step | None = None
     # Every property the liveness counterexample violates, in .cfg order (TLC names them all).
     violated_properties: list[str] | None = None
+    # With several workers: their CPU seconds and the critical path's (see parallel.py).
+    parallel: dict | None = None
 
 
 class _Found(Exception):
@@ -415,7 +417,13 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
+    cpu_start = time.process_time()
     result = call_with_deep_stack(explorer.run)
+    if workers > 1:
+        coordinator_cpu = time.process_time() - cpu_start
+        result.parallel = {"workers": workers, "worker_cpu_seconds": [round(c, 3) for c in explorer.worker_cpu],
+                           "coordinator_cpu_seconds": round(coordinator_cpu, 3),
+                           "critical_path_cpu_seconds": round(coordinator_cpu + explorer.critical_cpu, 3)}
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness
         call_with_deep_stack(lambda: check_liveness(model, explorer, result))

@@ -66,6 +66,10 @@ class ParallelExplorer(Explorer):
                  progress: Callable[[str], None] | None, workers: int) -> None:
         super().__init__(model, graph, max_memory_mb, progress)
         self.workers = workers
+        # CPU seconds of each worker, and of the slowest worker summed over the phases
+        # (the search's critical path: what wall time would be on idle cores).
+        self.worker_cpu = [0.0] * workers
+        self.critical_cpu = 0.0
 
     def _expand_all(self) -> None:
         if not self.states:
@@ -104,8 +108,7 @@ class ParallelExplorer(Explorer):
             Explorer._expand_all(self)  # the level replayed sequentially, and any after it
 
     # ---------------------------------------------------------------- coordination
-    @staticmethod
-    def _gather(conns: list[Connection]) -> list[tuple]:
+    def _gather(self, conns: list[Connection]) -> list[tuple]:
         replies = []
         for c in conns:
             try:
@@ -115,6 +118,11 @@ class ParallelExplorer(Explorer):
             if r[0] == "crash":
                 raise _Fallback(r[1])
             replies.append(r)
+        if len(replies[0]) == 4:
+            # The phase ends when its slowest worker does: its CPU is on the critical path.
+            self.critical_cpu += max(r[3] for r in replies)
+            for i, r in enumerate(replies):
+                self.worker_cpu[i] += r[3]
         return replies
 
     @staticmethod
@@ -125,7 +133,7 @@ class ParallelExplorer(Explorer):
     def _coordinate(self, conns: list[Connection]) -> None:
         distinct, depth = len(self.states), 1
         while True:
-            expanded = self._gather(conns)  # phase 1: (flagged, memory exceeded, generated)
+            expanded = self._gather(conns)  # phase 1: (flagged, memory exceeded, generated, CPU s)
             if self._memory_exceeded(conns, expanded, distinct, depth):
                 return
             if any(r[0] for r in expanded):

@@ -25,8 +25,9 @@ from __future__ import annotations
 
 import os
 import pickle
+import time
 from array import array
-from bisect import bisect_left, bisect_right
+from bisect import bisect_left
 from multiprocessing.connection import Connection
 from typing import Any
 
@@ -35,7 +36,6 @@ from ..tla.env import UNSET
 from .model import Model
 
 RANK_BITS = 32  # a sort key packs (position in level, rank) into one signed 64-bit int
-MEMORY_CHECK_EVERY = 20000
 
 
 def pss_mb() -> float:
@@ -63,78 +63,77 @@ class ShardWorker:
         self.n = n
         self.folder = folder
         self.conn = conn
+        self.keyed = model.view is not None or model.symmetry is not None
         # The shards split the states evenly, so each worker gets an even share of the limit.
         self.memory_share_mb = max_memory_mb / n
-        self.seen: set = set()
+        # key -> the state's local index once stored, or its best candidate
+        # (sort key, state, leaf[, key]) during the level that discovers it.
+        self.known: dict[Any, Any] = {}
         self.states: list[tuple] = []
-        self.level = array("i")
+        self.level_start = [0, 0]  # local index of each level's first state (levels from 1)
         self.pos = array("q")      # position in its level's global BFS order
         self.ppos = array("q")     # the parent's position in the previous level
         self.leaf = array("i")
-        self.frontier: list[int] = []  # local indices of the level being expanded, in BFS order
-        self.depth = 1
+        self.depth = 1             # the level being expanded
         self.memory_exceeded = False
+        self.phase_start = time.process_time()
 
     # ---------------------------------------------------------------- helpers
-    def owner(self, key: Any) -> int:
-        return hash(key) % self.n
-
     def _path(self, kind: str, src: int, dst: int = 0, depth: int | None = None) -> str:
         return os.path.join(self.folder, f"{kind}{self.depth if depth is None else depth}_{src}_{dst}")
 
-    def _store(self, st: tuple, level: int, pos: int, ppos: int, leaf: int) -> int:
-        idx = len(self.states)
-        self.states.append(st)
-        self.level.append(level)
-        self.pos.append(pos)
-        self.ppos.append(ppos)
-        self.leaf.append(leaf)
-        if idx % MEMORY_CHECK_EVERY == MEMORY_CHECK_EVERY - 1 and pss_mb() > self.memory_share_mb:
+    def _barrier(self, flagged: bool, count: int) -> str:
+        """Report this phase (with the CPU seconds it took), wait for the coordinator's decision."""
+        now = time.process_time()
+        self.conn.send((flagged, self.memory_exceeded, count, now - self.phase_start))
+        decision = self.conn.recv()
+        self.phase_start = time.process_time()
+        return decision
+
+    def _check_memory(self) -> None:
+        if pss_mb() > self.memory_share_mb:
             self.memory_exceeded = True
             raise _Flag()
-        return idx
-
-    def _barrier(self, flagged: bool, count: int) -> str:
-        """Report this phase, wait for the coordinator's decision."""
-        self.conn.send((flagged, self.memory_exceeded, count))
-        return self.conn.recv()
 
     # ---------------------------------------------------------------- the search
     def run(self, initial: list[tuple]) -> None:
         m = self.m
-        keyed = m.view is not None or m.symmetry is not None
         for p, st in enumerate(initial):
-            key = m.key(st) if keyed else st
-            if self.owner(key) == self.me:
-                self.seen.add(key)
-                self.frontier.append(self._store(st, 1, p, -1, -1))
+            key = m.key(st) if self.keyed else st
+            if hash(key) % self.n == self.me:
+                self.known[key] = len(self.states)
+                self.states.append(st)
+                self.pos.append(p)
+                self.ppos.append(-1)
+                self.leaf.append(-1)
+        self.level_start.append(len(self.states))
         while True:
-            candidates: dict[Any, tuple] = {}
-            flagged, generated = self._expand(candidates)
+            fresh: list = []
+            flagged, generated = self._expand(fresh)
             decision = self._barrier(flagged, generated)
             if self.depth > 1:  # every worker has read the previous level's key files
                 os.unlink(self._path("K", self.me, 0, self.depth - 1))
             if decision != "merge":
                 return self._stop(decision)
-            flagged, new, sort_keys = self._merge(candidates)
-            decision = self._barrier(flagged, len(new))
+            flagged, new = self._merge(fresh)
+            decision = self._barrier(flagged, new)
             if decision != "number":
                 return self._stop(decision)
-            self._number(new, sort_keys)
+            self._number()
 
-    def _expand(self, candidates: dict) -> tuple[bool, int]:
-        """Phase 1.  Returns (flagged, states generated)."""
-        m, me, n = self.m, self.me, self.n
-        seen = self.seen
-        keyed = m.view is not None or m.symmetry is not None
+    def _expand(self, fresh: list) -> tuple[bool, int]:
+        """Phase 1: expand the level's states; `fresh` gets the keys of the new owned
+        candidates.  Returns (flagged, states generated)."""
+        m, me, n, keyed = self.m, self.me, self.n, self.keyed
+        known = self.known
         constrained = bool(m.constraints or m.action_constraints)
         invariants, action_properties, holds = m.invariants, m.action_properties, m.holds
         outgoing: list[dict] = [{} for _ in range(n)]
-        generated = 0
         cur: tuple = ()
-        p = rank = 0
+        base = rank = 0
 
         def on_succ(st: tuple, leaf: int, L: list) -> None:
+            # The hot path: kept to the checks that apply, as Explorer.expand's on_succ.
             nonlocal rank
             r = rank
             rank = r + 1
@@ -149,22 +148,39 @@ class ShardWorker:
                     if not holds(inv, st):
                         raise _Flag()
                 return
-            key = m.key(st) if keyed else st
-            dest = hash(key) % n
+            if keyed:
+                key = m.key(st)
+                dest = hash(key) % n
+                if dest == me:
+                    if key not in known:
+                        known[key] = (base + r, st, leaf, key)
+                        fresh.append(key)
+                else:
+                    batch = outgoing[dest]
+                    if key not in batch:
+                        batch[key] = (base + r, st, leaf, key)
+                return
+            dest = hash(st) % n
             if dest == me:
-                if key not in seen and key not in candidates:
-                    candidates[key] = (st, p, r, leaf)
+                if st not in known:
+                    known[st] = (base + r, st, leaf)
+                    fresh.append(st)
             else:
                 batch = outgoing[dest]
-                if key not in batch:
-                    batch[key] = (st, p, r, leaf)
+                if st not in batch:
+                    batch[st] = (base + r, st, leaf)
 
         flagged = False
+        generated = 0
+        states, pos = self.states, self.pos
+        deadlock = m.check_deadlock
         try:
-            for li in self.frontier:
-                cur, p, rank = self.states[li], self.pos[li], 0
+            for li in range(self.level_start[self.depth], len(states)):
+                cur, base, rank = states[li], pos[li] << RANK_BITS, 0
+                if not li & 4095:
+                    self._check_memory()
                 m.run_next(cur, on_succ)
-                if rank == 0 and m.check_deadlock:
+                if rank == 0 and deadlock:
                     raise _Flag()
                 if rank >> RANK_BITS:
                     raise _Flag()  # cannot be numbered; the replay handles the level
@@ -175,16 +191,14 @@ class ShardWorker:
             flagged = True
         for dest, batch in enumerate(outgoing):
             if dest != me:
-                entries = list(batch.items()) if keyed else list(batch.values())
                 with open(self._path("B", me, dest), "wb") as f:
-                    pickle.dump(entries, f, protocol=pickle.HIGHEST_PROTOCOL)
+                    pickle.dump(list(batch.values()), f, protocol=pickle.HIGHEST_PROTOCOL)
         return flagged, generated
 
-    def _merge(self, candidates: dict) -> tuple[bool, list[int], array]:
-        """Phase 2.  Returns (flagged, local indices of the new states in BFS order,
-        their sort keys)."""
-        m, seen = self.m, self.seen
-        keyed = m.view is not None or m.symmetry is not None
+    def _merge(self, fresh: list) -> tuple[bool, int]:
+        """Phase 2: merge the batches sent here, store the new states in BFS order and
+        check the invariants on them.  Returns (flagged, number of new states)."""
+        m, known, keyed = self.m, self.known, self.keyed
         for src in range(self.n):
             if src == self.me:
                 continue
@@ -192,33 +206,46 @@ class ShardWorker:
             with open(path, "rb") as f:
                 entries = pickle.load(f)
             os.unlink(path)
-            for entry in entries:
-                key, c = entry if keyed else (entry[0], entry)
-                if key in seen:
-                    continue
-                old = candidates.get(key)
-                if old is None or (c[1], c[2]) < (old[1], old[2]):
-                    candidates[key] = c
-        ordered = sorted(candidates.items(), key=lambda kc: (kc[1][1], kc[1][2]))
-        sort_keys = array("q", [(c[1] << RANK_BITS) | c[2] for _, c in ordered])
+            for c in entries:
+                key = c[3] if keyed else c[1]
+                old = known.get(key)
+                if old is None:
+                    known[key] = c
+                    fresh.append(key)
+                elif type(old) is tuple and c[0] < old[0]:
+                    known[key] = c
+        # Sort keys are unique, so the candidates sort by them alone.
+        ordered = sorted([known[k] for k in fresh])
+        first = len(self.states)
+        if keyed:
+            for i, c in enumerate(ordered):
+                known[c[3]] = first + i
+        else:
+            for i, c in enumerate(ordered):
+                known[c[1]] = first + i
+        sort_keys = array("q", [c[0] for c in ordered])
         with open(self._path("K", self.me), "wb") as f:
             sort_keys.tofile(f)
-        new: list[int] = []
+        new_states = [c[1] for c in ordered]
+        self.states.extend(new_states)
+        self.ppos.extend(array("q", [c[0] >> RANK_BITS for c in ordered]))
+        self.leaf.extend(array("i", [c[2] for c in ordered]))
+        self.sort_keys = sort_keys
         flagged = False
-        next_level = self.depth + 1
         try:
-            for key, (st, p, _, leaf) in ordered:
-                seen.add(key)
-                new.append(self._store(st, next_level, -1, p, leaf))
-                for inv in m.invariants:
-                    if not m.holds(inv, st):
+            self._check_memory()
+            holds = m.holds
+            for inv in m.invariants:
+                for st in new_states:
+                    if not holds(inv, st):
                         raise _Flag()
         except Exception:
             flagged = True
-        return flagged, new, sort_keys
+        return flagged, len(ordered)
 
-    def _number(self, new: list[int], sort_keys: array) -> None:
-        """Phase 3: positions of the new states in the next level; they become the frontier."""
+    def _number(self) -> None:
+        """Phase 3: positions of the new states in the next level (their rank among every
+        worker's new sort keys); they become the level to expand."""
         others = []
         for src in range(self.n):
             if src != self.me:
@@ -226,19 +253,26 @@ class ShardWorker:
                 with open(self._path("K", src), "rb") as f:
                     keys.frombytes(f.read())
                 others.append(keys)
-        for i, li in enumerate(new):
-            k = sort_keys[i]
-            self.pos[li] = i + sum(bisect_left(o, k) for o in others)
-        self.frontier = new
+        sort_keys = self.sort_keys
+        if len(others) == 1:
+            other = others[0]
+            self.pos.extend(array("q", [i + bisect_left(other, k) for i, k in enumerate(sort_keys)]))
+        else:
+            self.pos.extend(array("q", [i + sum(bisect_left(o, k) for o in others)
+                                        for i, k in enumerate(sort_keys)]))
         self.depth += 1
+        self.level_start.append(len(self.states))
 
     def _stop(self, decision: str) -> None:
         """The coordinator stops the search; on "dump" it replays the level being
         expanded, so it gets every stored state of that level and the ones before."""
         if decision == "dump":
-            keep = bisect_right(self.level, self.depth)
+            keep = self.level_start[self.depth + 1]
+            levels = array("i")
+            for lv in range(1, self.depth + 1):
+                levels.extend(array("i", [lv]) * (self.level_start[lv + 1] - self.level_start[lv]))
             path = self._path("D", self.me)
             with open(path, "wb") as f:
-                pickle.dump((self.states[:keep], self.level[:keep], self.pos[:keep], self.ppos[:keep],
+                pickle.dump((self.states[:keep], levels, self.pos[:keep], self.ppos[:keep],
                              self.leaf[:keep]), f, protocol=pickle.HIGHEST_PROTOCOL)
             self.conn.send((path,))
