@@ -39,6 +39,7 @@ from multiprocessing.connection import Connection
 from typing import Any, Callable
 
 from ..tla.errors import TlaError
+from . import explore
 from .explore import CheckResult, Explorer
 from .model import Model
 from .shard_worker import ShardWorker
@@ -158,7 +159,7 @@ class ParallelExplorer(Explorer):
 
     def _level_progress(self, depth: int, distinct: int, queued: int) -> None:
         now = time.monotonic()
-        if self.progress is not None and now - self.last_progress >= 5.0:
+        if self.progress is not None and now - self.last_progress >= explore.PROGRESS_SECONDS:
             self.last_progress = now
             self.progress(f"Progress({depth}): {self.generated} states generated, {distinct} distinct states "
                           f"found, {queued} states left on queue.")
