@@ -23,6 +23,7 @@ level sequentially (`parallel.py`), so counts and traces are those of one worker
 
 from __future__ import annotations
 
+import copyreg
 import os
 import pickle
 import time
@@ -33,6 +34,7 @@ from typing import Any
 
 from ..tla.enum_watch import rss_mb
 from ..tla.env import UNSET
+from ..tla.values import FnValue
 from .model import Model
 
 RANK_BITS = 32  # a sort key packs (position in level, rank) into one signed 64-bit int
@@ -49,6 +51,31 @@ def pss_mb() -> float:
     except OSError:
         pass
     return rss_mb()
+
+
+def _fn_with_hash(d: dict, h: int) -> FnValue:
+    fv = FnValue(d)
+    fv._hash = h
+    return fv
+
+
+def _reduce_fn(fv: FnValue) -> tuple:
+    return (_fn_with_hash, (fv.d, hash(fv)))
+
+
+# Records and functions travel with their hash: every worker is a fork of the same
+# process (same string-hash seed, same interned model values), so the receiver need not
+# rebuild a frozenset per record to hash it again.  Only for these files: a pickle that
+# outlives the run (the graph cache) must not carry hashes.
+_DISPATCH = dict(copyreg.dispatch_table)
+_DISPATCH[FnValue] = _reduce_fn
+
+
+def dump_between_workers(obj: Any, path: str) -> None:
+    with open(path, "wb") as f:
+        pickler = pickle.Pickler(f, protocol=pickle.HIGHEST_PROTOCOL)
+        pickler.dispatch_table = _DISPATCH
+        pickler.dump(obj)
 
 
 class _Flag(Exception):
@@ -191,8 +218,7 @@ class ShardWorker:
             flagged = True
         for dest, batch in enumerate(outgoing):
             if dest != me:
-                with open(self._path("B", me, dest), "wb") as f:
-                    pickle.dump(list(batch.values()), f, protocol=pickle.HIGHEST_PROTOCOL)
+                dump_between_workers(list(batch.values()), self._path("B", me, dest))
         return flagged, generated
 
     def _merge(self, fresh: list) -> tuple[bool, int]:
@@ -272,7 +298,6 @@ class ShardWorker:
             for lv in range(1, self.depth + 1):
                 levels.extend(array("i", [lv]) * (self.level_start[lv + 1] - self.level_start[lv]))
             path = self._path("D", self.me)
-            with open(path, "wb") as f:
-                pickle.dump((self.states[:keep], levels, self.pos[:keep], self.ppos[:keep],
-                             self.leaf[:keep]), f, protocol=pickle.HIGHEST_PROTOCOL)
+            dump_between_workers((self.states[:keep], levels, self.pos[:keep], self.ppos[:keep],
+                                  self.leaf[:keep]), path)
             self.conn.send((path,))
