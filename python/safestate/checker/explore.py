@@ -420,10 +420,7 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
     cpu_start = time.process_time()
     result = call_with_deep_stack(explorer.run)
     if workers > 1:
-        coordinator_cpu = time.process_time() - cpu_start
-        result.parallel = {"workers": workers, "worker_cpu_seconds": [round(c, 3) for c in explorer.worker_cpu],
-                           "coordinator_cpu_seconds": round(coordinator_cpu, 3),
-                           "critical_path_cpu_seconds": round(coordinator_cpu + explorer.critical_cpu, 3)}
+        result.parallel = explorer.cpu_report(time.process_time() - cpu_start)  # type: ignore[attr-defined]
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness
         call_with_deep_stack(lambda: check_liveness(model, explorer, result))

@@ -108,6 +108,12 @@ class ParallelExplorer(Explorer):
         if self.outcome is None and self.head < len(self.states):
             Explorer._expand_all(self)  # the level replayed sequentially, and any after it
 
+    def cpu_report(self, coordinator_cpu: float) -> dict:
+        """`--json`'s "parallel": the workers' CPU and the critical path's (with this process's)."""
+        return {"workers": self.workers, "worker_cpu_seconds": [round(c, 3) for c in self.worker_cpu],
+                "coordinator_cpu_seconds": round(coordinator_cpu, 3),
+                "critical_path_cpu_seconds": round(coordinator_cpu + self.critical_cpu, 3)}
+
     # ---------------------------------------------------------------- coordination
     def _gather(self, conns: list[Connection]) -> list[tuple]:
         replies = []
