@@ -186,7 +186,8 @@ class Adapter:
         return event.param()
 
     def plan_config(self) -> Any:
-        """The first argument of the binding's PlanReplayer (what builds a fresh object)."""
+        """The leading argument of the binding's PlanReplayer (what builds a fresh object);
+        a tuple is several leading arguments."""
         return self.config()
 
     def has_plan_replay(self) -> bool:

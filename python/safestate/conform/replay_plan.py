@@ -18,9 +18,10 @@ from __future__ import annotations
 
 import hashlib
 import inspect
+import time
 from array import array
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -150,10 +151,18 @@ class PlanBuilder:
         p.starts.append(flat)
 
 
-def build(adapter: Adapter, traces: Iterable[ConcreteTrace], check_rows: bool = True) -> ReplayPlan:
+PROGRESS_SECONDS = 5.0
+
+
+def build(adapter: Adapter, traces: Iterable[ConcreteTrace], check_rows: bool = True,
+          progress: Callable[[str], None] | None = None) -> ReplayPlan:
     b = PlanBuilder(adapter, check_rows)
+    last = time.monotonic()
     for ct in traces:
         b.add(ct)
+        if progress and time.monotonic() - last >= PROGRESS_SECONDS:
+            last = time.monotonic()
+            progress(f"conform: building the replay plan: {b.plan.traces} traces, {len(b.plan.call_ids)} steps")
     return b.plan
 
 
@@ -171,17 +180,20 @@ def plan_key(adapter: Adapter, graph: StateGraph, options: str) -> str:
 
 
 def cached_build(adapter: Adapter, graph: StateGraph, traces: Iterable[ConcreteTrace], options: str,
-                 check_rows: bool, progress: Any = None) -> ReplayPlan:
+                 check_rows: bool, progress: Callable[[str], None] | None = None) -> ReplayPlan:
     """`build`, reusing the plan of an earlier run with the same `plan_key` (on disk, beside
     the graph cache; safe for parallel processes as the graph cache is)."""
     stem = Path(adapter.stepper.model.module.file).stem
     path = cache_dir() / f"{stem}-plan-{plan_key(adapter, graph, options)}.pickle"
-    return cached_pickle(path, ReplayPlan, lambda: build(adapter, traces, check_rows), "replay plan", progress)
+    return cached_pickle(path, ReplayPlan, lambda: build(adapter, traces, check_rows, progress), "replay plan",
+                         progress)
 
 
 def replayer(adapter: Adapter, plan: ReplayPlan) -> Any:
     """The binding's PlanReplayer over the plan (the adapter's calls for the plan's events)."""
     p = plan
-    return adapter.core.PlanReplayer(adapter.plan_config(), [adapter.plan_call(e) for e in p.events], p.lines,
-                                     p.aux, p.row_lines, p.starts, p.call_ids, p.exp_ids, p.initial_ids,
-                                     p.rows_at, p.rows_exp)
+    config = adapter.plan_config()
+    head = config if isinstance(config, tuple) else (config,)
+    return adapter.core.PlanReplayer(*head, [adapter.plan_call(e) for e in p.events], p.lines, p.aux,
+                                     p.row_lines, p.starts, p.call_ids, p.exp_ids, p.initial_ids, p.rows_at,
+                                     p.rows_exp)
