@@ -10,30 +10,64 @@ from pathlib import Path
 import pytest
 
 from safestate.checker.model import load_model
-from safestate.conform import replay_plan
+from safestate.conform import conformance, replay_plan
 from safestate.conform.cli import make_harness
 from safestate.conform.graph import StateGraph
 from safestate.conform.traces import ConcreteTrace, Step
-from safestate.systems.registry import find
+from safestate.systems.registry import find, load_all
 
 REPO = Path(__file__).resolve().parents[2]
 STEPS = 300
+# Every registered system whose adapter and binding replay as a plan.
+PLAN_SYSTEMS = ["SystemStateManager", "SafetyService", "RuntimeSupervisor"]
+
+
+def seeded_walk(name: str, steps: int = STEPS):
+    """(harness, [the walk, its first half]) of a seeded random walk of the system's model."""
+    system = find(name, REPO / "systems")
+    model = load_model(str(system.model), str(system.conformance.config or system.ci_config))
+    h = make_harness(system, model)
+    rng = random.Random(7)
+    state = model.initial_states()[0]
+    walk = []
+    for i in range(steps):
+        event, state = rng.choice(h.stepper.transitions(state))
+        walk.append(Step(event, state, i))  # edge ids: each step a transition of its own
+    start = model.initial_states()[0]
+    return h, [ConcreteTrace(start, walk), ConcreteTrace(start, walk[:steps // 2])]
 
 
 @pytest.fixture(scope="module")
 def walk():
-    system = find("SystemStateManager", REPO / "systems")
-    model = load_model(str(system.model), str(system.ci_config))
-    h = make_harness(system, model)
-    rng = random.Random(7)
-    state = model.initial_states()[0]
-    steps = []
-    for i in range(STEPS):
-        event, state = rng.choice(h.stepper.transitions(state))
-        steps.append(Step(event, state, i))  # edge ids: each step a transition of its own
-    # two traces: the walk and its first half
-    return h, [ConcreteTrace(model.initial_states()[0], steps), ConcreteTrace(model.initial_states()[0],
-                                                                               steps[:STEPS // 2])]
+    return seeded_walk("SystemStateManager")
+
+
+def test_every_registered_system_with_a_plan_replay_is_listed():
+    with_plan = []
+    for s in load_all(REPO / "systems"):
+        if s.conformance is None:
+            continue
+        model = load_model(str(s.model), str(s.conformance.config or s.ci_config))
+        if make_harness(s, model).adapter.has_plan_replay():
+            with_plan.append(s.name)
+    assert sorted(with_plan) == sorted(PLAN_SYSTEMS)
+
+
+@pytest.mark.parametrize("name", PLAN_SYSTEMS)
+def test_plan_replay_agrees_with_step_by_step_replay_on_a_walk(name):
+    """The binding's PlanReplayer and the adapter's apply/observe agree with the model on
+    the same walk (the expected lines are the binding's own observe lines)."""
+    h, traces = seeded_walk(name, 200)
+    for ct in traces:
+        mm, n = conformance.replay_trace(h, ct)
+        assert mm is None and n == len(ct.steps)
+    plan = replay_plan.build(h.adapter, traces)
+    assert replay_plan.replayer(h.adapter, plan).run(0, 2) == (-1, -1)
+    # and a wrong expected line after the last step is caught there
+    plan.lines.append("not an observe line|")
+    plan.aux.append(0)
+    plan.exp_ids[len(plan.exp_ids) - 1] = len(plan.lines) - 1
+    assert replay_plan.replayer(h.adapter, plan).run(0, 2) == (1, len(traces[1].steps) - 1)
 
 
 def test_plan_replay_agrees_with_the_model_on_a_walk(walk):
