@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from types import ModuleType
 
 from ..checker.model import Model
-from ..errors import UsageError
+from ..errors import SafestateError, UsageError
 from . import itf_io, replay_plan
 from .cover import Trace, bfs_tree, cover, tree_path
 from .graph import StateGraph
@@ -89,6 +89,11 @@ def run(model: Model, core: ModuleType, graph: StateGraph, harness: Harness, opt
     return res
 
 
+class PlanDisagreement(SafestateError):
+    """The compact plan and the step-by-step replay disagree on a trace: a bug in an
+    adapter's plan methods or its binding's PlanReplayer, never a verdict on the C++."""
+
+
 PLAN_CHUNK = 20000  # traces per PlanReplayer.run call (a progress line between calls)
 
 
@@ -111,14 +116,19 @@ def _run_plan(model: Model, graph: StateGraph, h: Harness, opts: Options, plan: 
     i = 1
     while i < cp.traces:
         t_rep = time.monotonic()
-        bad, _ = rp.run(i, min(i + PLAN_CHUNK, cp.traces))
+        bad, step = rp.run(i, min(i + PLAN_CHUNK, cp.traces))
         res.replay_seconds += time.monotonic() - t_rep
         cut = bad if bad >= 0 else min(i + PLAN_CHUNK, cp.traces)
         _account(cp, h, res, covered, i, cut)
         i = cut
         if bad >= 0:
+            found = len(res.found)
             if _slow_one(model, graph, h, opts, plan, mat, parent, res, covered, i):
                 return
+            if len(res.found) == found:
+                raise PlanDisagreement(f"the plan replay disagrees at trace {i} step {step + 1}, the step-by-step "
+                                       f"replay of that trace does not: {type(adapter).__name__}.expected_line (or "
+                                       f"plan_call / state_aux) does not match the binding's PlanReplayer")
             i += 1
         if opts.progress and time.monotonic() - last >= PROGRESS_SECONDS:
             last = time.monotonic()
