@@ -73,7 +73,6 @@ def main() -> None:
     bad, _ = h.adapter.fast_replay([trace], [])
     fast_s = time.perf_counter() - t0
     assert bad == -1, "the batched replay disagrees with the model on the walk"
-    h.adapter._exp_ix = {}  # the plan interns the expected lines afresh, as on a cache miss
     t0 = time.perf_counter()
     plan = replay_plan.build(h.adapter, [trace])
     rp = replay_plan.replayer(h.adapter, plan)
