@@ -1220,7 +1220,8 @@ class Compiler:
 
     def _product(self, e: A.Apply, env: Env) -> Code:
         codes = [self.expr(x, env) for x in e.args]
-        return _guard(lambda s, t, L: ProductSet(tuple(_need_set(c(s, t, L), "\\X") for c in codes)), e.loc)
+        # Factors are checked when the product is used (values.ProductSet), as by TLC.
+        return _guard(lambda s, t, L: ProductSet(tuple(c(s, t, L) for c in codes)), e.loc)
 
     def membership(self, set_expr: A.Expr, env: Env) -> Callable[[Any, Any, list, Value], bool]:
         """Compile ``v \\in set_expr`` without building structured sets."""
