@@ -263,19 +263,36 @@ class TemporalCompiler:
         return self.pred(e, scope, binds)
 
     def _live(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:
-        """A state predicate inside a liveness formula.  One that reads no variable is
-        evaluated now, as TLC's tableau construction does (`Liveness.astToLive`): an
-        error in it stops TLC before the search, with exit code 255."""
+        """A state predicate inside a liveness formula.  Its parts that read no
+        variable (below its boolean connectives) are evaluated now, as TLC's tableau
+        construction does (`Liveness.astToLive`): an error in one stops TLC before the
+        search, with exit code 255."""
         pred = self._state(e, scope, binds)
-        env, _ = self._env(scope, binds)
-        if not self.compiler.info(e, env).vars:
-            try:
-                pred.code(None, None, pred.base.copy())
-            except TlaError as err:
-                if err.kind not in ("eval", "module eval"):
-                    raise
-                raise TlaError("module eval", err.message, err.loc or e.loc) from None
+        self._eval_constant_parts(e, scope, binds)
         return pred
+
+    def _eval_constant_parts(self, e: A.Expr, scope: Scope, binds: dict) -> None:
+        if isinstance(e, (A.And, A.Or)):
+            for item in e.items:
+                self._eval_constant_parts(item, scope, binds)
+            return
+        if isinstance(e, A.Unary) and e.op in ("~", "\\lnot", "\\neg"):
+            self._eval_constant_parts(e.arg, scope, binds)
+            return
+        if isinstance(e, A.Binary) and e.op == "=>":
+            self._eval_constant_parts(e.lhs, scope, binds)
+            self._eval_constant_parts(e.rhs, scope, binds)
+            return
+        env, _ = self._env(scope, binds)
+        if self.compiler.info(e, env).vars:
+            return
+        pred = self.pred(e, scope, binds)
+        try:
+            pred.code(None, None, pred.base.copy())
+        except TlaError as err:
+            if err.kind not in ("eval", "module eval"):
+                raise
+            raise TlaError("module eval", err.message, err.loc or e.loc) from None
 
     def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:
         p = self.pred(e, scope, binds)
