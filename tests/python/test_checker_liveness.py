@@ -62,6 +62,10 @@ def _holds_on_lasso(model: Model, r: CheckResult) -> None:
             return any(p(s) and not any(q(x) for x in states[i:] + cycle) for i, s in enumerate(states))
         if ob.kind == "stays":
             return any(p(s) and not all(q(x) for x in states[i:]) for i, s in enumerate(states))
+        if ob.kind == "init_always":
+            return p(states[0]) and not all(q(x) for x in states)
+        if ob.kind == "init_eventually":
+            return p(states[0]) and not any(q(x) for x in states)
         never_taken = not any(ob.forbid(s, t) for s, t in steps)
         if ob.kind == "wf":
             return never_taken and all(p(s) for s in cycle)
@@ -198,11 +202,13 @@ def test_liveness_fairness_and_step_formulas_as_properties() -> None:
 
 
 def test_liveness_nested_temporal_formulas_are_checked_as_their_equivalent_forms() -> None:
-    """[](P => <>Q) is P ~> Q, [](P => []Q) is checked as such, <>[]<>P is []<>P and
-    []<>[]P is <>[]P (their verdicts against TLC are in expected.json)."""
+    """[](P => <>Q) is P ~> Q, [](P => []Q) is checked as such, <>[]<>P is []<>P,
+    []<>[]P is <>[]P, and P => <>Q / P => []Q test P on the initial state (their
+    verdicts against TLC are in expected.json)."""
     kinds = [(ob.name, ob.kind) for ob in load_model(str(LIVENESS / "NestedTemporal.tla")).liveness]
     assert kinds == [("ReqLeadsToAck", "leadsto"), ("LatchStays", "stays"), ("AckInfinitelyOften", "infinitely"),
-                     ("LatchedForGood", "stable")]
+                     ("LatchedForGood", "stable"), ("IdleThenAck", "init_eventually"),
+                     ("IdleThenSafe", "init_always")]
 
 
 def test_liveness_quantified_fairness_over_parameterised_actions_is_accepted() -> None:

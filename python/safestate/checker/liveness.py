@@ -14,8 +14,11 @@ property       the tail starts at a state  every tail state       infinitely oft
 ``WF_v(A)``    with ENABLED <<A>>_v        ENABLED <<A>>_v,       -
                                            no <<A>>_v step
 ``SF_v(A)``    any                         no <<A>>_v step        ENABLED <<A>>_v
-``[](P =>``    with ~Q, after a state          any                    -
+``[](P =>``    with ~Q, after a state      any                    -
 ``[]Q)``       with P (an extra phase)
+``P => []Q``   with ~Q, after an initial   any                    -
+               state with P (extra phase)
+``P => <>Q``   initial, with P /\\ ~Q      satisfies ~Q           -
 =============  ==========================  =====================  ==================
 
 The behaviour graph is the product of the state graph with this two-phase
@@ -130,7 +133,7 @@ class LivenessChecker:
         n = self.g.n
         self._forbid = ob.forbid
         self._rows = {}
-        self.k = 3 if ob.kind == "stays" else 2  # automaton phases; the last one is the tail
+        self.k = 3 if ob.kind in ("stays", "init_always") else 2  # automaton phases; the last is the tail
         k = self.k
         stay, start, visit = self._masks(ob)
         dist, parent = self._product_bfs(ob, stay, start)
@@ -172,10 +175,14 @@ class LivenessChecker:
             s = states[v]
             if ob.kind in ("stable", "sf", "infinitely_step"):
                 stay[v] = start[v] = 1
-            elif ob.kind == "stays":
+            elif ob.kind in ("stays", "init_always"):
                 assert q is not None
                 stay[v] = 1
                 start[v] = not q(s)
+            elif ob.kind == "init_eventually":
+                assert q is not None
+                stay[v] = not q(s)
+                start[v] = stay[v] and p(s)
             elif ob.kind == "wf":
                 stay[v] = start[v] = p(s)
             elif ob.kind == "leadsto":
@@ -202,9 +209,12 @@ class LivenessChecker:
         parent = array("q", [-1]) * (k * n)
         dq: deque[int] = deque()
         for v in self.initial:
-            node = k * v + last if ob.kind == "eventually" else k * v
-            if ob.kind == "eventually" and not start[v]:
+            if ob.kind == "init_always" and not p(states[v]):
+                continue  # P => []Q holds on behaviours from here
+            if ob.kind in ("eventually", "init_eventually") and not start[v]:
                 continue
+            node = k * v + (last if ob.kind in ("eventually", "init_eventually") else
+                            1 if ob.kind == "init_always" else 0)
             if dist[node] < 0:
                 dist[node] = 0
                 dq.append(node)
@@ -391,6 +401,12 @@ def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) 
     if ob.kind == "stays":
         assert q is not None
         return any(p(s) and not all(q(x) for x in states[i:]) for i, s in enumerate(states))
+    if ob.kind == "init_always":
+        assert q is not None
+        return p(states[0]) and not all(q(x) for x in states)
+    if ob.kind == "init_eventually":
+        assert q is not None
+        return p(states[0]) and not any(q(x) for x in states)
     assert forbid is not None
     taken = any(forbid(s, t) for s, t in steps)
     if ob.kind == "infinitely_step":

@@ -15,6 +15,7 @@
     are equivalent to one of these are rewritten first (`_normal`):
     ``[](P => <>Q)`` is ``P ~> Q`` (its definition), ``[][]F`` is ``[]F``,
     ``<><>F`` is ``<>F``, ``<>[]<>P`` is ``[]<>P`` and ``[]<>[]P`` is ``<>[]P``,
+    and ``P => []Q`` / ``P => <>Q`` (P on the initial state) are checked too,
 
   where P and Q are state predicates.  Any other temporal formula is refused with
   an "unsupported" error at its position, never guessed at.
@@ -66,7 +67,8 @@ class Obligation:
 
     kind: "init" (pred on initial states), "always" ([]pred), "action" ([][pred]_v,
     pred is the whole step predicate), or a liveness form "eventually" (<>p),
-    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p), "stays" ([](p => []q)), "infinitely_step"
+    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p), "stays" ([](p => []q)),
+    "init_always" (p => []q), "init_eventually" (p => <>q), "infinitely_step"
     ([]<><<A>>_v), "wf" / "sf" (WF_v(A) / SF_v(A), p is ENABLED <<A>>_v)."""
 
     name: str
@@ -77,7 +79,8 @@ class Obligation:
     forbid: Pred | None = None
 
 
-LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "infinitely_step", "wf", "sf")
+LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually",
+                  "infinitely_step", "wf", "sf")
 
 
 class TemporalCompiler:
@@ -228,6 +231,12 @@ class TemporalCompiler:
                 return Obligation(name, "stable", self._live(arg.arg, scope, binds))
             if not self.is_temporal(arg, scope):
                 return Obligation(name, "eventually", self._live(arg, scope, binds))
+        if (isinstance(e, A.Binary) and e.op == "=>" and not self.is_temporal(e.lhs, scope)
+                and isinstance(e.rhs, A.Unary) and e.rhs.op in ("[]", "<>")
+                and not self.is_temporal(e.rhs.arg, scope) and not isinstance(e.rhs.arg, A.StepAction)):
+            # P => []Q and P => <>Q: P is evaluated on the initial state.
+            kind = "init_always" if e.rhs.op == "[]" else "init_eventually"
+            return Obligation(name, kind, self._live(e.lhs, scope, binds), self._live(e.rhs.arg, scope, binds))
         if isinstance(e, A.Fairness):
             fair = self._fair(e, scope, binds)
             return Obligation(name, e.kind.lower(), fair.enabled, forbid=fair.taken)
@@ -236,7 +245,8 @@ class TemporalCompiler:
                 return Obligation(name, "leadsto", self._live(e.lhs, scope, binds),
                                   self._live(e.rhs, scope, binds))
         raise UnsupportedError(f"the temporal formula in property {name} is not supported: only []P, <>P, "
-                               f"P ~> Q, []<>P, <>[]P, [](P => <>Q), [](P => []Q) (P, Q state predicates), "
+                               f"P ~> Q, []<>P, <>[]P, [](P => <>Q), [](P => []Q), P => []Q, P => <>Q (P, Q state "
+                               f"predicates), "
                                f"[][A]_v, []<><<A>>_v, WF_v(A), SF_v(A), conjunctions and \\A over them are "
                                f"checked", e.loc)
 

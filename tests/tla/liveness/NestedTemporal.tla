@@ -1,7 +1,8 @@
 --------------------------- MODULE NestedTemporal ---------------------------
 (* Nested temporal formulas equal to the checked forms: [](P => <>Q) is    *)
 (* P ~> Q, [](P => []Q) says "once P, Q from then on", <>[]<>P is []<>P    *)
-(* and []<>[]P is <>[]P.  A request/acknowledge handshake whose latch,     *)
+(* and []<>[]P is <>[]P; P => <>Q and P => []Q evaluate P on the initial *)
+(* state.  A request/acknowledge handshake whose latch,                    *)
 (* once set, stays set.  Expected (TLC 1.8.0): success.                    *)
 EXTENDS Naturals
 VARIABLES req, ack, latched
@@ -18,4 +19,6 @@ ReqLeadsToAck == [](req => <>ack)
 LatchStays == [](latched => []latched)
 AckInfinitelyOften == <>[]<>ack
 LatchedForGood == []<>[]latched
+IdleThenAck == ~req => <>ack
+IdleThenSafe == ~req => [](ack => latched)
 =============================================================================
