@@ -367,16 +367,30 @@ class LivenessChecker:
         raise TlaError("internal", "liveness: no path inside a strongly connected component")
 
 
+# Properties whose negation TLC checks with a tableau (it is not of the forms
+# []<>A / <>[]A).  TLC's Liveness.processLiveness gathers them in the orders of
+# solution it checks before the ones without a tableau; within one, the search finds
+# the counterexample nearest the initial states first (e.g. stuttering there).
+TABLEAU_KINDS = ("eventually", "leadsto", "stays", "init_always", "init_eventually")
+
+
 def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], fairness: list[Fairness],
                    obligations: list[Obligation],
                    check_memory: Callable[[], None]) -> tuple[Obligation, Lasso] | None:
-    """The first liveness obligation (in .cfg order) with a fair counterexample."""
+    """A liveness obligation with a fair counterexample, chosen as TLC does: the
+    properties checked with a tableau first, then the others; in each group the
+    shortest counterexample (the first in .cfg order among equals)."""
     checker = LivenessChecker(graph, states, initial, fairness, check_memory)
-    for ob in obligations:
-        check_memory()
-        lasso = checker.counterexample(ob)
-        if lasso is not None:
-            return ob, lasso
+    for group in ([o for o in obligations if o.kind in TABLEAU_KINDS],
+                  [o for o in obligations if o.kind not in TABLEAU_KINDS]):
+        best: tuple[Obligation, Lasso] | None = None
+        for ob in group:
+            check_memory()
+            lasso = checker.counterexample(ob)
+            if lasso is not None and (best is None or len(lasso.nodes) < len(best[1].nodes)):
+                best = (ob, lasso)
+        if best is not None:
+            return best
     return None
 
 
