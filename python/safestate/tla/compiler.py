@@ -726,6 +726,8 @@ class Compiler:
     def _call_builtin(self, sym: BuiltinSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
         b = sym.builtin
         self._arity(b.name, b.arity, args, loc)
+        if b.refused is not None:
+            raise UnsupportedError(b.refused, loc)
         fn = b.fn
         if b.name in ("TLCGet", "TLCSet"):
             RUNTIME.used = True  # the explorer keeps the counters up to date
