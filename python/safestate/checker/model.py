@@ -72,6 +72,8 @@ class Model:
     action_properties: list[Named] = field(default_factory=list)
     liveness: list[Obligation] = field(default_factory=list)
     view: Named | None = None
+    # Every module file the model was read from (the root, EXTENDS and INSTANCE).
+    module_files: list[str] = field(default_factory=list)
     # ALIAS: the record shown instead of the variables in a text counterexample.
     alias: Named | None = None
     # POSTCONDITION: evaluated once after a search that found no error.
@@ -238,6 +240,7 @@ def _load_model(tla_path: str, cfg_path: str | None) -> Model:
     compiler.var_names = [v.name for v in var_syms]
     model = Model(module, config, scope, [v.name for v in var_syms], compiler, config.check_deadlock)
     _check_assumptions(model, loader)
+    model.module_files = loader.files()
     _compile_behaviour(model)
     model.invariants = [_predicate(model, e, "invariant") for e in config.invariants]
     model.constraints = [_predicate(model, e, "constraint") for e in config.constraints]

@@ -86,11 +86,14 @@ def cache_dir() -> Path:
 
 
 def graph_key(model: Model) -> str:
-    """A hash of the model (every .tla and .cfg beside its module), its cfg file and the
-    checker's own sources (its 'version'): a change to any gives a new key."""
+    """A hash of the model (every .tla and .cfg beside its module, and every module it
+    read from another folder), its cfg file and the checker's own sources (its
+    'version'): a change to any gives a new key."""
     h = hashlib.sha256()
     folder = Path(model.module.file).resolve().parent
-    for f in sorted(list(folder.glob("*.tla")) + list(folder.glob("*.cfg"))):
+    beside = list(folder.glob("*.tla")) + list(folder.glob("*.cfg"))
+    elsewhere = [Path(f).resolve() for f in model.module_files if Path(f).resolve().parent != folder]
+    for f in sorted(beside) + sorted(elsewhere):
         h.update(f.name.encode() + b"\0" + f.read_bytes() + b"\0")
     cfg = Path(model.config.file)
     h.update(str(cfg.resolve()).encode() + b"\0" + cfg.read_bytes())

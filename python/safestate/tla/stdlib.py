@@ -17,7 +17,7 @@ from typing import Callable
 from .errors import AssertFailure, EvalError, ModuleEvalError, UnsupportedError
 from .tlcget import tlc_get, tlc_set
 from .values import (
-    BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
+    INT, NAT, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
 )
 
@@ -279,10 +279,6 @@ def tlc_eval(v: Value) -> Value:
     return v
 
 
-def any_set() -> Value:
-    raise EvalError("The TLC operator Any is not supported")
-
-
 TLC = {
     "Print": Builtin("Print", 2, print_op, "TLC"), "PrintT": Builtin("PrintT", 1, print_t, "TLC"),
     "Assert": Builtin("Assert", 2, assert_op, "TLC"), ":>": Builtin(":>", 2, single_fn, "TLC"),
@@ -525,8 +521,6 @@ def domain(f: Value) -> Value:
         return IntervalSet(1, len(f))
     raise EvalError(f"Attempted to apply the operator DOMAIN to a non-function:\n{fmt(f)}")
 
-
-CORE_SETS = {"BOOLEAN": BOOLEAN, "STRING": STRING}
 
 __all__ = ["Builtin", "STANDARD_MODULES", "UNSUPPORTED_MODULES", "cup", "cap", "setminus", "subseteq",
            "union", "domain", "values_equal", "kind", "ModelValue"]
