@@ -96,6 +96,7 @@ ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
 
 -----------------------------------------------------------------------------
 (***************************** Value sets (§4-§8) *************************)
+\* RSM-01: the manager's states (OPERATIONAL = the four AUTO_/MANUAL_ sub-states).
 States == {"BOOT", "ERROR_LOCKOUT", "ESTOP_ACTIVE", "ESTOP_RESET_NEEDED", "IDLE",
            "ARMING", "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE", "MANUAL_JOGGING",
            "STOPPING", "HOLD"}
@@ -795,6 +796,8 @@ queue_length         == Len(queue)
 (******************************* Invariants ********************************)
 JogType == {NoJog} \cup [axis: Axes, direction: {-1, 1}, speed_mm_s: Nat \ {0}]
 
+\* RSM-01: every variable in its type; the state one of the RSM-01 states, the
+\* stop category of STOPPING 1 or 2, HOLD a category 2 pause.
 TypeOK ==
     /\ state \in States
     /\ selector \in Selectors
@@ -867,6 +870,14 @@ RSM05_RESET_ACCEPTED == last_accepted = "RESET" => obs_estop = "CLEAR" /\ ~obs_g
 \* E-stop channels were seen open (and, RSM-05, released) since the demand:
 \* a one-channel demand leaves a stuck channel undetected otherwise.
 RSM04_CHANNEL_TEST == last_accepted = "RESET" => obs_open_a /\ obs_open_b
+
+\* INV-POWER (RSM-03, RSM-16): drive power only in ARMING, OPERATIONAL,
+\* STOPPING and HOLD; in ESTOP_ACTIVE and ERROR_LOCKOUT the contactor is open
+\* and the brakes engaged. Read from the status record and the outputs, not
+\* from `state` (the outputs are defined from it, so that would be a
+\* tautology): a fault code shown (ERROR_LOCKOUT) or an E-stop demand not yet
+\* reset (ESTOP_ACTIVE / ESTOP_RESET_NEEDED) has every power output off.
+INV_POWER == Locked \/ obs_estop # "CLEAR" => Unpowered
 
 \* RSM-03/RSM-05: an E-stop demand on either channel removes drive power and
 \* engages the brakes in the same cycle (Cat 0); every axis disabled.
@@ -1058,6 +1069,8 @@ Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
 Witness_RSM13_LINK_LOSS      == ~obs_link_lost
 Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in PLCopen!MotionStates)
+\* (the lockout part: the E-stop part is INV_RESET's witness)
+Witness_INV_POWER            == ~Locked
 
 -----------------------------------------------------------------------------
 (*********** Input profiles, substituted by the .cfg files with <- *********)

@@ -20,6 +20,7 @@
 
 #include "safestate/pro/diagnostics_ao.hpp"
 #include "safestate/pro/in_process_comms.hpp"
+#include "safestate/pro/protection_row.hpp"
 #include "safestate/pro/protection_runtime.hpp"
 #include "safestate/pro/runtime_supervisor.hpp"
 #include "safestate/pro/safety_ao.hpp"
@@ -32,7 +33,6 @@ namespace {
 
 py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
 
-constexpr std::array<std::string_view, 5> kRowIds{"P01", "P02", "P03", "P04", "P05"};
 constexpr std::array<std::string_view, 3> kResults{"OK", "PROTECTION_ENTERED", "LATCH_BLOCKED"};
 constexpr std::array<std::string_view, 6> kFaults{"NONE", "SENSOR_INVALID", "OVER_TEMP", "UNDER_VOLT", "OVER_VOLT",
                                                   "LATCH_BLOCKED"};
@@ -75,7 +75,7 @@ class ProtectionChain {
     data_.control_command = kRegulatedCommand;
     run(safety_);
     run(diagnostics_);
-    return std::string(kRowIds[static_cast<std::size_t>(safety_.safety().last_row())]);
+    return std::string(row_id(safety_.safety().last_row()));
   }
 
   py::dict observe() const {
@@ -216,9 +216,9 @@ PYBIND11_MODULE(_pro, m) {
 
   m.def("transition_table", [] {
     py::list rows;
-    for (const std::string_view id : kRowIds) {
+    for (const ProtectionRowSpec& r : kProtectionRows) {
       py::dict d;
-      d["id"] = str(id);
+      d["id"] = str(r.id);
       rows.append(d);
     }
     return rows;
