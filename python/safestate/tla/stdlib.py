@@ -14,7 +14,7 @@ import sys
 from dataclasses import dataclass
 from typing import Callable
 
-from .errors import AssertFailure, EvalError, ModuleEvalError
+from .errors import AssertFailure, EvalError, ModuleEvalError, UnsupportedError
 from .tlcget import tlc_get, tlc_set
 from .values import (
     INT, NAT, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
@@ -29,6 +29,8 @@ class Builtin:
     fn: Callable[..., Value]
     module: str
     higher_order: bool = False
+    # Set for an operator we do not implement: using it is this "unsupported" error.
+    refused: str | None = None
 
 
 def _int(v: Value, op: str) -> int:
@@ -388,12 +390,51 @@ BAGS = {
     "BagOfAll": Builtin("BagOfAll", 2, bag_of_all, "Bags", higher_order=True),
 }
 
+# TLCExt: the operators whose value TLC defines deterministically.  The others are
+# Java overrides that read TLC's own state (Trace, CounterExample, TLCFP...), change
+# its search (TLCDefer, PickSuccessor) or catch its errors (AssertError): using one is
+# an "unsupported" error, never a guess.
+
+
+def assert_eq(a: Value, b: Value) -> bool:
+    """TLCExt's definition: a = b, printing both when they differ."""
+    if values_equal(a, b):
+        return True
+    for v in ("Assertion failed", a, b):
+        print_t(v)
+    return False
+
+
+def _refused(name: str, arity: int) -> Builtin:
+    def refuse(*_: Value) -> Value:
+        raise UnsupportedError(message)
+    message = (f"TLCExt!{name} is not supported: TLC computes it from its own search state, which "
+               f"safestate check does not reproduce")
+    return Builtin(name, arity, refuse, "TLCExt", refused=message)
+
+
+TLC_EXT = {
+    "AssertEq": Builtin("AssertEq", 2, assert_eq, "TLCExt"),
+    "TLCNoOp": Builtin("TLCNoOp", 1, lambda v: v, "TLCExt"),
+    "TLCCache": Builtin("TLCCache", 2, lambda e, _closure: e, "TLCExt"),
+    "TLCModelValue": Builtin("TLCModelValue", 1, lambda s: ModelValue(s) if type(s) is str else _not_string(s),
+                             "TLCExt"),
+    **{n: _refused(n, a) for n, a in (("AssertError", 2), ("TLCGetOrDefault", 2), ("TLCGetAndSet", 4),
+                                       ("Trace", 0), ("CounterExample", 0), ("ToTrace", 1), ("TLCDefer", 1),
+                                       ("PickSuccessor", 1), ("TLCFP", 1), ("TLCEvalDefinition", 1))},
+}
+
+
+def _not_string(v: Value) -> Value:
+    raise EvalError(f"TLCModelValue expects a string, not {fmt(v)}")
+
+
 STANDARD_MODULES: dict[str, dict[str, Builtin]] = {
     "Naturals": NATURALS, "Integers": INTEGERS, "Sequences": SEQUENCES, "FiniteSets": FINITE_SETS,
-    "TLC": TLC, "Bags": BAGS,
+    "TLC": TLC, "Bags": BAGS, "TLCExt": TLC_EXT,
 }
 # Modules TLC ships that we do not implement: naming them is an "unsupported" error.
-UNSUPPORTED_MODULES = {"Reals", "RealTime", "TLCExt", "Json", "Randomization", "IOUtils", "CSV"}
+UNSUPPORTED_MODULES = {"Reals", "RealTime", "Json", "Randomization", "IOUtils", "CSV"}
 
 
 # ----------------------------------------------------------------- core set operators
