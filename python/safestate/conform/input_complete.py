@@ -8,7 +8,9 @@ Here each state reached along the BFS tree is probed with `Adapter.input_alphabe
 pair, concrete velocities around each threshold, each free signal), each probe on a
 fresh C++ object brought to the state by the tree path (`Adapter.probe_batch`, one
 binding call per state).  The model must accept every probe (exactly one successor);
-the C++ must then observe the model's projection and fire the model's rows.
+the C++ must then observe the model's projection and fire the model's rows.  A probe
+with `before` events is a short sequence (the flagship: a command outside the cfg's
+alphabet, then one cycle): the model takes each step, the C++ is compared after the last.
 """
 
 from __future__ import annotations
