@@ -8,7 +8,9 @@ user+system time, its worker processes included (os.wait4 / RUSAGE_CHILDREN), so
 the figures hold on a busy machine where wall time does not.  Printed per run:
 distinct states, wall and CPU seconds, distinct states per CPU second, peak RSS
 per distinct state, and the ratios: ours/TLC at the same worker count, and each
-run's rate over its own single-worker rate (the parallel speed-up, by wall time).
+run's rate over its own single-worker rate (the parallel speed-up, by wall time, and
+the load-independent one: the single worker's CPU over the parallel run's critical
+path, the slowest worker's CPU per BFS phase summed, as `--json` reports it).
 Informational only: never pass/fail.
 
 Default specs: bench/specs/*.tla and the flagship model with its CI .cfg.
@@ -45,6 +47,9 @@ class Run:
     cpu: float
     peak_kib: int | None  # None for TLC: the JVM's heap is not the state store's size
     result: str
+    # Ours with several workers: CPU s of the slowest worker per BFS phase, summed, plus
+    # the coordinator's (the wall time the search would take on idle cores).
+    critical_cpu: float | None = None
 
     @property
     def rate(self) -> float:
@@ -68,8 +73,9 @@ def run_ours(tla: Path, cfg: Path, workers: int) -> Run:
         summary = json.loads(text)
     except json.JSONDecodeError:
         return Run(None, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, "no JSON output")
+    parallel = summary.get("parallel") or {}
     return Run(summary.get("distinct_states"), wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss,
-               summary.get("result", "error"))
+               summary.get("result", "error"), parallel.get("critical_path_cpu_seconds"))
 
 
 def run_theirs(jar: str, tla: Path, cfg: Path, workers: int) -> Run:
@@ -134,6 +140,10 @@ def main() -> int:
                 ours1, tlc1 = r, t
             elif ours1 is not None and r.wall:
                 ratios.append(f"ours {w}w/{counts[0]}w wall speed-up {ours1.wall / r.wall:.2f}x")
+                if r.critical_cpu:
+                    # Load-independent: the single worker's CPU over this run's critical path.
+                    ratios.append(f"critical path {r.critical_cpu:.2f} CPU s, speed-up on idle cores "
+                                  f"{ours1.cpu / r.critical_cpu:.2f}x")
             note = "" if r.result == "success" else f"  ({r.result})"
             print(fmt_run("ours", tla.stem, w, r) + "  " + ", ".join(ratios) + note, flush=True)
             if t is not None:

@@ -4,7 +4,7 @@
 // lockstep cross-check of the two implementations.
 //
 //   bench_cycle ssm|switch [--cycles N] [--seed S] [--per-cycle] [--quiet]
-//   bench_cycle crosscheck [--cycles N] [--seed S]
+//   bench_cycle crosscheck [--cycles N] [--seed S] [--require-every-state]
 //   bench_cycle describe   --seed S --cycle K      (what happened in cycle K, both impls)
 //
 // Implementations: `ssm` = safestate::SystemStateManager (the product: transition table +
@@ -32,6 +32,7 @@
 #include <cstring>
 #include <new>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "safestate/system_state_manager.hpp"
@@ -221,6 +222,8 @@ class Scenario {
     in_.self_test_ok = self_test_ok_;
     in_.servo_ready = st.state == StateId::Arming && arming_cycles_ >= ready_delay_;
     in_.drive_fault = drive_fault_;
+    in_.fieldbus_ok = fieldbus_ok_;
+    in_.operator_link_ok = link_lost_cycles_ == 0;
     in_.q = q_;
     in_.qd = qd_;
     return in_;
@@ -336,6 +339,14 @@ class Scenario {
       arming_cycles_ = 0;
     }
     if (powered && rng_.one_in(400'000)) drive_fault_ = true;
+    // Fieldbus / cycle watchdog (C24): healthy but for a rare loss (a lockout).
+    fieldbus_ok_ = !rng_.one_in(2'000'000);
+    // Operator link (C26): the heartbeat lapses now and then for a while, mostly in a jog.
+    if (link_lost_cycles_ > 0) {
+      --link_lost_cycles_;
+    } else if (rng_.one_in(st.state == StateId::ManualJogging ? 3'000 : 60'000)) {
+      link_lost_cycles_ = rng_.range(1, 300);
+    }
   }
 
   void plant(const StatusRecord& st, const ScanOutputs& out) noexcept {
@@ -395,6 +406,8 @@ class Scenario {
   bool selector_both_{false};
   bool self_test_ok_{true};
   bool drive_fault_{false};
+  bool fieldbus_ok_{true};
+  std::int32_t link_lost_cycles_{0};
   std::int32_t arming_cycles_{0};
   std::int32_t ready_delay_{0};
   bool stuck_stop_{false};
@@ -423,6 +436,7 @@ struct Options {
   std::uint64_t seed{20240611};
   bool per_cycle{false};
   bool quiet{false};
+  bool require_every_state{false};  // crosscheck: fail when a state was never reached
   std::uint64_t describe_cycle{0};
   std::uint64_t lockout_reboot_cycles{1000};
 };
@@ -575,6 +589,7 @@ int crosscheck(const Options& opt, bool describe) {
   std::uint64_t in_lockout = 0;
   std::uint64_t steps = 0;
   std::uint64_t power_cycles = 0;
+  std::array<bool, safestate::kStateCount> visited{};  // a run that misses a state proves little
   const std::uint64_t last = describe ? opt.describe_cycle + 1 : opt.cycles;
   for (std::uint64_t k = 0; k < last; ++k) {
     const bool show = describe && k == opt.describe_cycle;
@@ -616,6 +631,7 @@ int crosscheck(const Options& opt, bool describe) {
       print_status("switch", b->status(), out_b);
       return 1;
     }
+    visited[static_cast<std::size_t>(a->status().state)] = true;
     in_lockout = a->status().state == StateId::ErrorLockout ? in_lockout + 1 : 0;
     if (in_lockout == opt.lockout_reboot_cycles) {
       a.emplace(config);
@@ -628,6 +644,14 @@ int crosscheck(const Options& opt, bool describe) {
     }
   }
   if (!describe) {
+    std::string missed;  // BOOT lasts no full cycle
+    for (const StateId st : safestate::kAllStates) {
+      if (st != StateId::Boot && !visited[static_cast<std::size_t>(st)]) missed += " " + std::string(to_string(st));
+    }
+    if (!missed.empty()) {
+      std::printf("crosscheck: states never reached (compared nowhere):%s\n", missed.c_str());
+      if (opt.require_every_state) return 1;
+    }
     std::printf("crosscheck: %" PRIu64 " cycles, %" PRIu64 " steps, %" PRIu64
                 " power cycles, seed %" PRIu64 ": no divergence (status record and outputs equal after every step)\n",
                 opt.cycles, steps, power_cycles, opt.seed);
@@ -644,7 +668,7 @@ bool parse_u64(const char* s, std::uint64_t& v) {
 int usage() {
   std::fprintf(stderr,
                "usage: bench_cycle ssm|switch [--cycles N] [--seed S] [--per-cycle] [--quiet]\n"
-               "       bench_cycle crosscheck [--cycles N] [--seed S]\n"
+               "       bench_cycle crosscheck [--cycles N] [--seed S] [--require-every-state]\n"
                "       bench_cycle describe --cycle K [--seed S]\n");
   return 2;
 }
@@ -667,6 +691,8 @@ int main(int argc, char** argv) {
       opt.per_cycle = true;
     } else if (a == "--quiet") {
       opt.quiet = true;
+    } else if (a == "--require-every-state") {
+      opt.require_every_state = true;
     } else {
       return usage();
     }

@@ -1,20 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
 // Cycle time of the control thread with the operator link attached (issue 16):
 //
-//   bench_link [--seconds S] [--clients N] [--flood R]
+//   bench_link [--seconds S] [--clients N] [--flood R] [--rounds K] [--control-cpu C] [--bridge-cpu B]
 //
-// Runs the ControlLoop at 1 ms and the bridge in-process, first with no client, then with
-// N observers (default 100) each reading the 20 Hz status broadcast, plus one controlling
-// client sending heartbeats and, with --flood R, R requests per second. Prints the cycle's
-// execution time p50 / p99 / max for both runs and the ratio of the p99s (target <= 1.1).
+// Runs the ControlLoop at 1 ms and the bridge in-process. The control thread runs at
+// SCHED_FIFO pinned to CPU C (default 0); the bridge thread and the clients (this thread)
+// are pinned to CPU B (default 1), so the bridge's work never runs on the control core.
+// K rounds (default 5) alternate S/K seconds with no client and S/K seconds with N observers
+// (default 100) each reading the 20 Hz status broadcast plus one controlling client sending
+// heartbeats (and, with --flood R, R requests per second): the machine's load drifts over
+// both configurations alike. Prints the load average at start, the placement obtained, the
+// cycle's execution time p50 / p99 / max for both and the ratio of the p99s (target <= 1.1).
 // A measurement, never a pass/fail test: the figures depend on the machine and its load.
-#include <pthread.h>
-#include <sched.h>
-
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -24,18 +26,24 @@
 #include "link_ws_client.hpp"
 #include "safestate/link/bridge.hpp"
 #include "safestate/link/control_loop.hpp"
+#include "safestate/link/thread_placement.hpp"
 
 namespace {
 
 using namespace safestate::link;  // NOLINT
 using Clock = std::chrono::steady_clock;
 
-struct Figures {
-  double p50, p99, max;
-  unsigned long long cycles;
+struct Placement {
+  int control_cpu{0};
+  int bridge_cpu{1};
+  std::atomic<bool> control_pinned{true};
+  std::atomic<bool> control_realtime{true};
 };
 
-Figures measure(ControlLoop& loop, Bridge& bridge, int seconds, int clients, int flood) {
+// One round of `seconds` with `clients` observers (+ 1 controller when clients > 0); the
+// cycle times are added to `into`.
+void measure(ControlLoop& loop, Bridge& bridge, Placement& where, int seconds, int clients, int flood,
+             CycleTimeHistogram& into) {
   std::vector<std::unique_ptr<link_test::WsClient>> cs;
   for (int i = 0; i < clients; ++i) {
     cs.push_back(std::make_unique<link_test::WsClient>());
@@ -54,9 +62,8 @@ Figures measure(ControlLoop& loop, Bridge& bridge, int seconds, int clients, int
   std::thread control([&] {
     // As safestate_link does: a real-time priority when permitted (root / CAP_SYS_NICE), so
     // the figures measure the cycle, not the scheduler's choice among the machine's jobs.
-    sched_param p{};
-    p.sched_priority = sched_get_priority_max(SCHED_FIFO) / 2;
-    (void)pthread_setschedparam(pthread_self(), SCHED_FIFO, &p);
+    if (!pin_current_thread(where.control_cpu)) where.control_pinned.store(false);
+    if (!make_current_thread_realtime()) where.control_realtime.store(false);
     loop.run(stop, std::chrono::microseconds(1000));
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // warm-up
@@ -83,47 +90,93 @@ Figures measure(ControlLoop& loop, Bridge& bridge, int seconds, int clients, int
   }
   stop.store(true);
   control.join();
-  const CycleTimeHistogram& h = loop.cycle_times();
-  return Figures{h.percentile_us(0.50), h.percentile_us(0.99), h.max_us(),
-                 static_cast<unsigned long long>(h.count())};
+  into.merge(loop.cycle_times());
+}
+
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five, fifteen;
+  in >> one >> five >> fifteen;
+  return in ? one + " " + five + " " + fifteen : std::string("unknown");
+}
+
+void print_row(const std::string& label, const CycleTimeHistogram& h) {
+  std::printf("%-34s %8.1f %8.1f %8.1f %8llu\n", label.c_str(), h.percentile_us(0.50), h.percentile_us(0.99), h.max_us(),
+              static_cast<unsigned long long>(h.count()));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  int seconds = 5;
+  int seconds = 10;
   int clients = 100;
   int flood = 0;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  int rounds = 5;
+  Placement where;
+  for (int i = 1; i < argc; i += 2) {
     const std::string_view a = argv[i];
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "bench_link: %s expects a number\n", argv[i]);
+      return 2;
+    }
     const int v = std::atoi(argv[i + 1]);
     if (a == "--seconds") seconds = v;
     else if (a == "--clients") clients = v;
     else if (a == "--flood") flood = v;
+    else if (a == "--rounds") rounds = v;
+    else if (a == "--control-cpu") where.control_cpu = v;
+    else if (a == "--bridge-cpu") where.bridge_cpu = v;
     else {
-      std::fprintf(stderr, "bench_link: unknown argument '%s' (expected --seconds, --clients, --flood)\n", argv[i]);
+      std::fprintf(stderr,
+                   "bench_link: unknown argument '%s' (expected --seconds, --clients, --flood, --rounds, --control-cpu, "
+                   "--bridge-cpu)\n",
+                   argv[i]);
       return 2;
     }
   }
+  if (rounds < 1 || seconds < rounds) {
+    std::fprintf(stderr, "bench_link: expected --rounds >= 1 and --seconds >= --rounds (whole seconds per round)\n");
+    return 2;
+  }
+  std::printf("load average at start: %s (%u CPUs online)\n", load_average().c_str(),
+              std::thread::hardware_concurrency());
+  const bool main_pinned = pin_current_thread(where.bridge_cpu);  // the clients
   static ControlLoop loop;
   BridgeOptions options;
   options.token = "bench";
   Bridge bridge(loop, options);
-  std::thread bridge_thread([&] { bridge.run(); });
-  const Figures none = measure(loop, bridge, seconds, 0, 0);
-  const Figures many = measure(loop, bridge, seconds, clients, flood);
+  std::atomic<bool> bridge_pinned{true};
+  std::thread bridge_thread([&] {
+    if (!pin_current_thread(where.bridge_cpu)) bridge_pinned.store(false);
+    bridge.run();
+  });
+  static CycleTimeHistogram none;
+  static CycleTimeHistogram many;
+  for (int r = 0; r < rounds; ++r) {
+    measure(loop, bridge, where, seconds / rounds, 0, 0, none);
+    measure(loop, bridge, where, seconds / rounds, clients, flood, many);
+  }
   bridge.stop();
   bridge_thread.join();
-  std::printf("control cycle execution time (us; 0.1 us buckets), %d s each, 1 ms period\n", seconds);
+  std::printf("placement: control thread on CPU %d (%s, %s); bridge thread and clients on CPU %d (%s)\n",
+              where.control_cpu, where.control_pinned ? "pinned" : "NOT pinned",
+              where.control_realtime ? "SCHED_FIFO" : "NOT real-time: needs root or CAP_SYS_NICE", where.bridge_cpu,
+              bridge_pinned && main_pinned ? "pinned" : "NOT pinned");
+  std::printf("control cycle execution time (us; 0.1 us buckets), 1 ms period, %d rounds of %d s + %d s\n", rounds,
+              seconds / rounds, seconds / rounds);
   std::printf("%-34s %8s %8s %8s %8s\n", "clients", "p50", "p99", "max", "cycles");
-  std::printf("%-34s %8.1f %8.1f %8.1f %8llu\n", "0", none.p50, none.p99, none.max, none.cycles);
+  print_row("0", none);
   std::string label = std::to_string(clients) + " observers + 1 controller";
   if (flood > 0) label += " (" + std::to_string(flood) + " req/s)";
-  std::printf("%-34s %8.1f %8.1f %8.1f %8llu\n", label.c_str(), many.p50, many.p99, many.max, many.cycles);
-  std::printf("p99 ratio (with / without clients): %.2f (target <= 1.10)\n", none.p99 > 0 ? many.p99 / none.p99 : 0.0);
-  std::printf("bridge: status frames dropped %llu, queue full %llu, requests %llu\n",
+  print_row(label, many);
+  const double p99_none = none.percentile_us(0.99);
+  std::printf("p99 ratio (with / without clients): %.2f (target <= 1.10)\n",
+              p99_none > 0 ? many.percentile_us(0.99) / p99_none : 0.0);
+  std::printf("load average at end: %s\n", load_average().c_str());
+  std::printf("bridge: status frames dropped %llu, queue full %llu, busy %llu, requests %llu\n",
               static_cast<unsigned long long>(bridge.counters().status_frames_dropped.load()),
               static_cast<unsigned long long>(bridge.counters().queue_full.load()),
+              static_cast<unsigned long long>(bridge.counters().busy.load()),
               static_cast<unsigned long long>(bridge.counters().requests.load()));
   return 0;
 }

@@ -209,7 +209,8 @@ def main() -> int:
     for line in first[3:]:
         print(f"  {line}")
     print()
-    print("cross-check: " + cc.strip().splitlines()[0])
+    summary = [line for line in cc.strip().splitlines() if line.startswith("crosscheck:")]
+    print("cross-check: " + (" / ".join(summary) if summary else cc.strip().splitlines()[0]))  # or the divergence
     if "DIVERGENCE" in cc:
         print(cc)
     print()

@@ -4,13 +4,23 @@
 #     UndefinedBehaviorSanitizer (g++), run once;
 #  2. the libFuzzer target src/saf/fuzz_codec.cpp (clang, -fsanitize=fuzzer,address,undefined)
 #     run for RUNS executions (default 1,000,000) from a seed corpus of valid messages.
-# Prints the execution count, the crash count and the time. Needs clang (Debian: apt-get
-# install clang). Usage: bash bench/saf_fuzz.sh [RUNS]
+# Prints the execution count, the crash count and the time. Needs clang with libFuzzer
+# (Debian: apt-get install clang; not installed by scripts/setup.sh): without it the script
+# says so in one line and exits 3 before step 1. Usage: bash bench/saf_fuzz.sh [RUNS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RUNS=${1:-1000000}
 OUT=build/saf-fuzz
 mkdir -p "$OUT/corpus" "$OUT/crashes"
+
+# Step 2 needs clang with libFuzzer, which scripts/setup.sh does not install (the test command
+# does not need it): check first, so a missing compiler is one line, not a failure after step 1.
+CLANG=${CLANG:-$(command -v clang++ || true)}
+if [ -z "$CLANG" ] || ! echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
+    "$CLANG" -x c++ -fsanitize=fuzzer - -o "$OUT/probe" >/dev/null 2>&1; then
+  echo "saf_fuzz.sh: clang++ with libFuzzer not found (${CLANG:-no clang++ on PATH}); install it with: apt-get install clang libclang-rt-14-dev (or set CLANG=/path/to/clang++)" >&2
+  exit 3
+fi
 
 echo "== 1. Safety service tests under ASan + UBSan (g++)"
 if [ ! -f build/saf-asan/build.ninja ]; then
@@ -32,10 +42,6 @@ fi
 echo "sanitized runs failed: $asan_failures (tests: $(echo $TESTS | wc -w), plus saf_demo)"
 
 echo "== 2. libFuzzer on the codec and intake ($RUNS executions)"
-CLANG=${CLANG:-$(command -v clang++ || true)}
-if [ -z "$CLANG" ]; then
-  echo "clang++ not found: install the Debian package clang"; exit 2
-fi
 "$CLANG" -std=c++17 -O1 -g -Iinclude -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
   src/saf/codec.cpp src/saf/config.cpp src/saf/inbound_batch.cpp src/saf/safety_service.cpp \
   src/saf/fuzz_codec.cpp -o "$OUT/saf_fuzz_codec"

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Flat switch-case re-implementation of docs/design/system-state-manager.md (§3, §5 rows
-// C01-C23, §6 rows K01-K35, §7, §8). Row numbers are given in comments.
+// C01-C26, §6 rows K01-K38, §7, §8). Row numbers are given in comments.
 #include "switch_case_ssm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -92,6 +93,21 @@ void SwitchCaseSsm::stop(StopCategory cat) noexcept {  // -> STOPPING, CAT1 (CAT
   status_.stop_category = cat;
 }
 
+// K20 / C26: a Cat 2 stop that remembers the motion state; a paused jog keeps its setpoint.
+void SwitchCaseSsm::pause() noexcept {
+  const ResumeTarget r = state_ == StateId::AutoRunning ? ResumeTarget::AutoRunning : ResumeTarget::ManualJogging;
+  const std::int32_t ja = jog_axis_;
+  const std::int32_t jd = jog_dir_;
+  const std::int32_t js = jog_speed_;
+  stop(StopCategory::Cat2);
+  resume_to_ = r;
+  if (r == ResumeTarget::ManualJogging) {
+    jog_axis_ = ja;
+    jog_dir_ = jd;
+    jog_speed_ = js;
+  }
+}
+
 void SwitchCaseSsm::reject(RejectReason r) noexcept {
   status_.command_result = CommandResult::rejected(r);
   status_.last_reject_reason = r;
@@ -127,6 +143,13 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   guard_mm_ = flat_count_mismatch(in.safeguard_closed.a != in.safeguard_closed.b, guard_mm_, d);
   enable_mm_ = flat_count_mismatch(in.enabling.a != in.enabling.b, enable_mm_, d);
   sel_inv_ = flat_count_mismatch(sel == SelectorReading::Invalid, sel_inv_, d);
+  // K37: each E-stop channel seen open; C25: every axis at rest at the start of the cycle.
+  estop_tested_a_ = estop_tested_a_ || !in.estop_closed.a;
+  estop_tested_b_ = estop_tested_b_ || !in.estop_closed.b;
+  bool axes_at_rest = true;
+  for (const auto& axis : axes_) {
+    axes_at_rest = axes_at_rest && (axis.state() == AxisState::Disabled || axis.state() == AxisState::StandStill);
+  }
   FaultCode discrepancy = FaultCode::None;
   if (estop_mm_ > d) {
     discrepancy = FaultCode::DiscrepancyEstop;
@@ -141,7 +164,12 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   // ---- §5 safety evaluation, first matching row wins -----------------------------------
   const bool powered = safestate::is_powered(state_);
   const bool manual = session_ == OperatingMode::T1 || session_ == OperatingMode::T2;
-  const bool stopping_cat1 = state_ == StateId::Stopping && stopping_cat_ == StopCategory::Cat1;
+  // C12-C14 hold off in STOPPING CAT1, and with the stop timer expired and the arm moving (C20).
+  const bool stopping_cat1 =
+      state_ == StateId::Stopping && (stopping_cat_ == StopCategory::Cat1 ||
+                                      (state_cycles_ == config_.max_stop_cycles && speed != SpeedLevel::Zero));
+  const StateId state_at_start = state_;
+  const auto queued_at_start = static_cast<std::uint32_t>(queue_.size());
 
   if (state_ == StateId::ErrorLockout) {
     // C01: stay.
@@ -149,6 +177,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     lockout(FaultCode::SelfTestFailed);  // C02
   } else if (discrepancy != FaultCode::None) {
     lockout(discrepancy);  // C03
+  } else if (!in.fieldbus_ok) {
+    lockout(FaultCode::FieldbusLoss);  // C24
   } else if (state_ == StateId::Boot) {
     if (estop_tripped) {
       enter(StateId::EstopActive);  // C04
@@ -160,20 +190,32 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     enter(StateId::EstopActive);  // C06
     status_.stop_category = StopCategory::Cat0;
   } else if (state_ == StateId::EstopActive) {
-    if (!estop_tripped) enter(StateId::EstopResetNeeded);  // C07, else C08
+    if (!estop_tripped) {
+      enter(StateId::EstopResetNeeded);  // C07, else C08
+      stale_commands_ = queued_at_start;
+    }
   } else if (powered && in.drive_fault) {
     lockout(FaultCode::DriveFault);  // C09
   } else if (powered && session_ == OperatingMode::T1 && speed == SpeedLevel::OverT1) {
     lockout(FaultCode::T1Overspeed);  // C10
+  } else if ((state_ == StateId::Arming || state_ == StateId::AutoIdle || state_ == StateId::ManualIdle ||
+              state_ == StateId::Hold) &&
+             axes_at_rest && speed != SpeedLevel::Zero) {
+    lockout(FaultCode::StandstillViolation);  // C25
   } else if (powered && manual && enable_panic) {
     enter(StateId::Idle);  // C11
     status_.stop_category = StopCategory::Cat0;
-  } else if (powered && !stopping_cat1 && !flat_same_mode(sel, session_)) {
-    stop(StopCategory::Cat1);  // C12
-  } else if (powered && !stopping_cat1 && session_ == OperatingMode::Auto && gate_open) {
-    stop(StopCategory::Cat1);  // C13
-  } else if (powered && !stopping_cat1 && manual && !enable_middle) {
-    stop(StopCategory::Cat1);  // C14
+  } else if (powered && !stopping_cat1 &&
+             (!flat_same_mode(sel, session_) ||                        // C12
+              (session_ == OperatingMode::Auto && gate_open) ||        // C13
+              (manual && !enable_middle))) {                           // C14
+    // Escalating a Cat 2 stop in progress keeps its timer and counts the cycle.
+    const std::uint32_t kept =
+        state_ == StateId::Stopping ? std::min(state_cycles_ + 1U, config_.max_stop_cycles) : 0U;
+    stop(StopCategory::Cat1);
+    state_cycles_ = kept;
+  } else if (state_ == StateId::ManualJogging && !in.operator_link_ok) {
+    pause();  // C26: as a Pause (K20), the jog kept
   } else {
     switch (state_) {
       case StateId::Arming:
@@ -215,7 +257,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   // ---- §6 at most one command ----------------------------------------------------------
   safestate::Command c;
   if (queue_.try_pop(c)) {
-    handle_command(c, sel, gate_open, enable_middle, in.drive_fault);
+    handle_command(c, sel, gate_open, enable_middle, in.drive_fault, state_at_start);
+    if (stale_commands_ > 0) --stale_commands_;  // K36: one fewer command from before the release
   } else {
     status_.command_result = CommandResult::none();
   }
@@ -278,11 +321,14 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   status_.jog_direction = jog_dir_;
   status_.jog_speed_mm_s = jog_speed_;
   status_.queue_length = queue_.size();
+  status_.stale_commands = stale_commands_;
+  status_.estop_tested_a = estop_tested_a_;
+  status_.estop_tested_b = estop_tested_b_;
   return out_;
 }
 
-void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading sel,
-                                   bool gate_open, bool enable_middle, bool drive_fault) noexcept {
+void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading sel, bool gate_open,
+                                   bool enable_middle, bool drive_fault, StateId state_at_start) noexcept {
   if (state_ == StateId::ErrorLockout) {
     reject(RejectReason::LockedOut);  // K01
     return;
@@ -292,18 +338,26 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
     case CommandKind::Reset:
       if (state_ == StateId::EstopActive) {
         reject(RejectReason::EstopPressed);  // K02
+      } else if (stale_commands_ > 0) {
+        reject(RejectReason::EstopPressed);  // K36
       } else if (state_ != StateId::EstopResetNeeded) {
         reject(RejectReason::WrongState);  // K03
       } else if (drive_fault) {
         reject(RejectReason::DriveFault);  // K04
+      } else if (!(estop_tested_a_ && estop_tested_b_)) {
+        reject(RejectReason::ChannelTestPending);  // K37
       } else {
         enter(StateId::Idle);  // K05
+        estop_tested_a_ = false;
+        estop_tested_b_ = false;
         status_.command_result = CommandResult::accepted();
       }
       return;
     case CommandKind::ServoOn:
       if (state_ != StateId::Idle) {
         reject(RejectReason::WrongState);  // K06
+      } else if (state_at_start != StateId::Idle) {
+        reject(RejectReason::WrongState);  // K38: IDLE entered in this cycle
       } else if (drive_fault) {
         reject(RejectReason::DriveFault);  // K07
       } else if (sel == SelectorReading::Invalid) {
@@ -353,16 +407,7 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
       if (state_ != StateId::AutoRunning && state_ != StateId::ManualJogging) {
         reject(RejectReason::WrongState);  // K19
       } else {
-        const ResumeTarget r =
-            state_ == StateId::AutoRunning ? ResumeTarget::AutoRunning : ResumeTarget::ManualJogging;
-        const std::int32_t ja = jog_axis_;
-        const std::int32_t jd = jog_dir_;
-        const std::int32_t js = jog_speed_;
-        stop(StopCategory::Cat2);  // K20: jog kept
-        resume_to_ = r;
-        jog_axis_ = ja;
-        jog_dir_ = jd;
-        jog_speed_ = js;
+        pause();  // K20
         status_.command_result = CommandResult::accepted();
       }
       return;

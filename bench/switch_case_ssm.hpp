@@ -41,8 +41,9 @@ class SwitchCaseSsm {
   void lockout(safestate::FaultCode code) noexcept;
   void stop(safestate::StopCategory cat) noexcept;
   void reject(safestate::RejectReason r) noexcept;
-  void handle_command(const safestate::Command& c, safestate::SelectorReading sel,
-                      bool gate_open, bool enable_middle, bool drive_fault) noexcept;
+  void pause() noexcept;
+  void handle_command(const safestate::Command& c, safestate::SelectorReading sel, bool gate_open,
+                      bool enable_middle, bool drive_fault, safestate::StateId state_at_start) noexcept;
 
   safestate::Config config_;
   safestate::ArmKinematics kin_;
@@ -64,6 +65,9 @@ class SwitchCaseSsm {
   std::uint32_t guard_mm_{0};
   std::uint32_t enable_mm_{0};
   std::uint32_t sel_inv_{0};
+  std::uint32_t stale_commands_{0};  // K36: commands queued at the E-stop release (C07)
+  bool estop_tested_a_{false};       // K37: channel A seen open since the last accepted Reset
+  bool estop_tested_b_{false};
   std::array<safestate::PlcopenAxis, safestate::kAxisCount> axes_{};
 
   safestate::StatusRecord status_{};

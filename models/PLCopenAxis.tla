@@ -12,18 +12,14 @@
 (* which the manager itself never commands), every desired state and     *)
 (* both speed readings: each step is a legal PLCopen transition, a stop   *)
 (* takes enabled axes through Stopping to StandStill, and a drive fault   *)
-(* puts the axis in ErrorStop.  SystemStateManager.tla carries a verbatim *)
-(* copy of AxisStep (our tools take one module per model).                *)
+(* puts the axis in ErrorStop.  AxisStep itself is in                    *)
+(* PLCopenAxisStep.tla, which SystemStateManager.tla takes by INSTANCE.    *)
 (***************************************************************************)
-
-AxisStates == {"Disabled", "StandStill", "Homing", "DiscreteMotion",
-               "ContinuousMotion", "SynchronizedMotion", "Stopping", "ErrorStop"}
+EXTENDS PLCopenAxisStep
 
 \* The states the manager may ask for (§8, first table).
 DesiredStates == {"Disabled", "ErrorStop", "StandStill", "ContinuousMotion",
                   "SynchronizedMotion", "Stopping"}
-
-MotionStates == {"ContinuousMotion", "SynchronizedMotion", "DiscreteMotion", "Homing"}
 
 (***************************************************************************)
 (* The legal transitions of the PLCopen state diagram (besides staying):  *)
@@ -53,24 +49,6 @@ LegalTransitions ==
   \cup {<<"Stopping", "StandStill">>}
 
 Legal(from, to) == from = to \/ <<from, to>> \in LegalTransitions
-
-(***************************************************************************)
-(* §8, second table: one step of an axis toward the desired state.        *)
-(* Rows in the page's order (first match wins).                           *)
-(***************************************************************************)
-AxisStep(cur, des, zero) ==
-    IF      des = "ErrorStop"  THEN "ErrorStop"   \* drive fault
-    ELSE IF cur = "ErrorStop"  THEN "ErrorStop"   \* only MC_Reset leaves it
-    ELSE IF des = "Disabled"   THEN "Disabled"    \* MC_Power off
-    ELSE IF cur = "Disabled"   THEN (IF des = "Stopping" THEN "Disabled" ELSE "StandStill")
-                                  \* MC_Stop not accepted in Disabled / MC_Power on
-    ELSE IF cur = "Stopping"   THEN (IF des = "Stopping" \/ ~zero THEN "Stopping"
-                                                             ELSE "StandStill")
-    ELSE IF des = "Stopping"   THEN "Stopping"    \* MC_Stop
-    ELSE IF des = "StandStill" THEN (IF cur = "StandStill" THEN "StandStill"
-                                                           ELSE "Stopping")
-    ELSE IF cur = "Homing"     THEN "Homing"      \* homing is not interrupted
-    ELSE des                                      \* CM/SM from StandStill or motion
 
 -----------------------------------------------------------------------------
 VARIABLES

@@ -110,6 +110,9 @@ Spec == Init /\ [][Next]_vars
 
 -----------------------------------------------------------------------------
 (******************************** Invariants *******************************)
+\* PRO-02: every variable in its type: the context's protection state, latch and
+\* output override, and the results OK / PROTECTION_ENTERED / LATCH_BLOCKED (the
+\* tick of the last transition is not modelled: no invariant reads it).
 TypeOK ==
     /\ temp \in Temps /\ volt \in Volts /\ valid \in BOOLEAN /\ clear \in BOOLEAN
     /\ protection_state \in ProtectionStates

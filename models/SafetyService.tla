@@ -71,7 +71,9 @@ Svc == [state |-> state, estop |-> estop, estop_age |-> estop_age,
 
 -----------------------------------------------------------------------------
 (************************ Derived conditions (page 4) **********************)
+\* SAF-04: ESTOPTIMEOUT in cycles (EstopTimeoutCycles = ESTOPTIMEOUT / CYCLEINTERVAL).
 EstopTimedOut(s) == s.estop # "NONE" /\ s.estop_age > EstopTimeoutCycles
+\* SAF-04: REPORTDATATIMEOUT in cycles (ReportDataTimeoutCycles).
 HealthBad(s) == \/ s.health \in {"ERROR", "FATAL"}
                 \/ s.health_age > ReportDataTimeoutCycles
 Danger(s) == s.estop = "SET" \/ EstopTimedOut(s) \/ HealthBad(s)
@@ -198,6 +200,8 @@ Spec == Init /\ [][Next]_vars
 
 -----------------------------------------------------------------------------
 (******************************** Invariants *******************************)
+\* SAF-01: every variable in its type; the state one of PAIRING, OPERATIONAL,
+\* EMERGENCY, FAULT.
 TypeOK ==
     /\ state \in States
     /\ estop \in EstopViews

@@ -96,6 +96,7 @@ ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
 
 -----------------------------------------------------------------------------
 (***************************** Value sets (§4-§8) *************************)
+\* RSM-01: the manager's states (OPERATIONAL = the four AUTO_/MANUAL_ sub-states).
 States == {"BOOT", "ERROR_LOCKOUT", "ESTOP_ACTIVE", "ESTOP_RESET_NEEDED", "IDLE",
            "ARMING", "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE", "MANUAL_JOGGING",
            "STOPPING", "HOLD"}
@@ -112,8 +113,9 @@ Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
             "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
             "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
             "QUEUE_FULL", "CHANNEL_TEST_PENDING"}
-AxisStates == {"Disabled", "StandStill", "Homing", "DiscreteMotion",
-               "ContinuousMotion", "SynchronizedMotion", "Stopping", "ErrorStop"}
+\* §8: the PLCopen axis states and the step function, shared with
+\* PLCopenAxis.tla (which checks the step against the PLCopen diagram).
+PLCopen == INSTANCE PLCopenAxisStep
 Axes == 1..6
 
 NoJog == [axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
@@ -551,23 +553,9 @@ CommandStep(m, in) ==
 
 -----------------------------------------------------------------------------
 (******************** §8 PLCopen axes (RSM-17) *****************************)
-(* AxisStep is the step function of models/PLCopenAxis.tla, copied        *)
-(* verbatim (that model checks it against the PLCopen legal transitions   *)
-(* for every current state, desired state and speed reading).             *)
-MotionStates == {"ContinuousMotion", "SynchronizedMotion", "DiscreteMotion", "Homing"}
-
-AxisStep(cur, des, zero) ==
-    IF      des = "ErrorStop"  THEN "ErrorStop"
-    ELSE IF cur = "ErrorStop"  THEN "ErrorStop"   \* only MC_Reset leaves it
-    ELSE IF des = "Disabled"   THEN "Disabled"    \* MC_Power off
-    ELSE IF cur = "Disabled"   THEN (IF des = "Stopping" THEN "Disabled" ELSE "StandStill")
-    ELSE IF cur = "Stopping"   THEN (IF des = "Stopping" \/ ~zero THEN "Stopping"
-                                                             ELSE "StandStill")
-    ELSE IF des = "Stopping"   THEN "Stopping"    \* MC_Stop
-    ELSE IF des = "StandStill" THEN (IF cur = "StandStill" THEN "StandStill"
-                                                           ELSE "Stopping")
-    ELSE IF cur = "Homing"     THEN "Homing"      \* homing is not interrupted
-    ELSE des                                      \* CM/SM from StandStill or motion
+(* Each axis steps by PLCopen!AxisStep (models/PLCopenAxisStep.tla; the  *)
+(* model PLCopenAxis.tla checks it against the PLCopen legal transitions *)
+(* for every current state, desired state and speed reading).            *)
 
 \* The axis state the manager state wants (§8, first table).
 DesiredAxis(m, i) ==
@@ -581,7 +569,7 @@ DesiredAxis(m, i) ==
 
 AxesStep(m, in) ==
     [m EXCEPT !.axes = [i \in Axes |->
-                 AxisStep(m.axes[i], DesiredAxis(m, i), in.speed = "ZERO")]]
+                 PLCopen!AxisStep(m.axes[i], DesiredAxis(m, i), in.speed = "ZERO")]]
 
 -----------------------------------------------------------------------------
 (***************************** The two events (§1) *************************)
@@ -808,6 +796,8 @@ queue_length         == Len(queue)
 (******************************* Invariants ********************************)
 JogType == {NoJog} \cup [axis: Axes, direction: {-1, 1}, speed_mm_s: Nat \ {0}]
 
+\* RSM-01: every variable in its type; the state one of the RSM-01 states, the
+\* stop category of STOPPING 1 or 2, HOLD a category 2 pause.
 TypeOK ==
     /\ state \in States
     /\ selector \in Selectors
@@ -823,7 +813,7 @@ TypeOK ==
     /\ resume_to \in {"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}
     /\ jog \in JogType
     /\ queue \in Seq(Commands) /\ Len(queue) <= QueueCapacity
-    /\ axes \in [Axes -> AxisStates]
+    /\ axes \in [Axes -> PLCopen!AxisStates]
     /\ inputs \in Inputs
     /\ stale_commands \in 0..QueueCapacity
     /\ estop_tested_a \in BOOLEAN /\ estop_tested_b \in BOOLEAN
@@ -880,6 +870,14 @@ RSM05_RESET_ACCEPTED == last_accepted = "RESET" => obs_estop = "CLEAR" /\ ~obs_g
 \* E-stop channels were seen open (and, RSM-05, released) since the demand:
 \* a one-channel demand leaves a stuck channel undetected otherwise.
 RSM04_CHANNEL_TEST == last_accepted = "RESET" => obs_open_a /\ obs_open_b
+
+\* INV-POWER (RSM-03, RSM-16): drive power only in ARMING, OPERATIONAL,
+\* STOPPING and HOLD; in ESTOP_ACTIVE and ERROR_LOCKOUT the contactor is open
+\* and the brakes engaged. Read from the status record and the outputs, not
+\* from `state` (the outputs are defined from it, so that would be a
+\* tautology): a fault code shown (ERROR_LOCKOUT) or an E-stop demand not yet
+\* reset (ESTOP_ACTIVE / ESTOP_RESET_NEEDED) has every power output off.
+INV_POWER == Locked \/ obs_estop # "CLEAR" => Unpowered
 
 \* RSM-03/RSM-05: an E-stop demand on either channel removes drive power and
 \* engages the brakes in the same cycle (Cat 0); every axis disabled.
@@ -1018,7 +1016,7 @@ RSM17_AXES ==
 \* axis in motion): E-stop always, safeguard in AUTO, enabling device in
 \* T1/T2 (the safeguard is not required in manual modes, RSM-09).
 INV_1OO2 ==
-    (commanded_speed_mm_s > 0 \/ \E i \in Axes : axes[i] \in MotionStates) =>
+    (commanded_speed_mm_s > 0 \/ \E i \in Axes : axes[i] \in PLCopen!MotionStates) =>
         /\ inputs.estop_a /\ inputs.estop_b
         /\ session_mode = "AUTO" => inputs.gate_a /\ inputs.gate_b
         /\ session_mode \in {"T1", "T2"} =>
@@ -1032,7 +1030,7 @@ INV_1OO2 ==
 RSM13_LINK_LOSS ==
     obs_link_lost =>
         /\ commanded_speed_mm_s = 0
-        /\ \A i \in Axes : axes[i] \notin MotionStates
+        /\ \A i \in Axes : axes[i] \notin PLCopen!MotionStates
         /\ \/ Locked
            \/ /\ contactor_closed /\ ramp_down_request
               /\ stop_category = "CAT2" \/ last_accepted = "SERVO_OFF"
@@ -1070,7 +1068,9 @@ Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
 Witness_RSM14_QUEUE          == ~(queue_length = QueueCapacity)
 Witness_RSM17_AXES           == ~(fault_code = "DRIVE_FAULT")
 Witness_RSM13_LINK_LOSS      == ~obs_link_lost
-Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in MotionStates)
+Witness_INV_1OO2             == ~(\E i \in Axes : axes[i] \in PLCopen!MotionStates)
+\* (the lockout part: the E-stop part is INV_RESET's witness)
+Witness_INV_POWER            == ~Locked
 
 -----------------------------------------------------------------------------
 (*********** Input profiles, substituted by the .cfg files with <- *********)

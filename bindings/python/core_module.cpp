@@ -21,6 +21,7 @@
 #include "safestate/system_state_manager.hpp"
 #include "safestate/transition_table.hpp"
 #include "safestate/transition_table_export.hpp"
+#include "plan_replayer.hpp"
 
 namespace py = pybind11;
 using namespace safestate;  // NOLINT
@@ -283,6 +284,39 @@ void observe_key(const SystemStateManager& m, std::string& k) {
   k.push_back('|');
 }
 
+/// The compact-plan replayer of conform (plan_replayer.hpp) over fresh Managers: a cycle's
+/// inputs or a submit, whose QUEUE_FULL answer must match the aux (queue full) of the
+/// model state before it.
+class ManagerPlanReplayer {
+ public:
+  ManagerPlanReplayer(const Config& config, const py::list& calls, safestate_bindings::PlanArrays plan)
+      : config_(config), calls_(batch_steps(calls)), plan_(std::move(plan)) {}
+
+  std::pair<std::int64_t, std::int64_t> run(std::int64_t first, std::int64_t last) const {
+    return safestate_bindings::run_plan(
+        plan_, calls_, first, last, [this] { return std::make_unique<SystemStateManager>(config_); },
+        [](SystemStateManager& m, const BatchStep& s, std::int8_t full_before) {
+          if (const auto* in = std::get_if<ScanInputs>(&s)) {
+            (void)m.cycle(*in);
+            return true;
+          }
+          return (m.submit(std::get<Command>(s)) == SubmitResult::queue_full) == (full_before != 0);
+        },
+        [](const SystemStateManager& m, std::string& k) { observe_key(m, k); },
+        [](const SystemStateManager& m, std::string& k) {
+          const auto r = m.last_rows();
+          safestate_bindings::row_line(std::array<std::string_view, 2>{r.cycle ? r.cycle->id : std::string_view{},
+                                                                       r.command ? r.command->id : std::string_view{}},
+                                       k);
+        });
+  }
+
+ private:
+  Config config_;
+  std::vector<BatchStep> calls_;
+  safestate_bindings::PlanArrays plan_;
+};
+
 PYBIND11_MODULE(_core, m) {
   m.doc() =
       "The C++ SystemStateManager of safestate (docs/design/system-state-manager.md), for the\n"
@@ -458,6 +492,25 @@ PYBIND11_MODULE(_core, m) {
       "expected[expected_ids[i]] and a submit must answer QUEUE_FULL exactly when submit_full[i].\n"
       "Returns (trace, step) of the first disagreement or (-1, -1), and (cycle row, command row)\n"
       "after each step listed in rows_at (sorted).");
+  py::class_<ManagerPlanReplayer>(m, "PlanReplayer", py::module_local(),
+                                  "conform's compact replay plan (python/safestate/conform/replay_plan.py)\n"
+                                  "walked in C++: one fresh Manager per trace, no Python per step.")
+      .def(py::init([](const Config& config, const py::list& calls, std::vector<std::string> lines, const py::buffer& aux,
+                       std::vector<std::string> row_lines, const py::buffer& starts, const py::buffer& call_ids,
+                       const py::buffer& exp_ids, const py::buffer& initial_ids, const py::buffer& rows_at,
+                       const py::buffer& rows_exp) {
+             return ManagerPlanReplayer(config, calls,
+                                        safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts,
+                                                                       call_ids, exp_ids, initial_ids, rows_at, rows_exp));
+           }),
+           py::arg("config"), py::arg("calls"), py::arg("lines"), py::arg("aux"), py::arg("row_lines"),
+           py::arg("starts"), py::arg("call_ids"), py::arg("exp_ids"), py::arg("initial_ids"), py::arg("rows_at"),
+           py::arg("rows_exp"),
+           "calls as for probe (cycle inputs dicts, submit tuples); lines: the expected observe_key lines;\n"
+           "aux[line]: 1 when that state's queue is full (a submit from it must answer QUEUE_FULL);\n"
+           "row_lines: expected fired rows ('C17|K12|'); the rest are array.array buffers (see the header).")
+      .def("run", &ManagerPlanReplayer::run, py::arg("first"), py::arg("last"),
+           "Replay traces [first, last): (trace, step in it) of the first disagreement, or (-1, -1).");
   m.def("observe_key",
         [](const SystemStateManager& self) { std::string k; observe_key(self, k); return k; },
         "The canonical observable line that replay_compare compares (see there).");

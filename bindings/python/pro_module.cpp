@@ -6,7 +6,7 @@
 //    models/Protection.tla.
 //  * Supervisor: RuntimeSupervisor and the dispatch cycle with a test double of the seven
 //    units (their reports are the model's environment events); observe() under the names
-//    of models/RuntimeSupervisor.tla. replay_compare() replays whole traces in C++.
+//    of models/RuntimeSupervisor.tla. PlanReplayer replays conform's compact plan in C++.
 //  * Runtime: the whole controller closed around the thermal plant (demo-like scenarios).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -20,10 +20,12 @@
 
 #include "safestate/pro/diagnostics_ao.hpp"
 #include "safestate/pro/in_process_comms.hpp"
+#include "safestate/pro/protection_row.hpp"
 #include "safestate/pro/protection_runtime.hpp"
 #include "safestate/pro/runtime_supervisor.hpp"
 #include "safestate/pro/safety_ao.hpp"
 #include "safestate/pro/thermal_plant.hpp"
+#include "plan_replayer.hpp"
 
 namespace py = pybind11;
 using namespace safestate::pro;  // NOLINT
@@ -32,7 +34,6 @@ namespace {
 
 py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
 
-constexpr std::array<std::string_view, 5> kRowIds{"P01", "P02", "P03", "P04", "P05"};
 constexpr std::array<std::string_view, 3> kResults{"OK", "PROTECTION_ENTERED", "LATCH_BLOCKED"};
 constexpr std::array<std::string_view, 6> kFaults{"NONE", "SENSOR_INVALID", "OVER_TEMP", "UNDER_VOLT", "OVER_VOLT",
                                                   "LATCH_BLOCKED"};
@@ -75,7 +76,7 @@ class ProtectionChain {
     data_.control_command = kRegulatedCommand;
     run(safety_);
     run(diagnostics_);
-    return std::string(kRowIds[static_cast<std::size_t>(safety_.safety().last_row())]);
+    return std::string(row_id(safety_.safety().last_row()));
   }
 
   py::dict observe() const {
@@ -140,7 +141,7 @@ class SupervisorDouble {
     return std::string(step.row->id);
   }
 
-  // observe() as one line, for replay_compare: the fields of observe() in a fixed order.
+  // observe() as one line, for PlanReplayer: the fields of observe() in a fixed order.
   std::string key() const {
     std::string k(kSupStates[static_cast<std::size_t>(sup_.state())]);
     k += '|';
@@ -180,32 +181,38 @@ class SupervisorDouble {
   DispatchRecord dispatched_{};
 };
 
-// Replays whole traces through fresh doubles and compares each step's key with the
-// expected one; (index of the first disagreeing trace or -1, rows fired at `rows_at`).
-std::tuple<long, std::vector<std::string>> replay_compare(std::uint32_t init_timeout_ticks,
-                                                          const std::vector<std::pair<std::string, std::string>>& calls,
-                                                          const std::vector<std::size_t>& steps,
-                                                          const std::vector<std::string>& expected,
-                                                          const std::vector<std::size_t>& exp_ids,
-                                                          const std::vector<std::size_t>& starts,
-                                                          const std::vector<std::size_t>& rows_at) {
-  std::vector<std::string> rows;
-  rows.reserve(rows_at.size());
-  std::size_t next_row = 0;
-  for (std::size_t t = 0; t + 1 < starts.size(); ++t) {
-    SupervisorDouble sut(init_timeout_ticks);
-    for (std::size_t i = starts[t]; i < starts[t + 1]; ++i) {
-      const auto& [kind, unit] = calls.at(steps[i]);
-      std::string row = sut.tick(kind, unit);
-      if (next_row < rows_at.size() && rows_at[next_row] == i) {
-        rows.push_back(std::move(row));
-        ++next_row;
-      }
-      if (sut.key() != expected.at(exp_ids[i])) return {static_cast<long>(t), rows};
-    }
+// conform's compact replay plan (plan_replayer.hpp) over fresh doubles: calls are
+// (kind, unit); the row a tick fires is compared at the plan's row checks.
+struct SupervisorRun {
+  SupervisorDouble sut;
+  std::string row;
+};
+
+class SupervisorPlanReplayer {
+ public:
+  SupervisorPlanReplayer(std::uint32_t init_timeout_ticks, std::vector<std::pair<std::string, std::string>> calls,
+                         safestate_bindings::PlanArrays plan)
+      : init_timeout_ticks_(init_timeout_ticks), calls_(std::move(calls)), plan_(std::move(plan)) {}
+
+  std::pair<std::int64_t, std::int64_t> run(std::int64_t first, std::int64_t last) const {
+    return safestate_bindings::run_plan(
+        plan_, calls_, first, last,
+        [this] { return std::make_unique<SupervisorRun>(SupervisorRun{SupervisorDouble(init_timeout_ticks_), {}}); },
+        [](SupervisorRun& r, const std::pair<std::string, std::string>& c, std::int8_t) {
+          r.row = r.sut.tick(c.first, c.second);
+          return true;
+        },
+        [](const SupervisorRun& r, std::string& k) { k = r.sut.key(); },
+        [](const SupervisorRun& r, std::string& k) {
+          safestate_bindings::row_line(std::array<std::string_view, 1>{r.row}, k);
+        });
   }
-  return {-1L, rows};
-}
+
+ private:
+  std::uint32_t init_timeout_ticks_;
+  std::vector<std::pair<std::string, std::string>> calls_;
+  safestate_bindings::PlanArrays plan_;
+};
 
 }  // namespace
 
@@ -216,9 +223,9 @@ PYBIND11_MODULE(_pro, m) {
 
   m.def("transition_table", [] {
     py::list rows;
-    for (const std::string_view id : kRowIds) {
+    for (const ProtectionRowSpec& r : kProtectionRows) {
       py::dict d;
-      d["id"] = str(id);
+      d["id"] = str(r.id);
       rows.append(d);
     }
     return rows;
@@ -259,6 +266,17 @@ PYBIND11_MODULE(_pro, m) {
       .def("key", &SupervisorDouble::key)
       .def("copy", [](const SupervisorDouble& s) { return SupervisorDouble(s); });
 
-  m.def("replay_compare", &replay_compare, py::arg("init_timeout_ticks"), py::arg("calls"), py::arg("steps"),
-        py::arg("expected"), py::arg("exp_ids"), py::arg("starts"), py::arg("rows_at"));
+  py::class_<SupervisorPlanReplayer>(m, "PlanReplayer", py::module_local(),
+                                     "conform's compact replay plan walked in C++ (plan_replayer.hpp).")
+      .def(py::init([](std::uint32_t init_timeout_ticks, std::vector<std::pair<std::string, std::string>> calls,
+                       std::vector<std::string> lines, const py::buffer& aux, std::vector<std::string> row_lines,
+                       const py::buffer& starts, const py::buffer& call_ids, const py::buffer& exp_ids,
+                       const py::buffer& initial_ids, const py::buffer& rows_at, const py::buffer& rows_exp) {
+             return SupervisorPlanReplayer(
+                 init_timeout_ticks, std::move(calls),
+                 safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts, call_ids, exp_ids,
+                                                initial_ids, rows_at, rows_exp));
+           }))
+      .def("run", &SupervisorPlanReplayer::run, py::arg("first"), py::arg("last"),
+           "Replay traces [first, last): (trace, step in it) of the first disagreement, or (-1, -1).");
 }

@@ -5,17 +5,24 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <string_view>
 #include <vector>
 
 #include "safestate/saf/safety_service.hpp"
 #include "safestate/saf/transition_table.hpp"
+#include "plan_replayer.hpp"
 
 namespace py = pybind11;
 using namespace safestate::saf;  // NOLINT
 
 namespace {
+
+/// The authority code of a SafetyService built from the model's constants (design §12).
+constexpr std::uint8_t kAuthorityCode = 225;
 
 /// Report Control holder used for the model's control = "OTHER" (design §12).
 constexpr std::uint32_t kOtherComponentId = 0x0009'0909;
@@ -97,6 +104,70 @@ CycleResult cycle_raw(SafetyService& s, const std::vector<py::bytes>& datagrams,
   return s.cycle(batch, hardware_fault);
 }
 
+/// observe() as one line for PlanReplayer: its values in its key order, each followed by '|'.
+void observe_line(const SafetyService& s, std::string& k) {
+  const Observable& o = s.observe();
+  k.clear();
+  const auto add = [&k](std::string_view v) { k.append(v.data(), v.size()); k.push_back('|'); };
+  add(to_string(o.state)); add(to_string(o.estop)); add(std::to_string(o.estop_age));
+  add(to_string(o.health)); add(std::to_string(o.health_age)); add(to_string(o.control));
+  add(std::to_string(o.control_age)); add(to_string(o.out_request)); add(to_string(o.out_set_state));
+}
+
+/// One step of a plan: the inbox's datagrams and the hardware fault line.
+using SafCall = std::pair<std::vector<std::string>, bool>;
+
+struct SafRun {
+  SafetyService svc;
+  std::size_t steps;
+  CycleResult last;
+};
+
+/// conform's compact replay plan (plan_replayer.hpp) on the codec path, as the adapter's
+/// apply(): step k of a trace also carries garbage[k % garbage.size()], inserted at
+/// position k % (datagrams + 1) among the valid ones (which must change nothing).
+class SafPlanReplayer {
+ public:
+  SafPlanReplayer(Timing timing, std::vector<std::string> garbage, std::vector<SafCall> calls,
+                  safestate_bindings::PlanArrays plan)
+      : timing_(timing), garbage_(std::move(garbage)), calls_(std::move(calls)), plan_(std::move(plan)) {
+    if (garbage_.empty()) throw py::value_error("PlanReplayer: at least one garbage datagram");
+    for (const SafCall& c : calls_) {
+      if (c.first.size() + 1 > kMaxInboundPerCycle) throw py::value_error("PlanReplayer: too many datagrams in a call");
+    }
+  }
+
+  std::pair<std::int64_t, std::int64_t> run(std::int64_t first, std::int64_t last) const {
+    return safestate_bindings::run_plan(
+        plan_, calls_, first, last, [this] { return std::make_unique<SafRun>(SafRun{SafetyService(timing_, kAuthorityCode), 0, {}}); },
+        [this](SafRun& r, const SafCall& c, std::int8_t) {
+          const std::string& garbage = garbage_[r.steps % garbage_.size()];
+          const std::size_t at = r.steps % (c.first.size() + 1);
+          ++r.steps;
+          InboundBatch batch{};
+          const auto push = [&batch](const std::string& d) {
+            (void)batch.push(reinterpret_cast<const std::uint8_t*>(d.data()), d.size());
+          };
+          for (std::size_t i = 0; i <= c.first.size(); ++i) {
+            if (i == at) push(garbage);
+            if (i < c.first.size()) push(c.first[i]);
+          }
+          r.last = r.svc.cycle(batch, c.second);
+          return true;
+        },
+        [](const SafRun& r, std::string& k) { observe_line(r.svc, k); },
+        [](const SafRun& r, std::string& k) {
+          safestate_bindings::row_line(std::array<std::string_view, 2>{r.last.state_row, r.last.control_row}, k);
+        });
+  }
+
+ private:
+  Timing timing_;
+  std::vector<std::string> garbage_;
+  std::vector<SafCall> calls_;
+  safestate_bindings::PlanArrays plan_;
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_saf, m) {
@@ -130,6 +201,31 @@ PYBIND11_MODULE(_saf, m) {
 
   // module_local: the wrong-variant build (conform/wrong_variant/) loads a second module
   // with the same C++ type into the same process.
+  py::class_<SafPlanReplayer>(m, "PlanReplayer", py::module_local(),
+                              "conform's compact replay plan walked in C++ (plan_replayer.hpp), on the codec path.")
+      .def(py::init([](const std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>& timing,
+                       std::vector<std::string> garbage, std::vector<SafCall> calls, std::vector<std::string> lines,
+                       const py::buffer& aux, std::vector<std::string> row_lines, const py::buffer& starts,
+                       const py::buffer& call_ids, const py::buffer& exp_ids, const py::buffer& initial_ids,
+                       const py::buffer& rows_at, const py::buffer& rows_exp) {
+             const auto [estop, report, interval, check] = timing;
+             if (estop == 0 || report == 0 || interval == 0 || check == 0) {
+               throw py::value_error("every timer must be at least 1 cycle");
+             }
+             return SafPlanReplayer(Timing{estop, report, interval, check}, std::move(garbage), std::move(calls),
+                                    safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts,
+                                                                   call_ids, exp_ids, initial_ids, rows_at, rows_exp));
+           }),
+           py::arg("timing"), py::arg("garbage"), py::arg("calls"), py::arg("lines"), py::arg("aux"),
+           py::arg("row_lines"), py::arg("starts"), py::arg("call_ids"), py::arg("exp_ids"), py::arg("initial_ids"),
+           py::arg("rows_at"), py::arg("rows_exp"),
+           "timing: (estop, report data, message interval, check interval) cycles; garbage: one\n"
+           "datagram per step in turn; calls: (datagrams, hardware fault) per call id.")
+      .def("run", &SafPlanReplayer::run, py::arg("first"), py::arg("last"),
+           "Replay traces [first, last): (trace, step in it) of the first disagreement, or (-1, -1).");
+  m.def("observe_line", [](const SafetyService& s) { std::string k; observe_line(s, k); return k; },
+        "The canonical observe line PlanReplayer compares.");
+
   py::class_<SafetyService>(m, "SafetyService", py::module_local())
       .def(py::init([](std::uint32_t estop_timeout_cycles, std::uint32_t report_data_timeout_cycles,
                        std::uint32_t message_interval_cycles, std::uint32_t check_interval_cycles,
@@ -144,7 +240,7 @@ PYBIND11_MODULE(_saf, m) {
            }),
            py::arg("estop_timeout_cycles"), py::arg("report_data_timeout_cycles"),
            py::arg("message_interval_cycles"), py::arg("check_interval_cycles") = 20,
-           py::arg("authority_code") = 225)
+           py::arg("authority_code") = kAuthorityCode)
       .def("cycle", [](SafetyService& s, const py::dict& inbox) {
              const std::vector<Encoded> encoded = encode_inbox(inbox);
              InboundBatch batch{};

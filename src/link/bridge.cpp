@@ -253,6 +253,16 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
 
   [[nodiscard]] std::uint64_t id() const noexcept { return id_; }
 
+  /// TRUE while kPauseReadingAt or more frames wait to be sent to this client.
+  [[nodiscard]] bool backlogged() const noexcept { return out_.size() >= kPauseReadingAt; }
+
+  /// A request of this client that was not executed because its answers are backed up: it
+  /// is answered, together with the others, by one `busy` frame once the backlog drains.
+  void drop_busy(const json& id) {
+    ++busy_dropped_;
+    busy_last_id_ = id;
+  }
+
  private:
   void read() {
     reading_ = true;
@@ -265,7 +275,10 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       self->buffer_.consume(self->buffer_.size());
       self->bridge_.handle(self, text);
       if (self->closed_) return;
-      if (self->out_.size() >= kPauseReadingAt) {  // backpressure: the client's requests wait in TCP
+      // Backpressure: an observer's requests wait in TCP. The controlling client is always
+      // read, so that its heartbeats never queue behind its own requests (Impl::handle
+      // answers those with `busy` while its backlog lasts).
+      if (self->backlogged() && self->bridge_.controller != self.get()) {
         self->reading_ = false;
         self->bridge_.counters.reads_paused.fetch_add(1);
         return;
@@ -280,13 +293,26 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     ws_.async_write(net::buffer(*out_.front()), [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) return self->closed();
       self->out_.pop_front();
-      if (!self->reading_ && !self->closed_ && self->out_.size() < kPauseReadingAt / 4) self->read();
+      if (!self->closed_ && self->out_.size() < kPauseReadingAt / 4) {
+        if (self->busy_dropped_ > 0) self->send_busy();
+        if (!self->reading_) self->read();
+      }
       if (self->out_.empty() || self->closed_) {
         self->writing_ = false;
       } else {
         self->write();
       }
     });
+  }
+
+  void send_busy() {
+    json j = message("busy", busy_last_id_);
+    j["dropped"] = busy_dropped_;
+    j["detail"] = "requests not executed: your answers were not read (more than " + std::to_string(kPauseReadingAt) +
+                  " waiting); id is the last one's";
+    busy_dropped_ = 0;
+    busy_last_id_ = json();
+    out_.push_back(frame(j));
   }
 
   void closed() {
@@ -305,6 +331,8 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   bool reading_{false};  // a read is pending (FALSE while paused by backpressure)
   bool writing_{false};
   bool closed_{false};
+  std::uint64_t busy_dropped_{0};  // requests answered by the next `busy` frame
+  json busy_last_id_;
   static constexpr std::size_t kPauseReadingAt = 64;
   static constexpr std::size_t kMaxQueuedReplies = 1024;
 };
@@ -419,6 +447,7 @@ json Bridge::Impl::link_json() const {
       {"heartbeats", c.heartbeats.load()},
       {"control_lease_expired", c.control_lease_expired.load()},
       {"reads_paused", c.reads_paused.load()},
+      {"busy", c.busy.load()},
   };
 }
 
@@ -507,6 +536,18 @@ void Bridge::Impl::handle(const std::shared_ptr<WsSession>& s, const std::string
     s->send(frame(j), false);
   };
   const json req = json::parse(text, nullptr, false);
+  if (controller == s.get() && s->backlogged()) {
+    // Heartbeats and release_control are handled; everything else waits for no one: it
+    // is counted and answered by one `busy` frame when the client has read its answers.
+    const bool keeps = req.is_object() && req.contains("type") &&
+                       (req["type"] == "heartbeat" || req["type"] == "release_control");
+    if (!keeps) {
+      counters.busy.fetch_add(1);
+      const bool has_id = req.is_object() && req.contains("id") && (req["id"].is_number_integer() || req["id"].is_string());
+      s->drop_busy(has_id ? req["id"] : json());
+      return;
+    }
+  }
   if (req.is_discarded() || !req.is_object()) {
     return error(counters.malformed_json, "MALFORMED_JSON", nullptr,
                  req.is_discarded() ? "the frame is not JSON" : "expected a JSON object");

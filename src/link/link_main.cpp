@@ -21,6 +21,7 @@
 
 #include "safestate/link/bridge.hpp"
 #include "safestate/link/control_loop.hpp"
+#include "safestate/link/thread_placement.hpp"
 
 namespace {
 
@@ -74,9 +75,7 @@ int main(int argc, char** argv) {
   try {
     Bridge bridge(loop, opts);
     std::thread control([&] {
-      sched_param p{};
-      p.sched_priority = sched_get_priority_max(SCHED_FIFO) / 2;
-      (void)pthread_setschedparam(pthread_self(), SCHED_FIFO, &p);  // best effort (needs privileges)
+      (void)make_current_thread_realtime();  // best effort (needs privileges)
       loop.run(stop, std::chrono::microseconds(cycle_us));
     });
     std::thread waiter([&] {

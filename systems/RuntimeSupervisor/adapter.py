@@ -9,7 +9,7 @@ and the dispatch cycle; design §6-§8, §11).
   control reports the outputs safe).  The C++ reports the row that fired (`RowsFiredBy`).
 * Projection: `sup_state`, `status`, `init_ticks`, `stop_step`, `outputs_safe`,
   `dispatched`; the fault lines `fatal_fault`, `watchdog_ok` are inputs.
-* Replay of the 178,041 transitions is batched in the binding (`replay_compare`).
+* Replay of the 178,041 transitions runs as a compact plan in the binding (`PlanReplayer`).
 * Input-complete alphabet: every model event, plus the reports the model leaves out
   because they change nothing, each probed as the model's NONE: a unit reporting the
   status it already has, a fault line set to the value it has, a shutdown request while
@@ -46,8 +46,6 @@ class RuntimeSupervisorAdapter(Adapter):
 
     def __init__(self, core: Any, stepper: Any) -> None:
         super().__init__(core, stepper)
-        self._expected_ix: dict[tuple, int] = {}
-        self._expected: list[str] = []
         self._none = Event.of(TICK, {"ev": FnValue({"kind": "NONE", "unit": "none"})})
 
     # ------------------------------------------------------------ C++ calls
@@ -62,36 +60,19 @@ class RuntimeSupervisorAdapter(Adapter):
     def table_rows(self) -> list[str]:
         return [r["id"] for r in self.core.supervisor_table()]
 
-    # ------------------------------------------------------------ batched replay
-    def _key(self, state: tuple) -> str:
+    # ------------------------------------------------------------ compact replay plan
+    def expected_line(self, state: tuple) -> str:
         """The binding's key() line for the model's projection of `state`."""
         d = self.project(state)
         status = "".join(f"{d['status'][u]}," for u in UNITS)
         return (f"{d['sup_state']}|{status}|{d['init_ticks']}|{d['stop_step']}|{int(d['outputs_safe'])}|"
                 + "".join(f"{a}," for a in d["dispatched"]))
 
-    def fast_replay(self, traces: list[Any], rows_at: list[int]) -> tuple[int, list[frozenset[str]]]:
-        calls: list[tuple[str, str]] = []
-        call_ix: dict[Event, int] = {}
-        steps: list[int] = []
-        exp_ids: list[int] = []
-        starts = [0]
-        for ct in traces:
-            for step in ct.steps:
-                ci = call_ix.get(step.event)
-                if ci is None:
-                    ci = call_ix[step.event] = len(calls)
-                    calls.append(call(step.event))
-                steps.append(ci)
-                ei = self._expected_ix.get(step.state)
-                if ei is None:
-                    ei = self._expected_ix[step.state] = len(self._expected)
-                    self._expected.append(self._key(step.state))
-                exp_ids.append(ei)
-            starts.append(len(steps))
-        bad, rows = self.core.replay_compare(self.constants["InitTimeoutTicks"], calls, steps, self._expected,
-                                             exp_ids, starts, rows_at)
-        return bad, [frozenset({r}) for r in rows]
+    def plan_call(self, event: Event) -> tuple[str, str]:
+        return call(event)
+
+    def plan_config(self) -> Any:
+        return self.constants["InitTimeoutTicks"]
 
     # ------------------------------------------------------------ input-complete pass
     def input_alphabet(self, state: tuple) -> list[Probe]:

@@ -140,6 +140,22 @@ class SafetyServiceAdapter(Adapter):
     def observe(self, sut: Service) -> dict[str, Any]:
         return sut.svc.observe()  # type: ignore[no-any-return]
 
+    # ------------------------------------------------------------ compact replay plan
+    def expected_line(self, state: tuple) -> str:
+        """The binding's observe_line for the model's projection of `state`."""
+        d = self.project(state)
+        return "".join(f"{d[k]}|" for k in self.observed_variables)
+
+    def plan_call(self, event: Event) -> tuple[list[bytes], bool]:
+        """PlanReplayer's call: the inbox's datagrams and the hardware fault line (the binding
+        adds the garbage datagram of each step as `apply` does)."""
+        return self.encoded(event), bool(event.record()["hw_fault"])
+
+    def plan_config(self) -> Any:
+        c = self.constants
+        return ((c["EstopTimeoutCycles"], c["ReportDataTimeoutCycles"], c["MessageIntervalCycles"],
+                 CHECK_INTERVAL_CYCLES), list(GARBAGE.values()))
+
     # ------------------------------------------------------------ input-complete pass
     def input_alphabet(self, state: tuple) -> list[Probe]:
         """The same alphabet in every state: the model's Inboxes are all enabled everywhere."""

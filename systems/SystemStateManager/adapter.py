@@ -172,42 +172,49 @@ class SystemStateManagerAdapter(Adapter):
             hold = Event.of(CYCLE, {"in": FnValue(cur)})
             for label, cmd in self.jog_probes:
                 submit = Event.of(SUBMIT, {"c": FnValue(cmd)})
-                probes.append(Probe(hold, [self._call(submit), base], f"submit {label}, then hold the inputs",
+                probes.append(Probe(hold, [self.plan_call(submit), base], f"submit {label}, then hold the inputs",
                                     (submit,)))
         return probes
 
     def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
         """Run each probe on a fresh C++ manager brought to the state by `prefix`."""
-        out = self.core.probe(self.cfg, [self._call(ev) for ev in prefix], [p.concrete for p in probes])
+        out = self.core.probe(self.cfg, [self.plan_call(ev) for ev in prefix], [p.concrete for p in probes])
         return [(obs, frozenset(r for r in (rows["cycle"], rows["command"]) if r is not None))
                 for obs, rows in out]
 
-    # ------------------------------------------------- fast replay (optional)
+    # ------------------------------------------------- compact replay plan
     def fires_rows(self, event: Event) -> bool:
         return event.action == CYCLE
 
-    def _call(self, event: Event) -> Any:
+    def plan_call(self, event: Event) -> Any:
+        """core.PlanReplayer's call: a cycle's ScanInputs dict or a submit tuple."""
         rec = event.record()
         if event.action == CYCLE:
             return self.raw(rec, event.param())
         return (rec["kind"], rec["axis"], rec["direction"], rec["speed_mm_s"])
 
-    def _expected_key(self, state: tuple) -> str:
+    def plan_config(self) -> Any:
+        return self.cfg
+
+    def state_aux(self, state: tuple) -> int:
+        """1 when the model's queue is full: a submit from this state must be QUEUE_FULL."""
+        return 1 if len(state[self.index["queue"]]) >= self.queue_capacity else 0  # type: ignore[arg-type]
+
+    def expected_line(self, state: tuple) -> str:
         """The binding's observe_key line for the model's projection of `state`."""
+        if not hasattr(self, "_observe_keys"):
+            self._observe_keys = list(self.new_sut().observe())
         d = self.project(state)
         return "".join(("1" if v else "0") + "|" if isinstance(v, bool) else
                        ",".join(v) + "|" if isinstance(v, list) else f"{v}|"
                        for v in (d[k] for k in self._observe_keys))
 
-    def has_fast_replay(self) -> bool:
-        return hasattr(self.core, "replay_compare")  # a binding built before it lacks it
-
     def fast_replay(self, traces: list[Any], rows_at: list[int]) -> tuple[int, list[frozenset[str]]]:
-        """Replay whole traces in one binding call (`core.replay_compare`), compared in C++
-        against the projections' canonical lines; (index of the first disagreeing trace
-        or -1, the rows fired after each step of `rows_at`)."""
-        if not hasattr(self, "_observe_keys"):
-            self._observe_keys = list(self.new_sut().observe())
+        """The previous batched replay (`core.replay_compare`), kept for bench/bench_conform.py's
+        comparison: whole traces in one binding call, the calls and expected lines interned
+        per call in Python; (index of the first disagreeing trace or -1, the rows fired
+        after each step of `rows_at`)."""
+        if not hasattr(self, "_exp_ix"):
             self._exp_ix: dict[tuple, int] = {}
             self._exp: list[str] = []
         calls: list[Any] = []
@@ -230,7 +237,7 @@ class SystemStateManagerAdapter(Adapter):
                     ci = call_val.get(ev)
                     if ci is None:
                         ci = call_val[ev] = len(calls)
-                        calls.append(self._call(ev))
+                        calls.append(self.plan_call(ev))
                     hit = call_ix[id(ev)] = (ev, ci)
                 steps.append(hit[1])
                 state = step.state
@@ -239,7 +246,7 @@ class SystemStateManagerAdapter(Adapter):
                     ei = exp_ix.get(state)
                     if ei is None:
                         ei = exp_ix[state] = len(exp)
-                        exp.append(self._expected_key(state))
+                        exp.append(self.expected_line(state))
                     seen = by_id[id(state)] = (state, ei)
                 exp_ids.append(seen[1])
                 if ev.action == SUBMIT:

@@ -65,3 +65,20 @@ def tla_dir(tmp_path: Path):
             (tmp_path / f"{name}.cfg").write_text(cfg)
         return tmp_path / f"{name}.tla"
     return write
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """A `@pytest.mark.req("ID")` names a requirement of REQUIREMENTS.md (when it is found):
+    an unknown or missing ID fails the collection instead of linking the test to nothing."""
+    from safestate.evidence.build import find_requirements
+    from safestate.evidence.sources import read_requirements
+    marked = [(i, m) for i in items for m in i.iter_markers("req")]
+    path = find_requirements(REPO)
+    if not marked or path is None:
+        return
+    known = {r.id for r in read_requirements(path, REPO)}
+    for item, mark in marked:
+        bad = [a for a in mark.args if a not in known] if mark.args else ["(no ID)"]
+        if bad:
+            raise pytest.UsageError(f"{item.nodeid}: @pytest.mark.req: {', '.join(map(str, bad))} is not a "
+                                    "requirement ID of REQUIREMENTS.md")

@@ -134,6 +134,7 @@ def test_jog_speed_is_clamped_in_t1_and_overspeed_locks_out_rsm10():
     assert m.derived_inputs()["speed"] == "OVER_T1"
 
 
+@pytest.mark.req("RSM-08", "INV-NOJOG-AUTO")
 def test_jog_in_auto_is_rejected_and_changes_nothing():
     m = operational("AUTO")
     before = m.observe()
@@ -226,6 +227,7 @@ def test_config_fields_are_read_write():
     assert bad.observe()["fault_code"] == "SELF_TEST_FAILED"
 
 
+@pytest.mark.req("RSM-04", "INV-DISCREPANCY")
 def test_discrepancy_of_d_cycles_is_tolerated_and_d_plus_one_latches():
     m = core.Manager(core.Config(discrepancy_cycles=3))
     m.cycle(healthy())

@@ -51,3 +51,20 @@ def test_checker_cfg_errors_have_positions(text: str, line: int) -> None:
     with pytest.raises(TlaError) as err:
         parse_config_text(text, "m.cfg")
     assert err.value.loc.file == "m.cfg" and err.value.loc.line == line
+
+
+def test_checker_cfg_module_specific_substitution_is_parsed() -> None:
+    """`Op <- [M] Def` (checked against TLC by the corpus spec ModuleOverride)."""
+    cfg = parse_config_text("CONSTANTS\n  MaxSpeed <- [PumpLimits] TestMax\n  N = 2\n", "m.cfg")
+    assert [s[:3] for s in cfg.module_substitutions] == [("MaxSpeed", "PumpLimits", "TestMax")]
+    assert cfg.module_substitutions[0][3].line == 2 and cfg.constants["N"][0] == 2
+
+
+@pytest.mark.parametrize("value", ["[a |-> 1, b |-> 2]", "[1, 2]", "{[a |-> 1]}", "[a : {1}]"])
+def test_checker_cfg_record_or_function_value_is_refused_as_by_tlc(value: str) -> None:
+    """TLC 1.8.0 rejects `[...]` values in a .cfg (ConfigFileException); so do we,
+    saying how to write it instead."""
+    with pytest.raises(TlaError) as err:
+        parse_config_text(f"INIT Init\nNEXT Next\nCONSTANT C = {value}\n", "m.cfg")
+    assert err.value.loc.line == 3 and "record or function value" in err.value.message
+    assert "C <- ItsName" in err.value.message

@@ -35,15 +35,3 @@ def test_checker_cli_with_two_workers_matches_tlc(name: str) -> None:
     _compare(got, EXPECTED[name])
     assert p.returncode == EXPECTED[name]["exit_code"]
     assert "Traceback" not in p.stderr
-
-
-def test_checker_parallel_merge_gives_identical_counts_and_traces(monkeypatch: pytest.MonkeyPatch) -> None:
-    import safestate.checker.parallel as parallel
-    monkeypatch.setattr(parallel, "MIN_PARALLEL_LEVEL", 1)
-    monkeypatch.setattr(parallel, "CHUNK", 3)
-    for name in sorted(EXPECTED):
-        a = explore_states(load_model(str(CORPUS / f"{name}.tla")), workers=1)
-        b = explore_states(load_model(str(CORPUS / f"{name}.tla")), workers=2)
-        assert (a.result, a.distinct_states, a.states_generated, a.depth, a.violated) == \
-               (b.result, b.distinct_states, b.states_generated, b.depth, b.violated), name
-        assert [s.state for s in a.trace or []] == [s.state for s in b.trace or []], name

@@ -95,11 +95,23 @@ def test_endless_recursion_in_an_assumption_is_tlc_stack_overflow(tla_dir) -> No
     assert "StackOverflowError" in out and "internal error" not in out and "Traceback" not in out
 
 
-def test_recursive_action_level_operator_is_refused_with_its_position(tla_dir) -> None:
+def test_recursive_action_level_operator_is_checked_by_descending_into_it(tla_dir) -> None:
+    """Step(k) primes x at the bottom of its recursion; TLC evaluates it as an action
+    at each call (the corpus spec RecursiveAction compares counts and trace with TLC)."""
     spec = SPEC.format(init="0", next="x + 1").replace(
-        "Init ==", "RECURSIVE Step(_)\nStep(k) == IF k = 0 THEN x' = x ELSE Step(k - 1)\nInit ==")
+        "Init ==", "RECURSIVE Step(_)\nStep(k) == IF k = 0 THEN x' = (x + 1) % 3 ELSE Step(k - 1)\nInit ==")
+    r = explore_states(load_model(str(tla_dir("Rec", spec.replace("Next == x' = x + 1", "Next == Step(2)"),
+                                              "INIT Init\nNEXT Next\n"))))
+    assert (r.result, r.distinct_states, r.states_generated, r.depth) == ("success", 3, 4, 3)
+
+
+def test_recursive_operator_priming_its_parameter_is_refused_with_its_position(tla_dir) -> None:
+    """TLC binds a primed parameter by name (`q'` is the variable passed); a recursive
+    call passes values, so this is refused rather than guessed at."""
+    spec = SPEC.format(init="0", next="x + 1").replace(
+        "Init ==", "RECURSIVE Step(_, _)\nStep(q, k) == IF k = 0 THEN q' = 1 ELSE Step(q, k - 1)\nInit ==")
     with pytest.raises(TlaError) as e:
-        load_model(str(tla_dir("Rec", spec.replace("Next == x' = x + 1", "Next == Step(2)"),
+        load_model(str(tla_dir("Rec", spec.replace("Next == x' = x + 1", "Next == Step(x, 2)"),
                                "INIT Init\nNEXT Next\n")))
-    assert e.value.kind == "unsupported" and "recursive action-level operator Step" in e.value.message
-    assert e.value.loc is not None and e.value.loc.line == 7  # the recursive call in Step
+    assert e.value.kind == "unsupported" and "Step primes one of its parameters" in e.value.message
+    assert e.value.loc is not None and e.value.loc.line == 9  # the call in Next

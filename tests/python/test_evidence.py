@@ -59,9 +59,14 @@ def test_evidence_gaps_are_counted_and_shown_in_red(package: Path) -> None:
     man = _manifest(package)
     html = (package / "index.html").read_text()
     assert f'id="gap-count">{man["gaps"]} gaps<' in html
-    # PLCopenAxis has no conformance adapter and 5 invariants no mutant targets: both are gaps.
+    # PLCopenAxis has no conformance adapter: a gap; each of its 8 invariants has a killing mutant.
     assert man["gap_kinds"]["no conformance"] == 1
-    assert man["gap_kinds"]["invariant without a mutant"] >= 1
+    assert "invariant without a mutant" not in man["gap_kinds"]
+    # RSM-17's rows: the gap stays counted, with the design page's reason (not a stale one:
+    # the reasons of requirements outside this package are not checked).
+    assert re.search(r'<td class="gap">no design row</td><td><code>RSM-17</code></td><td>§8&#x27;s two axis tables '
+                     r'have no row IDs.*\(docs/design/system-state-manager.md:\d+\)</td>', html)
+    assert "stale gap reason" not in man["gap_kinds"]
     assert html.count('<td class="gap">') >= man["gaps"]
     # SCH-05 is in no registered system: a gap, not silently dropped.
     assert re.search(r'<td class="gap">not in a registered system</td><td><code>SCH-05</code>', html)
@@ -86,7 +91,7 @@ def test_evidence_package_has_diagrams_counterexamples_and_raw_artefacts(package
                 "raw/PLCopenAxis/check.json", "raw/PLCopenAxis/prove.json", "raw/PLCopenAxis/prove.log"):
         assert (package / rel).is_file(), rel
     itfs = sorted((package / "mutants" / "PLCopenAxis").glob("*.itf.json"))
-    assert len(itfs) == 3
+    assert len(itfs) == 8
     for itf in itfs:
         assert json.loads(itf.read_text())["states"]
         assert "<svg" in itf.with_name(itf.name.replace(".itf.json", ".svg")).read_text()
@@ -182,3 +187,92 @@ def test_evidence_requirement_ids_are_read_from_names_as_code_spells_them() -> N
     assert code_ids("SAF02_InvSafEmergency.HoldsOnRandomMessageSequences", known | {"INV-SAF-EMERGENCY"}) == \
         ("INV-SAF-EMERGENCY", "SAF-02")
     assert code_ids("| P01 | PAIRING | ... | A, SAF-02 |", known) == ("SAF-02",)
+
+
+def _known() -> set[str]:
+    assert REQUIREMENTS is not None
+    return {r.id for r in read_requirements(REQUIREMENTS, REPO)}
+
+
+def test_evidence_req_marker_links_a_test_and_an_unknown_id_is_a_located_error(tmp_path: Path) -> None:
+    from safestate.evidence.sources import RequirementLinkError, pytests
+    (tmp_path / "test_a.py").write_text(
+        'import pytest\n\n\n@pytest.mark.req("RSM-05", "INV-RESET")\n@pytest.mark.parametrize("x", [1])\n'
+        "def test_reset_is_refused(x):\n    assert x\n\n\ndef test_unlinked():\n    pass\n\n\n"
+        '@pytest.mark.req("SAF-02")\nclass TestPairing:\n    def test_first_estop_pairs(self):\n        pass\n')
+    got = {t.name.split("::", 1)[1]: (t.requirements, t.declared) for t in pytests(tmp_path, tmp_path, _known())}
+    assert got == {"test_reset_is_refused": (("INV-RESET", "RSM-05"), ("RSM-05", "INV-RESET")),
+                   "test_unlinked": ((), ()),
+                   "TestPairing::test_first_estop_pairs": (("SAF-02",), ("SAF-02",))}
+    (tmp_path / "test_a.py").write_text('import pytest\n\n\n@pytest.mark.req("RSM-99")\ndef test_x():\n    pass\n')
+    with pytest.raises(RequirementLinkError, match=r"test_a.py:4:19: RSM-99: not a requirement ID"):
+        pytests(tmp_path, tmp_path, _known())
+    (tmp_path / "test_a.py").write_text('import pytest\n\n\n@pytest.mark.req(\n    "RSM-05")\ndef test_x():\n    pass\n')
+    with pytest.raises(RequirementLinkError, match=r'test_a.py:4:2: expected @pytest.mark.req\("ID", ...\) on one line'):
+        pytests(tmp_path, tmp_path, _known())
+
+
+def test_evidence_gtest_req_comment_links_the_test_right_below(tmp_path: Path) -> None:
+    from safestate.evidence.sources import RequirementLinkError, gtests
+    (tmp_path / "t.cpp").write_text("// req: INV-POWER RSM-16\n// what it asserts\nTEST(Outputs, LockoutIsUnpowered) {}\n"
+                                    "\nTEST(Outputs, Unlinked) {}\n")
+    got = {t.name: t.requirements for t in gtests(tmp_path, tmp_path, _known())}
+    assert got == {"Outputs.LockoutIsUnpowered": ("INV-POWER", "RSM-16"), "Outputs.Unlinked": ()}
+    (tmp_path / "t.cpp").write_text("// req: INV-POWERS\nTEST(A, B) {}\n")
+    with pytest.raises(RequirementLinkError, match=r"t.cpp:1:9: INV-POWERS: not a requirement ID"):
+        gtests(tmp_path, tmp_path, _known())
+
+
+def test_evidence_unknown_req_marker_fails_pytest_collection() -> None:
+    import conftest
+
+    class Item:
+        def __init__(self, nodeid: str, *ids: str) -> None:
+            self.nodeid, self.mark = nodeid, pytest.mark.req(*ids).mark
+
+        def iter_markers(self, name: str) -> Iterator[pytest.Mark]:
+            return iter([self.mark] if name == "req" else [])
+
+    conftest.pytest_collection_modifyitems(None, [Item("t.py::ok", "RSM-05", "INV-POWER")])  # type: ignore[arg-type]
+    with pytest.raises(pytest.UsageError, match=r"t.py::bad: @pytest.mark.req: RSM-99 is not a requirement ID"):
+        conftest.pytest_collection_modifyitems(None, [Item("t.py::bad", "RSM-05", "RSM-99")])  # type: ignore[arg-type]
+
+
+def test_evidence_rows_unreachable_by_construction_have_the_design_pages_reason() -> None:
+    """The rows the flagship's conformance declares unreachable are exactly those the design
+    page gives a reason for: the package shows them apart, not as gaps."""
+    from safestate.evidence.sources import unreachable_rows
+    from safestate.systems.registry import load_all
+    page = REPO / "docs" / "design" / "system-state-manager.md"
+    rows = unreachable_rows(page, REPO)
+    assert [u.id for u in rows] == ["K17", "K22", "K23", "K28"]
+    assert all("C1" in u.reason and "answers first" in u.reason for u in rows)
+    flagship = next(s for s in load_all(REPO / "systems") if s.name == "SystemStateManager")
+    src = flagship.conformance.adapter.read_text()
+    assert re.search(r'unreachable_rows = \("K17", "K22", "K23", "K28"\)', src)
+
+
+def test_evidence_parametrised_gtest_cases_fold_into_their_test(tmp_path: Path) -> None:
+    from safestate.evidence.junit import results
+    xml = tmp_path / "ctest.xml"
+    xml.write_text('<testsuite><testcase name="PoweredStates/RSM05_EstopPriority.Enters/0" status="run"/>'
+                   '<testcase name="PoweredStates/RSM05_EstopPriority.Enters/1" status="run"><failure/></testcase>'
+                   '<testcase name="Inputs/RSM04_Discrepancy.Latches/Estop  # GetParam() = Estop" status="run"/>'
+                   '</testsuite>')
+    assert results(xml, "gtest") == {"RSM05_EstopPriority.Enters": "failed", "RSM04_Discrepancy.Latches": "passed"}
+
+
+def test_evidence_gap_reasons_keep_the_gap_counted_and_a_stale_one_is_shown(tmp_path: Path) -> None:
+    from safestate.evidence.matrix import REQUIREMENT_GAP_KINDS, Gap, _explained, _stale_reasons
+    from safestate.evidence.sources import RequirementLinkError, gap_reasons
+    page = tmp_path / "p.md"
+    page.write_text("- RSM-15 (no design row, no C++ row): a property of the whole C++, not a row.\n")
+    reasons = gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS)
+    gaps = _explained([Gap("no design row", "RSM-15", "generic"), Gap("no test", "RSM-15", "generic")], reasons)
+    assert gaps == [Gap("no design row", "RSM-15", "a property of the whole C++, not a row. (p.md:1)"),
+                    Gap("no test", "RSM-15", "generic")]
+    assert _stale_reasons(reasons, gaps) == [Gap("stale gap reason", "RSM-15",
+                                                 "p.md:1 explains 'no C++ row', which is not a gap of it")]
+    page.write_text("- RSM-15 (no row): x\n")
+    with pytest.raises(RequirementLinkError, match=r"p.md:1:11: no row: not a gap kind"):
+        gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS)

@@ -96,6 +96,24 @@ class Panel:
         raise AssertionError(f"step {name}: page {page} vs C++ {cpp}, expected {expected}")
 
 
+# Graphviz node labels are 14 pt in the SVG's user units (diagram_dot.py); at the page's
+# scale they must come out at least this many CSS pixels high to be read without zooming.
+MIN_LABEL_PX = 10
+
+
+def assert_diagram_readable_without_zoom(browser: Any) -> None:
+    """The whole state diagram fits its box and the window (no scrolling), its labels readable."""
+    box = browser.execute_script("""
+        const d = document.getElementById('diagram'), svg = d.querySelector('svg');
+        const r = svg.getBoundingClientRect(), vb = svg.viewBox.baseVal;
+        return {scale: Math.min(r.width / vb.width, r.height / vb.height), height: r.height,
+                window: window.innerHeight, overflowX: d.scrollWidth - d.clientWidth,
+                overflowY: d.scrollHeight - d.clientHeight};""")
+    assert box["scale"] * 14 >= MIN_LABEL_PX, box
+    assert box["height"] <= box["window"], box
+    assert box["overflowX"] <= 0 and box["overflowY"] <= 0, box
+
+
 def test_the_demo_scenario_played_by_clicking_matches_the_cpp_status(browser: Any) -> None:
     with PanelServer() as link:
         observer = LinkClient(link.ws_url)
@@ -106,6 +124,7 @@ def test_the_demo_scenario_played_by_clicking_matches_the_cpp_status(browser: An
             time.sleep(0.05)
         assert p.text("control") == "in control"
         assert browser.find_element("id", "diagram").get_attribute("data-loaded") == "true"
+        assert_diagram_readable_without_zoom(browser)
         p.shows("boot", state="IDLE")
 
         p.click("plant-estop")

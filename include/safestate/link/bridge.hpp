@@ -51,6 +51,7 @@ struct BridgeCounters {
   std::atomic<std::uint64_t> heartbeats{0};
   std::atomic<std::uint64_t> control_lease_expired{0};
   std::atomic<std::uint64_t> reads_paused{0};  ///< backpressure: a client's replies piled up
+  std::atomic<std::uint64_t> busy{0};  ///< the controller's requests not executed while its answers piled up
   std::atomic<std::uint64_t> clients{0};  ///< connected WebSocket clients now
 };
 

@@ -33,6 +33,12 @@ class CycleTimeHistogram {
     ++count_;
     if (ns > max_ns_) max_ns_ = ns;
   }
+  /// Adds another histogram's samples (the bench sums its rounds).
+  void merge(const CycleTimeHistogram& other) noexcept {
+    for (std::size_t i = 0; i < kBuckets; ++i) buckets_[i] += other.buckets_[i];
+    count_ += other.count_;
+    if (other.max_ns_ > max_ns_) max_ns_ = other.max_ns_;
+  }
   void clear() noexcept {
     buckets_.fill(0);
     count_ = 0;
@@ -81,17 +87,19 @@ class ControlLoop {
   [[nodiscard]] const SystemStateManager& manager() const noexcept { return manager_; }
 
  private:
+  // What the control thread alone touches first; every word the bridge writes or reads sits
+  // on cache lines of its own, so the bridge's activity costs the cycle no false sharing.
   SystemStateManager manager_;
   sim::CellPlant plant_;
-  HeartbeatMonitor heartbeat_;
-  std::atomic<std::uint32_t> plant_word_{PlantSwitches{}.pack()};
-  OutcomeQueue outcomes_;
-  std::atomic<std::uint64_t> outcomes_dropped_{0};
-  Seqlock<CellStatus> status_;
   CellStatus snapshot_{};
   CycleTimeHistogram times_;
-  std::atomic<bool> clear_times_{false};
+  HeartbeatMonitor heartbeat_;
+  alignas(detail::kCacheLine) std::atomic<std::uint32_t> plant_word_{PlantSwitches{}.pack()};
+  alignas(detail::kCacheLine) std::atomic<bool> clear_times_{false};
+  OutcomeQueue outcomes_;
+  alignas(detail::kCacheLine) std::atomic<std::uint64_t> outcomes_dropped_{0};
   std::atomic<std::uint64_t> cycles_{0};
+  Seqlock<CellStatus> status_;
 };
 
 }  // namespace safestate::link

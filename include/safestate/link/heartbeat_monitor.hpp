@@ -11,6 +11,8 @@
 #include <atomic>
 #include <cstdint>
 
+#include "safestate/spsc_queue.hpp"  // detail::kCacheLine
+
 namespace safestate::link {
 
 /// 100 ms at the default 1 ms cycle: the documented heartbeat period (design §11).
@@ -48,8 +50,9 @@ class HeartbeatMonitor {
   [[nodiscard]] std::uint32_t period_cycles() const noexcept { return period_; }
 
  private:
-  std::atomic<std::uint32_t> count_{0};
-  std::uint32_t seen_{0};  // control thread only
+  // The bridge writes count_; the control thread alone writes the rest (own cache lines).
+  alignas(detail::kCacheLine) std::atomic<std::uint32_t> count_{0};
+  alignas(detail::kCacheLine) std::uint32_t seen_{0};  // control thread only
   std::uint32_t period_;
   std::uint32_t age_;      // control thread only
 };

@@ -18,8 +18,9 @@
 
 namespace safestate::link {
 
+/// Cache-line aligned and sized: its lines are shared with no other data.
 template <typename T>
-class Seqlock {
+class alignas(64) Seqlock {
   static_assert(std::is_trivially_copyable_v<T>, "Seqlock<T>: T must be trivially copyable");
   static_assert(std::atomic<std::uint64_t>::is_always_lock_free, "64-bit atomics must be lock-free");
   static constexpr std::size_t kWords = (sizeof(T) + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t);

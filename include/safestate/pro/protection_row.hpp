@@ -1,7 +1,11 @@
-// The rows P01..P05 of sm_protection (docs/design/protection.md §4), first match wins.
+// The rows P01..P05 of sm_protection (docs/design/protection.md §4) as constexpr data,
+// first match wins among the rows of a state; the row IDs are the design page's.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 #include "safestate/pro/protection_state.hpp"
 
@@ -9,15 +13,66 @@ namespace safestate::pro {
 
 enum class ProtectionRow : std::uint8_t { p01, p02, p03, p04, p05 };
 
+// A row's guard over the tick's hazard (hz) and clear request (clr).
+enum class ProtectionGuard : std::uint8_t {
+  hazard,              // hz
+  clear_and_hazard,    // clr ∧ hz
+  clear_and_no_hazard, // clr ∧ ¬hz
+  always,              // TRUE
+};
+
+struct ProtectionRowSpec {
+  std::string_view id;
+  ProtectionRow row;
+  ProtectionState state;
+  ProtectionGuard guard;
+};
+
+inline constexpr std::array<ProtectionRowSpec, 5> kProtectionRows{{
+    {"P01", ProtectionRow::p01, ProtectionState::normal, ProtectionGuard::hazard},
+    {"P02", ProtectionRow::p02, ProtectionState::normal, ProtectionGuard::always},
+    {"P03", ProtectionRow::p03, ProtectionState::protection, ProtectionGuard::clear_and_hazard},
+    {"P04", ProtectionRow::p04, ProtectionState::protection, ProtectionGuard::clear_and_no_hazard},
+    {"P05", ProtectionRow::p05, ProtectionState::protection, ProtectionGuard::always},
+}};
+
+[[nodiscard]] constexpr bool guard_holds(ProtectionGuard g, bool hazard, bool clear_request) noexcept {
+  switch (g) {
+    case ProtectionGuard::hazard:
+      return hazard;
+    case ProtectionGuard::clear_and_hazard:
+      return clear_request && hazard;
+    case ProtectionGuard::clear_and_no_hazard:
+      return clear_request && !hazard;
+    case ProtectionGuard::always:
+      return true;
+  }
+  return false;
+}
+
+// The first row of `state` whose guard holds; every state ends with an `always` row.
 [[nodiscard]] constexpr ProtectionRow select_row(ProtectionState state, bool hazard,
                                                  bool clear_request) noexcept {
-  if (state == ProtectionState::normal) {
-    return hazard ? ProtectionRow::p01 : ProtectionRow::p02;
+  for (const ProtectionRowSpec& r : kProtectionRows) {
+    if (r.state == state && guard_holds(r.guard, hazard, clear_request)) {
+      return r.row;
+    }
   }
-  if (clear_request && hazard) {
-    return ProtectionRow::p03;
-  }
-  return clear_request ? ProtectionRow::p04 : ProtectionRow::p05;
+  return ProtectionRow::p05;  // unreachable: both states end with an `always` row
 }
+
+[[nodiscard]] constexpr std::string_view row_id(ProtectionRow row) noexcept {
+  return kProtectionRows[static_cast<std::size_t>(row)].id;
+}
+
+// The table's order is the enum's: row_id indexes by it.
+static_assert(kProtectionRows[0].row == ProtectionRow::p01 && kProtectionRows[1].row == ProtectionRow::p02 &&
+              kProtectionRows[2].row == ProtectionRow::p03 && kProtectionRows[3].row == ProtectionRow::p04 &&
+              kProtectionRows[4].row == ProtectionRow::p05);
+static_assert(select_row(ProtectionState::normal, true, true) == ProtectionRow::p01);
+static_assert(select_row(ProtectionState::normal, false, true) == ProtectionRow::p02);
+static_assert(select_row(ProtectionState::protection, true, true) == ProtectionRow::p03);
+static_assert(select_row(ProtectionState::protection, false, true) == ProtectionRow::p04);
+static_assert(select_row(ProtectionState::protection, true, false) == ProtectionRow::p05);
 
 }  // namespace safestate::pro

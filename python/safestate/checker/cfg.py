@@ -22,7 +22,7 @@ _KEYWORDS = {
     "PROPERTIES", "CONSTRAINT", "CONSTRAINTS", "ACTION_CONSTRAINT", "ACTION_CONSTRAINTS", "SYMMETRY",
     "VIEW", "CHECK_DEADLOCK", "POSTCONDITION", "ALIAS",
 }
-_TOKEN = re.compile(r'\s+|\\\*[^\n]*|\(\*.*?\*\)|"(?:[^"\\]|\\.)*"|<-|<<|>>|-?\d+|[A-Za-z0-9_]+|[{}(),=\[\]]',
+_TOKEN = re.compile(r'\s+|\\\*[^\n]*|\(\*.*?\*\)|"(?:[^"\\]|\\.)*"|<-|<<|>>|-?\d+|[A-Za-z0-9_]+|\|->|->|[{}(),=\[\]:]',
                     re.S)
 
 
@@ -50,6 +50,8 @@ class Config:
     # CONSTANT name -> (value, loc); substitutions name -> (operator name, loc)
     constants: dict[str, tuple[Any, Loc]] = field(default_factory=dict)
     substitutions: dict[str, tuple[str, Loc]] = field(default_factory=dict)
+    # Op <- [M] Def: (Op, M, Def, loc), in .cfg order.
+    module_substitutions: list[tuple[str, str, str, Loc]] = field(default_factory=list)
     # identifiers and strings in order of appearance (TLC interns them first)
     tokens: list[str] = field(default_factory=list)
 
@@ -148,8 +150,14 @@ def parse_config_text(text: str, file: str) -> Config:
             if toks[i].text == "<-":
                 i += 1
                 if i < len(toks) and toks[i].text == "[":
-                    raise TlaError("unsupported", "module-specific substitutions (C <- [M] Op) are not supported",
-                                   toks[i].loc)
+                    # Op <- [M] Def: Op as defined in module M means the spec's Def.
+                    module = need_name(i + 1)
+                    if i + 2 >= len(toks) or toks[i + 2].text != "]":
+                        raise TlaError("config", "expected ] after the module name of <- [M]", module.loc)
+                    target = need_name(i + 3)
+                    cfg.module_substitutions.append((name.name, module.name, target.name, name.loc))
+                    i += 4
+                    continue
                 target = need_name(i)
                 cfg.substitutions[name.name] = (target.name, name.loc)
                 i += 1
@@ -185,4 +193,7 @@ def _value(toks: list[_Tok], i: int, const: str) -> tuple[Any, int]:
         return (frozenset(items) if s == "{" else tuple(items)), i + 1
     if re.match(r"[A-Za-z_][A-Za-z0-9_]*$", s) and s not in _KEYWORDS:
         return ModelValue(s), i + 1
+    if s == "[":
+        raise TlaError("config", f"a record or function value [...] cannot be given in a .cfg (TLC 1.8.0 rejects it "
+                       f"too): define it in the spec and write {const} <- ItsName", t.loc)
     raise TlaError("config", f"unexpected {s!r} in the value of constant {const}", t.loc)

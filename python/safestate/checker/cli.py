@@ -166,6 +166,8 @@ def _summary(model: Model, r: CheckResult, itf: dict | None, seconds: float) -> 
     }
     if model.properties:
         out["properties"] = _property_summary(model, r)
+    if r.parallel is not None:
+        out["parallel"] = r.parallel
     return out
 
 

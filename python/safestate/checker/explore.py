@@ -16,9 +16,10 @@ single-worker breadth-first search exactly:
 Deduplication uses the exact states (a Python dict), not 64-bit fingerprints, so
 no state can be lost to a fingerprint collision (probability 0).
 
-With ``workers > 1`` large BFS levels are expanded by forked worker processes
-(`parallel.py`); their results are merged in the sequential order, so every count,
-verdict and trace is identical for any number of workers.
+With ``workers > 1`` the fingerprint space is sharded over forked worker processes
+(`parallel.py`, `shard_worker.py`); every count, verdict and trace is identical for
+any number of workers.  Liveness, --graph and TLCGet need one search in one process:
+they use one worker (said on stderr).
 """
 
 from __future__ import annotations
@@ -78,6 +79,8 @@ class CheckResult:
     loop_step: Step | None = None
     # Every property the liveness counterexample violates, in .cfg order (TLC names them all).
     violated_properties: list[str] | None = None
+    # With several workers: their CPU seconds and the critical path's (see parallel.py).
+    parallel: dict | None = None
 
 
 class _Found(Exception):
@@ -404,12 +407,20 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
                    progress: Callable[[str], None] | None = None) -> CheckResult:
     """Explore every reachable state; see the module docstring for the semantics."""
     start = time.monotonic()
-    if workers > 1 and not graph and not RUNTIME.used:  # TLCGet/TLCSet need one search
+    if workers > 1:
+        reason = _needs_one_worker(model, graph)
+        if reason:
+            print(f"safestate check: {reason}; using one worker", file=sys.stderr, flush=True)
+            workers = 1
+    if workers > 1:
         from .parallel import ParallelExplorer
         explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
+    cpu_start = time.process_time()
     result = call_with_deep_stack(explorer.run)
+    if workers > 1:
+        result.parallel = explorer.cpu_report(time.process_time() - cpu_start)  # type: ignore[attr-defined]
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness
         call_with_deep_stack(lambda: check_liveness(model, explorer, result))
@@ -417,6 +428,17 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         _check_postcondition(model, result)
     result.seconds = time.monotonic() - start
     return result
+
+
+def _needs_one_worker(model: Model, graph: bool) -> str | None:
+    """Why the search cannot be sharded over workers (None if it can)."""
+    if model.liveness:
+        return "liveness checking needs the whole state graph in one process"
+    if graph:
+        return "--graph needs the whole state graph in one process"
+    if RUNTIME.used:
+        return "TLCGet/TLCSet need the counters of a single search"
+    return None
 
 
 def _check_postcondition(model: Model, result: CheckResult) -> None:

@@ -14,10 +14,16 @@ property       the tail starts at a state  every tail state       infinitely oft
 ``WF_v(A)``    with ENABLED <<A>>_v        ENABLED <<A>>_v,       -
                                            no <<A>>_v step
 ``SF_v(A)``    any                         no <<A>>_v step        ENABLED <<A>>_v
+``[](P =>``    with ~Q, after a state      any                    -
+``[]Q)``       with P (an extra phase)
+``P => []Q``   with ~Q, after an initial   any                    -
+               state with P (extra phase)
+``P => <>Q``   initial, with P /\\ ~Q      satisfies ~Q           -
 =============  ==========================  =====================  ==================
 
 The behaviour graph is the product of the state graph with this two-phase
-automaton (phase 0: before the tail, phase 1: in it).  As TLC does, every state
+automaton (phase 0: before the tail, phase 1: in it; ``[](P => []Q)`` has three:
+before P, after P, and the tail from a ~Q state on).  As TLC does, every state
 has a stuttering self-loop, so a behaviour may end by stuttering.  A counterexample
 is a strongly connected component (iterative Tarjan, `scc.py`) of phase 1 that is
 *fair*: every WF action that is enabled in all its states is taken in it, and
@@ -94,6 +100,7 @@ class LivenessChecker:
         # The steps a tail may take: all, or those of the current property's `forbid`.
         self._forbid: Callable[[tuple, tuple], bool] | None = None
         self._rows: dict[int, list[int]] = {}
+        self.k = 2  # phases of the property's automaton (see `counterexample`)
 
     def tail_succ(self, v: int) -> Iterable[int]:
         """Successors of v by steps a tail may take (stuttering is always allowed)."""
@@ -126,10 +133,12 @@ class LivenessChecker:
         n = self.g.n
         self._forbid = ob.forbid
         self._rows = {}
+        self.k = 3 if ob.kind in ("stays", "init_always") else 2  # automaton phases; the last is the tail
+        k = self.k
         stay, start, visit = self._masks(ob)
         dist, parent = self._product_bfs(ob, stay, start)
         self.check_memory()
-        tail = [v for v in sorted(range(n), key=lambda v: dist[2 * v + 1]) if dist[2 * v + 1] >= 0]
+        tail = [v for v in sorted(range(n), key=lambda v: dist[k * v + k - 1]) if dist[k * v + k - 1] >= 0]
         in_tail = bytearray(n)
         for v in tail:
             in_tail[v] = 1
@@ -141,17 +150,17 @@ class LivenessChecker:
             if found is None:
                 continue
             part, needs = found
-            entry = min(part, key=lambda v: dist[2 * v + 1])
-            if best is not None and dist[2 * entry + 1] >= best[0]:
+            entry = min(part, key=lambda v: dist[k * v + k - 1])
+            if best is not None and dist[k * entry + k - 1] >= best[0]:
                 continue  # its lasso cannot be shorter
             cycle = self._cycle(entry, part, needs)
-            length = dist[2 * entry + 1] + len(cycle)
+            length = dist[k * entry + k - 1] + len(cycle)
             if best is None or length < best[0]:
                 best = (length, entry, cycle)
         if best is None:
             return None
         _, entry, cycle = best
-        prefix = self._path_to(2 * entry + 1, parent)
+        prefix = self._path_to(k * entry + k - 1, parent)
         if not cycle:
             return Lasso(prefix, len(prefix) - 1, True)
         return Lasso(prefix + cycle, len(prefix) - 1, False)
@@ -166,6 +175,14 @@ class LivenessChecker:
             s = states[v]
             if ob.kind in ("stable", "sf", "infinitely_step"):
                 stay[v] = start[v] = 1
+            elif ob.kind in ("stays", "init_always"):
+                assert q is not None
+                stay[v] = 1
+                start[v] = not q(s)
+            elif ob.kind == "init_eventually":
+                assert q is not None
+                stay[v] = not q(s)
+                start[v] = stay[v] and p(s)
             elif ob.kind == "wf":
                 stay[v] = start[v] = p(s)
             elif ob.kind == "leadsto":
@@ -181,33 +198,43 @@ class LivenessChecker:
         return stay, start, visit
 
     def _product_bfs(self, ob: Obligation, stay: bytearray, start: bytearray) -> tuple[array, array]:
-        """0-1 BFS over (state, phase) nodes 2v+phase; entering the tail costs nothing."""
-        n = self.g.n
-        dist = array("q", [-1]) * (2 * n)
-        parent = array("q", [-1]) * (2 * n)
+        """0-1 BFS over (state, phase) nodes k*v+phase; entering the next phase costs
+        nothing.  With three phases (``[](P => []Q)``) phase 1 is entered at a P state
+        and the tail (phase 2) at a ~Q state."""
+        n, k = self.g.n, self.k
+        last = k - 1
+        p = ob.p
+        states = self.states
+        dist = array("q", [-1]) * (k * n)
+        parent = array("q", [-1]) * (k * n)
         dq: deque[int] = deque()
         for v in self.initial:
-            node = 2 * v + 1 if ob.kind == "eventually" else 2 * v
-            if ob.kind == "eventually" and not start[v]:
+            if ob.kind == "init_always" and not p(states[v]):
+                continue  # P => []Q holds on behaviours from here
+            if ob.kind in ("eventually", "init_eventually") and not start[v]:
                 continue
+            node = k * v + (last if ob.kind in ("eventually", "init_eventually") else
+                            1 if ob.kind == "init_always" else 0)
             if dist[node] < 0:
                 dist[node] = 0
                 dq.append(node)
-        done = bytearray(2 * n)
+        done = bytearray(k * n)
         while dq:
             node = dq.popleft()
             if done[node]:
                 continue
             done[node] = 1
-            v, phase = divmod(node, 2)
-            if phase == 0 and start[v] and (dist[node + 1] < 0 or dist[node + 1] > dist[node]):
-                dist[node + 1] = dist[node]
-                parent[node + 1] = node
-                dq.appendleft(node + 1)
-            for w in (self.tail_succ(v) if phase == 1 else self.g.succ(v)):
-                if phase == 1 and not stay[w]:
+            v, phase = divmod(node, k)
+            if phase < last:
+                step = start[v] if phase == k - 2 else p(states[v])  # k - 2: the phase before the tail
+                if step and (dist[node + 1] < 0 or dist[node + 1] > dist[node]):
+                    dist[node + 1] = dist[node]
+                    parent[node + 1] = node
+                    dq.appendleft(node + 1)
+            for w in (self.tail_succ(v) if phase == last else self.g.succ(v)):
+                if phase == last and not stay[w]:
                     continue
-                nxt = 2 * w + phase
+                nxt = k * w + phase
                 if dist[nxt] < 0 or dist[nxt] > dist[node] + 1:
                     dist[nxt] = dist[node] + 1
                     parent[nxt] = node
@@ -217,7 +244,7 @@ class LivenessChecker:
     def _path_to(self, node: int, parent: array) -> list[int]:
         path: list[int] = []
         while node >= 0:
-            v = node // 2
+            v = node // self.k
             if not path or path[-1] != v:
                 path.append(v)
             node = parent[node]
@@ -340,16 +367,30 @@ class LivenessChecker:
         raise TlaError("internal", "liveness: no path inside a strongly connected component")
 
 
+# Properties whose negation TLC checks with a tableau (it is not of the forms
+# []<>A / <>[]A).  TLC's Liveness.processLiveness gathers them in the orders of
+# solution it checks before the ones without a tableau; within one, the search finds
+# the counterexample nearest the initial states first (e.g. stuttering there).
+TABLEAU_KINDS = ("eventually", "leadsto", "stays", "init_always", "init_eventually")
+
+
 def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], fairness: list[Fairness],
                    obligations: list[Obligation],
                    check_memory: Callable[[], None]) -> tuple[Obligation, Lasso] | None:
-    """The first liveness obligation (in .cfg order) with a fair counterexample."""
+    """A liveness obligation with a fair counterexample, chosen as TLC does: the
+    properties checked with a tableau first, then the others; in each group the
+    shortest counterexample (the first in .cfg order among equals)."""
     checker = LivenessChecker(graph, states, initial, fairness, check_memory)
-    for ob in obligations:
-        check_memory()
-        lasso = checker.counterexample(ob)
-        if lasso is not None:
-            return ob, lasso
+    for group in ([o for o in obligations if o.kind in TABLEAU_KINDS],
+                  [o for o in obligations if o.kind not in TABLEAU_KINDS]):
+        best: tuple[Obligation, Lasso] | None = None
+        for ob in group:
+            check_memory()
+            lasso = checker.counterexample(ob)
+            if lasso is not None and (best is None or len(lasso.nodes) < len(best[1].nodes)):
+                best = (ob, lasso)
+        if best is not None:
+            return best
     return None
 
 
@@ -371,6 +412,15 @@ def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) 
         return not any(p(s) for s in cycle)
     if ob.kind == "stable":
         return not all(p(s) for s in cycle)
+    if ob.kind == "stays":
+        assert q is not None
+        return any(p(s) and not all(q(x) for x in states[i:]) for i, s in enumerate(states))
+    if ob.kind == "init_always":
+        assert q is not None
+        return p(states[0]) and not all(q(x) for x in states)
+    if ob.kind == "init_eventually":
+        assert q is not None
+        return p(states[0]) and not any(q(x) for x in states)
     assert forbid is not None
     taken = any(forbid(s, t) for s, t in steps)
     if ob.kind == "infinitely_step":

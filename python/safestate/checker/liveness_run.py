@@ -45,6 +45,7 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
                                                                     lasso.stuttering)):
             names.append(other.name)
     result.violated_properties = names
+    result.violated = names[0]  # TLC's message names them in .cfg order
     steps = lasso_steps(model, explorer, lasso)
     result.loop = lasso.loop
     if not lasso.stuttering:

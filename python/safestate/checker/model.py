@@ -26,7 +26,7 @@ from ..tla.actions import ActionCompiler, Leaf
 from ..tla.compiler import Compiler, check_bool
 from ..tla.env import UNSET, Env, Frame
 from ..tla.errors import EvalError, Loc, TlaError, UnsupportedError
-from ..tla.modules import (BuiltinSym, ConstSym, DefSym, ModuleLoader, Scope, VarSym, build_root_scope,
+from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoader, Scope, VarSym, build_root_scope,
                            load_module, tlc_intern_order)
 from ..tla.parser import parse_text
 from ..tla.resolve import check_modules
@@ -72,6 +72,8 @@ class Model:
     action_properties: list[Named] = field(default_factory=list)
     liveness: list[Obligation] = field(default_factory=list)
     view: Named | None = None
+    # Every module file the model was read from (the root, EXTENDS and INSTANCE).
+    module_files: list[str] = field(default_factory=list)
     # ALIAS: the record shown instead of the variables in a text counterexample.
     alias: Named | None = None
     # POSTCONDITION: evaluated once after a search that found no error.
@@ -234,9 +236,11 @@ def _load_model(tla_path: str, cfg_path: str | None) -> Model:
     constants, overrides = _constants(config, scope, module)
     compiler = Compiler(constants, overrides)
     compiler.sym_overrides = {id(scope.lookup(n)): target for n, target in overrides.items()}
+    compiler.sym_overrides.update(_module_overrides(config, scope, loader))
     compiler.var_names = [v.name for v in var_syms]
     model = Model(module, config, scope, [v.name for v in var_syms], compiler, config.check_deadlock)
     _check_assumptions(model, loader)
+    model.module_files = loader.files()
     _compile_behaviour(model)
     model.invariants = [_predicate(model, e, "invariant") for e in config.invariants]
     model.constraints = [_predicate(model, e, "constraint") for e in config.constraints]
@@ -309,6 +313,64 @@ def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str
             raise TlaError("config", f"The constant parameter {name} is not assigned a value by the "
                            f"configuration file.", sym.loc)
     return values, overrides
+
+
+def _module_overrides(config: Config, scope: Scope, loader: ModuleLoader) -> dict[int, Any]:
+    """``Op <- [M] Def``: every copy of M's definition Op (in each INSTANCE of M, or
+    where M is extended) stands for the spec's definition Def, as in TLC."""
+    out: dict[int, Any] = {}
+    for name, module, target, loc in config.module_substitutions:
+        if module not in _module_names(scope.module, loader):
+            raise TlaError("config", f"In the configuration file, the module name {module} is not a module in "
+                           f"the specification.", loc)
+        mod = loader.find(module, loc)
+        defn = next((u for u in mod.units if isinstance(u, A.OpDef) and u.name == name), None) \
+            if isinstance(mod, A.Module) else None
+        if defn is None:
+            raise TlaError("config", f"In the configuration file, the identifier {name} does not appear in the "
+                           f"specification.", loc)
+        tsym = scope.lookup(target)
+        if tsym is None:
+            raise TlaError("config", f"The configuration file substitutes for {name} with the undefined "
+                           f"identifier {target}.", loc)
+        for sym in _defs_of(scope, defn):
+            out[id(sym)] = tsym
+    return out
+
+
+def _module_names(root: A.Module, loader: ModuleLoader) -> set[str]:
+    """Names of the modules the spec extends or instantiates, directly or not."""
+    seen: set[str] = set()
+    todo = [root]
+    while todo:
+        m = todo.pop()
+        if m.name in seen:
+            continue
+        seen.add(m.name)
+        deps = list(m.extends) + [(u.module, u.loc) for u in m.units if isinstance(u, A.InstanceDef)]
+        for name, where in deps:
+            found = loader.find(name, where)
+            if isinstance(found, A.Module):
+                todo.append(found)
+    return seen
+
+
+def _defs_of(scope: Scope, defn: A.OpDef) -> list[DefSym]:
+    """Every symbol for `defn` in `scope` and the scopes of its instances."""
+    out: list[DefSym] = []
+    seen: set[int] = set()
+    todo = [scope]
+    while todo:
+        sc = todo.pop()
+        if id(sc) in seen:
+            continue
+        seen.add(id(sc))
+        for sym in sc.names.values():
+            if isinstance(sym, DefSym) and sym.defn is defn:
+                out.append(sym)
+            elif isinstance(sym, InstanceSym):
+                todo.append(sym.scope)
+    return out
 
 
 class _ValueSym(ConstSym):

@@ -1,44 +1,65 @@
-"""Multi-process expansion of large BFS levels.
+"""Breadth-first search on several cores: the fingerprint space sharded over worker processes.
 
-Worker processes are forked after the model is compiled (so they share it) and
-evaluate the next-state relation for chunks of a BFS level.  The parent merges
-their successor lists in exactly the order a single worker would have produced
-them, and does the counting, deduplication, constraint and invariant checks
-itself; a state whose expansion failed in a worker is re-expanded in the parent
-to report the error.  Hence verdicts, counts, depth and traces do not depend on
-the number of workers.
+The coordinator (this process) computes the initial states as one worker does, then
+forks ``n`` workers (`shard_worker.py`); worker ``i`` owns the states whose key hashes
+to ``i`` modulo ``n`` and keeps their seen-set and queue.  The search is
+level-synchronous: per BFS level each worker expands its states, sends the successors
+owned by another worker in one batch per owner (a file in shared memory), merges the
+batches sent to it and numbers its new states; the coordinator is a barrier that only
+adds up counts.  No state passes through the coordinator, so the workers' CPU is the
+search's CPU.
+
+Results are those of one worker, by construction:
+
+* distinct/generated counts and depth of a complete search do not depend on the order
+  of expansion;
+* every state is numbered by its place in a single worker's BFS order (its parent's
+  place, then its rank among the parent's successors), and of several parents of a
+  new state the first in that order is recorded, as one worker records it;
+* when any worker meets something a single worker stops at (a violated invariant or
+  action property, a deadlock, an evaluation error), the workers send their stored
+  states, the coordinator rebuilds the single-worker search as it was at the start of
+  that level and expands the level sequentially (`Explorer.expand`).  So the
+  reported violation, its counts and its (shortest) trace are exactly the single
+  worker's: of several violations at the same depth, the first in TLC's generation
+  order.
 """
 
 from __future__ import annotations
 
 import multiprocessing
+import os
+import pickle
+import shutil
+import sys
+import tempfile
+import time
+from array import array
+from multiprocessing.connection import Connection
 from typing import Any, Callable
 
 from ..tla.errors import TlaError
-from .explore import Explorer, Step
+from . import explore
+from .explore import CheckResult, Explorer
 from .model import Model
-
-# Levels smaller than this are expanded in the parent: forking work out costs more.
-MIN_PARALLEL_LEVEL = 512
-CHUNK = 256
-
-_MODEL: Model | None = None
+from .shard_worker import ShardWorker
 
 
-def _expand_chunk(states: list[tuple]) -> list[Any]:
-    """Successors (state, leaf) of each state, or None where evaluation failed."""
-    model = _MODEL
-    assert model is not None
-    out: list[Any] = []
-    for st in states:
-        succ: list[tuple[tuple, int]] = []
+def _worker_main(model: Model, me: int, n: int, folder: str, conn: Connection, max_memory_mb: float,
+                 initial: list[tuple]) -> None:
+    try:
+        ShardWorker(model, me, n, folder, conn, max_memory_mb).run(initial)
+    except BaseException as e:  # a defect: the coordinator searches again with one worker
         try:
-            model.run_next(st, lambda s, leaf, L: succ.append((s, leaf)))
-        except (TlaError, RecursionError):
-            out.append(None)
-            continue
-        out.append(succ)
-    return out
+            conn.send(("crash", f"{type(e).__name__}: {e}"))
+        except OSError:
+            pass
+    finally:
+        conn.close()
+
+
+class _Fallback(Exception):
+    """The sharded search failed (a worker crashed): search again with one worker."""
 
 
 class ParallelExplorer(Explorer):
@@ -46,64 +67,165 @@ class ParallelExplorer(Explorer):
                  progress: Callable[[str], None] | None, workers: int) -> None:
         super().__init__(model, graph, max_memory_mb, progress)
         self.workers = workers
+        # CPU seconds of each worker, and of the slowest worker summed over the phases
+        # (the search's critical path: what wall time would be on idle cores).
+        self.worker_cpu = [0.0] * workers
+        self.critical_cpu = 0.0
 
     def _expand_all(self) -> None:
-        global _MODEL
-        _MODEL = self.m
+        if not self.states:
+            return
+        folder = tempfile.mkdtemp(prefix="safestate-bfs-", dir="/dev/shm" if os.path.isdir("/dev/shm") else None)
         ctx = multiprocessing.get_context("fork")
-        with ctx.Pool(self.workers) as pool:
-            while self.head < len(self.states):
-                level_end = len(self.states)
-                if level_end - self.head < MIN_PARALLEL_LEVEL:
-                    while self.head < level_end:
-                        self.expand(self.head)
-                        self.head += 1
-                    continue
-                chunks = [self.states[i:min(i + CHUNK, level_end)] for i in range(self.head, level_end, CHUNK)]
-                for chunk_result in pool.imap(_expand_chunk, chunks):
-                    for succ in chunk_result:
-                        if succ is None:
-                            self.expand(self.head)  # reproduces the error with exact counts
-                        else:
-                            self.merge(self.head, succ)
-                        self.head += 1
+        conns: list[Connection] = []
+        procs = []
+        initial = list(self.states)
+        self._init_generated = self.generated
+        try:
+            for me in range(self.workers):
+                ours, theirs = ctx.Pipe()
+                proc = ctx.Process(target=_worker_main, daemon=True,
+                                   args=(self.m, me, self.workers, folder, theirs, self.max_memory_mb, initial))
+                proc.start()
+                theirs.close()
+                conns.append(ours)
+                procs.append(proc)
+            try:
+                self._coordinate(conns)
+            except _Fallback as why:
+                print(f"safestate check: the parallel search failed ({why}); searching again with one worker",
+                      file=sys.stderr, flush=True)
+                self._restart_sequential(initial)
+        finally:
+            for c in conns:
+                c.close()
+            for proc in procs:
+                proc.join(timeout=10)
+                if proc.is_alive():
+                    proc.kill()
+                    proc.join()
+            shutil.rmtree(folder, ignore_errors=True)
+        if self.outcome is None and self.head < len(self.states):
+            Explorer._expand_all(self)  # the level replayed sequentially, and any after it
 
-    def merge(self, i: int, successors: list[tuple[tuple, int]]) -> None:
-        """Account for the successors of state `i` as `Explorer.expand` would."""
+    def cpu_report(self, coordinator_cpu: float) -> dict:
+        """`--json`'s "parallel": the workers' CPU and the critical path's (with this process's)."""
+        return {"workers": self.workers, "worker_cpu_seconds": [round(c, 3) for c in self.worker_cpu],
+                "coordinator_cpu_seconds": round(coordinator_cpu, 3),
+                "critical_path_cpu_seconds": round(coordinator_cpu + self.critical_cpu, 3)}
+
+    # ---------------------------------------------------------------- coordination
+    def _gather(self, conns: list[Connection]) -> list[tuple]:
+        replies = []
+        for c in conns:
+            try:
+                r = c.recv()
+            except EOFError:
+                raise _Fallback("a worker process ended unexpectedly") from None
+            if r[0] == "crash":
+                raise _Fallback(r[1])
+            replies.append(r)
+        if len(replies[0]) == 4:
+            # The phase ends when its slowest worker does: its CPU is on the critical path.
+            self.critical_cpu += max(r[3] for r in replies)
+            for i, r in enumerate(replies):
+                self.worker_cpu[i] += r[3]
+        return replies
+
+    @staticmethod
+    def _broadcast(conns: list[Connection], decision: str) -> None:
+        for c in conns:
+            c.send(decision)
+
+    def _coordinate(self, conns: list[Connection]) -> None:
+        distinct, depth = len(self.states), 1
+        while True:
+            expanded = self._gather(conns)  # phase 1: (flagged, memory exceeded, generated, CPU s)
+            if self._memory_exceeded(conns, expanded, distinct, depth):
+                return
+            if any(r[0] for r in expanded):
+                return self._replay(conns, depth)
+            self._broadcast(conns, "merge")
+            merged = self._gather(conns)  # phase 2: (flagged, memory exceeded, new states)
+            if self._memory_exceeded(conns, merged, distinct, depth):
+                return
+            if any(r[0] for r in merged):
+                return self._replay(conns, depth)
+            self.generated += sum(r[2] for r in expanded)
+            new = sum(r[2] for r in merged)
+            if new == 0:
+                self._broadcast(conns, "quit")
+                self.outcome = CheckResult("success", distinct, self.generated, depth, 0)
+                return
+            distinct += new
+            depth += 1
+            self.max_level = depth
+            self._broadcast(conns, "number")
+            self._level_progress(depth, distinct, new)
+
+    def _level_progress(self, depth: int, distinct: int, queued: int) -> None:
+        now = time.monotonic()
+        if self.progress is not None and now - self.last_progress >= explore.PROGRESS_SECONDS:
+            self.last_progress = now
+            self.progress(f"Progress({depth}): {self.generated} states generated, {distinct} distinct states "
+                          f"found, {queued} states left on queue.")
+
+    def _memory_exceeded(self, conns: list[Connection], replies: list[tuple], distinct: int, depth: int) -> bool:
+        if not any(r[1] for r in replies):
+            return False
+        self._broadcast(conns, "quit")
+        err = TlaError("memory", f"memory limit of {self.max_memory_mb} MB exceeded after {distinct} distinct "
+                       f"states; raise it with --max-memory or add a state constraint")
+        self.outcome = CheckResult("error", distinct, self.generated, depth, 0, error=err)
+        return True
+
+    # ---------------------------------------------------------------- sequential replay
+    def _replay(self, conns: list[Connection], depth: int) -> None:
+        """Rebuild the single-worker search at the start of level `depth` from the
+        workers' stored states; `_expand_all` then expands that level sequentially."""
+        self._broadcast(conns, "dump")
+        parts = []
+        for (path,) in self._gather(conns):
+            with open(path, "rb") as f:
+                parts.append(pickle.load(f))
+        sizes = [0] * (depth + 2)
+        for _, levels, _, _, _ in parts:
+            for lv in levels:
+                sizes[lv] += 1
+        offset = [0] * (depth + 2)
+        for lv in range(2, depth + 2):
+            offset[lv] = offset[lv - 1] + sizes[lv - 1]
+        total = offset[depth + 1]
+        states: list[Any] = [None] * total
+        parent = array("q", [-1]) * total
+        leaf = array("i", [-1]) * total
+        level = array("i", [0]) * total
+        for sts, levels, pos, ppos, leaves in parts:
+            for j, st in enumerate(sts):
+                lv = levels[j]
+                g = offset[lv] + pos[j]
+                states[g] = st
+                level[g] = lv
+                if lv > 1:
+                    parent[g] = offset[lv - 1] + ppos[j]
+                    leaf[g] = leaves[j]
         m = self.m
-        cur = self.states[i]
-        next_level = self.level[i] + 1
-        constrained = bool(m.constraints or m.action_constraints)
         keyed = m.view is not None or m.symmetry is not None
-        seen_get = self.seen.get
-        for st, leaf in successors:
-            self.generated += 1
-            m.check_complete(st, leaf)
-            in_model = True
-            if constrained:
-                in_model = m.in_model(st) and m.action_ok(cur, st)
-            new = True
-            idx = -1
-            if in_model:
-                key = m.key(st) if keyed else st
-                idx = seen_get(key, -1)
-                if idx < 0:
-                    idx = self._add(st, key, i, leaf, next_level)
-                else:
-                    new = False
-            if self.live_edges and in_model:
-                self.edge_src.append(i)
-                self.edge_dst.append(idx)
-            if new:
-                for inv in m.invariants:
-                    if not m.holds(inv, st):
-                        if idx >= 0:
-                            self._finish("safety failure", inv.name, idx)
-                        # A constraint-violating successor (not stored): recover its action parameters.
-                        params = self._step_params(cur, leaf, st)
-                        self._finish("safety failure", inv.name, i, Step(st, m.leaves[leaf].name, params))
-            if m.action_properties:
-                self._check_action_properties(i, cur, st, idx if new else -1, leaf,
-                                              lambda: self._step_params(cur, leaf, st))
-        if not successors and m.check_deadlock:
-            self._finish("deadlock failure", None, i)
+        self.states, self.parent, self.leaf, self.level = states, parent, leaf, level
+        self.seen = {(m.key(st) if keyed else st): g for g, st in enumerate(states)}
+        self.head = offset[depth]
+        self.max_level = depth
+        self.next_check = total
+
+    def _restart_sequential(self, initial: list[tuple]) -> None:
+        """Back to the state after Init (level 1), for a search with one worker."""
+        k = len(initial)
+        m = self.m
+        keyed = m.view is not None or m.symmetry is not None
+        self.states = initial
+        del self.parent[k:], self.leaf[k:], self.level[k:]
+        self.seen = {(m.key(st) if keyed else st): g for g, st in enumerate(initial)}
+        self.head = 0
+        self.max_level = 1
+        self.generated = self._init_generated
+        self.next_check = k

@@ -10,8 +10,12 @@
   - a state predicate ``P`` (checked on the initial states),
   - ``[]P`` (an implied invariant, reported as "Invariant X is violated"),
   - ``[][A]_v`` (an action property, checked on every transition),
-  - ``<>P``, ``P ~> Q``, ``[]<>P``, ``<>[]P``, ``[]<><<A>>_v``, ``WF_v(A)`` and
-    ``SF_v(A)`` (liveness, see `liveness.py`),
+  - ``<>P``, ``P ~> Q``, ``[]<>P``, ``<>[]P``, ``[](P => []Q)``, ``[]<><<A>>_v``,
+    ``WF_v(A)`` and ``SF_v(A)`` (liveness, see `liveness.py`); nested forms that
+    are equivalent to one of these are rewritten first (`_normal`):
+    ``[](P => <>Q)`` is ``P ~> Q`` (its definition), ``[][]F`` is ``[]F``,
+    ``<><>F`` is ``<>F``, ``<>[]<>P`` is ``[]<>P`` and ``[]<>[]P`` is ``<>[]P``,
+    and ``P => []Q`` / ``P => <>Q`` (P on the initial state) are checked too,
 
   where P and Q are state predicates.  Any other temporal formula is refused with
   an "unsupported" error at its position, never guessed at.
@@ -63,7 +67,8 @@ class Obligation:
 
     kind: "init" (pred on initial states), "always" ([]pred), "action" ([][pred]_v,
     pred is the whole step predicate), or a liveness form "eventually" (<>p),
-    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p), "infinitely_step"
+    "leadsto" (p ~> q), "infinitely" ([]<>p), "stable" (<>[]p), "stays" ([](p => []q)),
+    "init_always" (p => []q), "init_eventually" (p => <>q), "infinitely_step"
     ([]<><<A>>_v), "wf" / "sf" (WF_v(A) / SF_v(A), p is ENABLED <<A>>_v)."""
 
     name: str
@@ -74,7 +79,8 @@ class Obligation:
     forbid: Pred | None = None
 
 
-LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "infinitely_step", "wf", "sf")
+LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually",
+                  "infinitely_step", "wf", "sf")
 
 
 class TemporalCompiler:
@@ -178,9 +184,35 @@ class TemporalCompiler:
         return Fairness(e.kind, self.pred(A.Unary(e.loc, "ENABLED", step), scope, binds),
                         self.pred(step, scope, binds), e.loc)
 
+    def _normal(self, e: A.Expr, scope: Scope) -> A.Expr:
+        """`e` with the nested temporal forms above rewritten to the checked ones
+        (behaviours are stuttering-closed, so these equivalences hold for TLC too)."""
+        while isinstance(e, A.Unary) and e.op in ("[]", "<>"):
+            arg = self._normal(e.arg, scope)
+            if isinstance(arg, A.Unary) and arg.op == e.op:
+                e = arg  # [][]F, <><>F
+                continue
+            inner = arg.arg if isinstance(arg, A.Unary) and arg.op in ("[]", "<>") else None
+            if isinstance(inner, A.Unary) and inner.op == e.op and arg.op != e.op:
+                e = arg  # <>[]<>P is []<>P, []<>[]P is <>[]P
+                continue
+            if (e.op == "[]" and isinstance(arg, A.Binary) and arg.op == "=>"
+                    and not self.is_temporal(arg.lhs, scope) and isinstance(arg.rhs, A.Unary)
+                    and arg.rhs.op == "<>" and not self.is_temporal(arg.rhs.arg, scope)):
+                return A.Binary(e.loc, "~>", arg.lhs, arg.rhs.arg)  # [](P => <>Q) is P ~> Q
+            return A.Unary(e.loc, e.op, arg) if arg is not e.arg else e
+        return e
+
     def _obligation(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
         if not self.is_temporal(e, scope):
             return Obligation(name, "init", self._state(e, scope, binds))
+        e = self._normal(e, scope)
+        if (isinstance(e, A.Unary) and e.op == "[]" and isinstance(e.arg, A.Binary) and e.arg.op == "=>"
+                and not self.is_temporal(e.arg.lhs, scope) and isinstance(e.arg.rhs, A.Unary)
+                and e.arg.rhs.op == "[]" and not self.is_temporal(e.arg.rhs.arg, scope)):
+            # [](P => []Q): once P holds, Q holds from then on.
+            return Obligation(name, "stays", self._live(e.arg.lhs, scope, binds),
+                              self._live(e.arg.rhs.arg, scope, binds))
         if isinstance(e, A.Unary) and e.op == "[]":
             arg = e.arg
             if isinstance(arg, A.StepAction) and arg.stutter:
@@ -190,25 +222,33 @@ class TemporalCompiler:
                 if isinstance(inner, A.StepAction) and not inner.stutter:
                     return Obligation(name, "infinitely_step", self.pred(inner, scope, binds),
                                       forbid=self.pred(inner, scope, binds))
-                return Obligation(name, "infinitely", self._state(inner, scope, binds))
+                return Obligation(name, "infinitely", self._live(inner, scope, binds))
             if not self.is_temporal(arg, scope):
                 return Obligation(name, "always", self._state(arg, scope, binds))
         if isinstance(e, A.Unary) and e.op == "<>":
             arg = e.arg
             if isinstance(arg, A.Unary) and arg.op == "[]" and not self.is_temporal(arg.arg, scope):
-                return Obligation(name, "stable", self._state(arg.arg, scope, binds))
+                return Obligation(name, "stable", self._live(arg.arg, scope, binds))
             if not self.is_temporal(arg, scope):
-                return Obligation(name, "eventually", self._state(arg, scope, binds))
+                return Obligation(name, "eventually", self._live(arg, scope, binds))
+        if (isinstance(e, A.Binary) and e.op == "=>" and not self.is_temporal(e.lhs, scope)
+                and isinstance(e.rhs, A.Unary) and e.rhs.op in ("[]", "<>")
+                and not self.is_temporal(e.rhs.arg, scope) and not isinstance(e.rhs.arg, A.StepAction)):
+            # P => []Q and P => <>Q: P is evaluated on the initial state.
+            kind = "init_always" if e.rhs.op == "[]" else "init_eventually"
+            return Obligation(name, kind, self._live(e.lhs, scope, binds), self._live(e.rhs.arg, scope, binds))
         if isinstance(e, A.Fairness):
             fair = self._fair(e, scope, binds)
             return Obligation(name, e.kind.lower(), fair.enabled, forbid=fair.taken)
         if isinstance(e, A.Binary) and e.op == "~>":
             if not self.is_temporal(e.lhs, scope) and not self.is_temporal(e.rhs, scope):
-                return Obligation(name, "leadsto", self._state(e.lhs, scope, binds),
-                                  self._state(e.rhs, scope, binds))
+                return Obligation(name, "leadsto", self._live(e.lhs, scope, binds),
+                                  self._live(e.rhs, scope, binds))
         raise UnsupportedError(f"the temporal formula in property {name} is not supported: only []P, <>P, "
-                               f"P ~> Q, []<>P, <>[]P (P, Q state predicates), [][A]_v, []<><<A>>_v, WF_v(A), "
-                               f"SF_v(A), conjunctions and \\A over them are checked", e.loc)
+                               f"P ~> Q, []<>P, <>[]P, [](P => <>Q), [](P => []Q), P => []Q, P => <>Q (P, Q state "
+                               f"predicates), "
+                               f"[][A]_v, []<><<A>>_v, WF_v(A), SF_v(A), conjunctions and \\A over them are "
+                               f"checked", e.loc)
 
     # ------------------------------------------------------------ compilation
     def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:
@@ -231,6 +271,38 @@ class TemporalCompiler:
             raise UnsupportedError("an action-level formula is not supported here: this position of a "
                                    "property takes a state predicate", e.loc)
         return self.pred(e, scope, binds)
+
+    def _live(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:
+        """A state predicate inside a liveness formula.  Its parts that read no
+        variable (below its boolean connectives) are evaluated now, as TLC's tableau
+        construction does (`Liveness.astToLive`): an error in one stops TLC before the
+        search, with exit code 255."""
+        pred = self._state(e, scope, binds)
+        self._eval_constant_parts(e, scope, binds)
+        return pred
+
+    def _eval_constant_parts(self, e: A.Expr, scope: Scope, binds: dict) -> None:
+        if isinstance(e, (A.And, A.Or)):
+            for item in e.items:
+                self._eval_constant_parts(item, scope, binds)
+            return
+        if isinstance(e, A.Unary) and e.op in ("~", "\\lnot", "\\neg"):
+            self._eval_constant_parts(e.arg, scope, binds)
+            return
+        if isinstance(e, A.Binary) and e.op == "=>":
+            self._eval_constant_parts(e.lhs, scope, binds)
+            self._eval_constant_parts(e.rhs, scope, binds)
+            return
+        env, _ = self._env(scope, binds)
+        if self.compiler.info(e, env).vars:
+            return
+        pred = self.pred(e, scope, binds)
+        try:
+            pred.code(None, None, pred.base.copy())
+        except TlaError as err:
+            if err.kind not in ("eval", "module eval"):
+                raise
+            raise TlaError("module eval", err.message, err.loc or e.loc) from None
 
     def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:
         p = self.pred(e, scope, binds)

@@ -24,6 +24,9 @@ class TlcSummary:
     lasso: dict | None = None
     # Every property TLC names as violated by its liveness counterexample.
     violated_properties: list[str] | None = None
+    # The states of a safety/deadlock/evaluation-error trace ("The behavior up to this
+    # point is:"), each as its `/\ x = v` lines.
+    trace: list[str] | None = None
 
 
 def tlc_jar() -> str | None:
@@ -67,7 +70,24 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     return TlcSummary(result,
                       int(stats[-1][1]) if stats else None, int(stats[-1][0]) if stats else None,
                       int(depth[-1]) if depth else None, viol.group(1) if viol else None, exit_code,
-                      _lasso(out) if temporal else None, _temporal_names(out) if temporal else None)
+                      _lasso(out) if temporal else None, _temporal_names(out) if temporal else None,
+                      None if temporal else _trace(out))
+
+
+def _trace(out: str) -> list[str] | None:
+    """The states TLC prints after "The behavior up to this point is:"."""
+    at = out.find("Error: The behavior up to this point is:")
+    if at < 0:
+        return None
+    states = []
+    for block in re.split(r"^State \d+: .*$", out[at:], flags=re.M)[1:]:
+        lines = []
+        for line in block.splitlines()[1:]:
+            if not line.strip():
+                break
+            lines.append(line.rstrip())
+        states.append("\n".join(lines))
+    return states
 
 
 def _temporal_names(out: str) -> list[str]:

@@ -18,8 +18,10 @@ in this package names a model variable or a binding call.  An adapter is mostly 
 * `observe(sut)` -- the C++ observable state as a dict (usually `sut.observe()`).
 
 Optional: `input_alphabet(state)` and `probe_batch(prefix, probes)` for the
-input-complete pass, and `hypothesis_rules()`, a mixin class of Hypothesis rules for
-the shapes random walks rarely reach.
+input-complete pass; `expected_line(state)` (with `plan_call`, `plan_config`,
+`state_aux`) for the replay as a compact plan walked in the binding (replay_plan.py);
+and `hypothesis_rules()`, a mixin class of Hypothesis rules for the shapes random walks
+rarely reach.
 """
 
 from __future__ import annotations
@@ -171,14 +173,29 @@ class Adapter:
         """Whether `event` fires table rows (compared with `rows_operator`)."""
         return self.rows_operator is not None
 
-    def fast_replay(self, traces: list[Any], rows_at: list[int]) -> tuple[int, list[frozenset[str]]]:
-        """Optional batched replay of whole traces (`ConcreteTrace`s), compared in the
-        binding: (index of the first disagreeing trace or -1, the rows fired after each
-        flat step index of `rows_at`).  `has_fast_replay()` says whether it is defined."""
+    # ------------------------------------------- compact replay plan (optional)
+    def expected_line(self, state: tuple) -> str:
+        """The binding's canonical observe line for the model's projection of `state`
+        (what its PlanReplayer compares after each step; conform/replay_plan.py)."""
         raise NotImplementedError
 
-    def has_fast_replay(self) -> bool:
-        return type(self).fast_replay is not Adapter.fast_replay
+    def state_aux(self, state: tuple) -> int:
+        """A small int the binding checks on the call that leaves `state` (e.g. 1: the
+        model's queue is full, a submit must be refused).  Default 0."""
+        return 0
+
+    def plan_call(self, event: Event) -> Any:
+        """The binding's PlanReplayer call for `event` (default: the event's parameter)."""
+        return event.param()
+
+    def plan_config(self) -> Any:
+        """The leading argument of the binding's PlanReplayer (what builds a fresh object);
+        a tuple is several leading arguments."""
+        return self.config()
+
+    def has_plan_replay(self) -> bool:
+        """Whether the replay can run as a compact plan in the binding."""
+        return type(self).expected_line is not Adapter.expected_line and hasattr(self.core, "PlanReplayer")
 
     def measurements(self) -> dict[str, Any]:
         """Figures the adapter measured on the C++ over the run (e.g. the Protection

@@ -10,11 +10,10 @@ from dataclasses import dataclass, field
 from types import ModuleType
 
 from ..checker.model import Model
-from ..errors import UsageError
-from . import itf_io
+from ..errors import SafestateError, UsageError
+from . import itf_io, replay_plan
 from .cover import Trace, bfs_tree, cover, tree_path
 from .graph import StateGraph
-from .events import Event
 from .replay import Harness, Mismatch
 from .traces import ConcreteTrace, Materializer
 
@@ -38,8 +37,8 @@ class ConformResult:
     model_steps: int = 0
     found: list[Found] = field(default_factory=list)
     seconds: float = 0.0
-    replay_seconds: float = 0.0      # in the batched binding call (fast path)
-    model_seconds: float = 0.0       # computing the model's concrete traces (fast path)
+    replay_seconds: float = 0.0      # in the binding's PlanReplayer (plan path)
+    model_seconds: float = 0.0       # building the replay plan, or reading it from the cache
     traces_written: int = 0
 
 
@@ -51,7 +50,7 @@ class Options:
     max_mismatches: int = 10          # stop after this many traces disagreed
     check_rows: bool = True           # compare fired rows with the model's, per transition
     progress: Callable[[str], None] | None = None
-    fast: bool = True                 # batched replay when the adapter has fast_replay()
+    fast: bool = True                 # replay as a compact plan when the adapter has one
 
 
 def check_writable(out: str | None) -> None:
@@ -80,8 +79,8 @@ def run(model: Model, core: ModuleType, graph: StateGraph, harness: Harness, opt
     mat.set_tree(parent)
     res = ConformResult(transitions_total=len(graph.src), traces=len(plan))
     covered = bytearray(len(graph.src))
-    if opts.fast and not opts.out and harness.adapter.has_fast_replay():
-        _run_fast(model, graph, harness, opts, plan, mat, parent, res, covered, start)
+    if opts.fast and not opts.out and harness.adapter.has_plan_replay():
+        _run_plan(model, graph, harness, opts, plan, mat, parent, res, covered, start)
     else:
         _run_steps(model, graph, harness, opts, plan, mat, parent, res, covered, start)
     res.transitions_covered = sum(covered)
@@ -90,70 +89,80 @@ def run(model: Model, core: ModuleType, graph: StateGraph, harness: Harness, opt
     return res
 
 
-FAST_CHUNK = 4000  # traces per batched binding call
+class PlanDisagreement(SafestateError):
+    """The compact plan and the step-by-step replay disagree on a trace: a bug in an
+    adapter's plan methods or its binding's PlanReplayer, never a verdict on the C++."""
 
 
-def _run_fast(model: Model, graph: StateGraph, h: Harness, opts: Options, plan: list[Trace],
+PLAN_CHUNK = 20000  # traces per PlanReplayer.run call (a progress line between calls)
+
+
+def _run_plan(model: Model, graph: StateGraph, h: Harness, opts: Options, plan: list[Trace],
               mat: Materializer, parent: list[int], res: ConformResult, covered: bytearray, start: float) -> None:
-    """Replay chunks of traces in one binding call each (`Adapter.fast_replay`); the rows
-    of each transition's first replay are compared with the model's.  A trace that
-    disagrees is replayed again step by step (`_replay`) for the report and reproducer."""
+    """Replay the traces as a compact plan in the binding (replay_plan.py), cached on disk
+    beside the graph.  The first trace (and the initial state) is replayed step by step; a
+    trace that disagrees is replayed again step by step (`_slow_one`) for the report and
+    reproducer, and the plan goes on after it."""
     adapter = h.adapter
+    t_mat = time.monotonic()
+    if _slow_one(model, graph, h, opts, plan, mat, parent, res, covered, 0):
+        return
+    cp = _cached_plan(h, graph, plan, mat, opts)
+    res.model_seconds += time.monotonic() - t_mat
+    t_rep = time.monotonic()
+    rp = replay_plan.replayer(adapter, cp)
+    res.replay_seconds += time.monotonic() - t_rep
     last = time.monotonic()
-    i = 0
-    while i < len(plan):
-        if i == 0:  # the initial state is compared once, step by step
-            if _slow_one(model, graph, h, opts, plan, mat, parent, res, covered, 0):
-                return
-            i = 1
-            continue
-        chunk = plan[i:i + FAST_CHUNK]
-        t_mat = time.monotonic()
-        cts = [mat.trace(t) for t in chunk]
-        res.model_seconds += time.monotonic() - t_mat
-        rows_at: list[int] = []
-        meta: list[tuple[int, tuple, Event, int]] = []
-        pending: set[int] = set()
-        flat = 0
-        for k, ct in enumerate(cts):
-            before = ct.initial
-            for st in ct.steps:
-                if st.edge >= 0 and not covered[st.edge] and st.edge not in pending:
-                    pending.add(st.edge)
-                    if opts.check_rows and adapter.fires_rows(st.event):
-                        rows_at.append(flat)
-                        meta.append((k, before, st.event, st.edge))
-                flat += 1
-                before = st.state
+    i = 1
+    while i < cp.traces:
         t_rep = time.monotonic()
-        bad, fired = adapter.fast_replay(cts, rows_at)
+        bad, step = rp.run(i, min(i + PLAN_CHUNK, cp.traces))
         res.replay_seconds += time.monotonic() - t_rep
-        cut = bad if bad >= 0 else len(cts)
-        for (k, before, event, _), got in zip(meta, fired):
-            if k >= cut:
-                break
-            for r in got:
-                h.stats.rows[r] += 1
-            h.stats.row_checks += 1
-            want = adapter.model_rows(before, event)
-            if want is not None and want != got:
-                cut = k
-                break
-        for ct in cts[:cut]:
-            res.steps += len(ct.steps)
-            h.stats.steps += len(ct.steps)
-            for st in ct.steps:
-                if st.edge >= 0:
-                    covered[st.edge] = 1
-        i += cut
-        if cut < len(cts):
+        cut = bad if bad >= 0 else min(i + PLAN_CHUNK, cp.traces)
+        _account(cp, h, res, covered, i, cut)
+        i = cut
+        if bad >= 0:
+            found = len(res.found)
             if _slow_one(model, graph, h, opts, plan, mat, parent, res, covered, i):
                 return
+            if len(res.found) == found:
+                raise PlanDisagreement(f"the plan replay disagrees at trace {i} step {step + 1}, the step-by-step "
+                                       f"replay of that trace does not: {type(adapter).__name__}.expected_line (or "
+                                       f"plan_call / state_aux) does not match the binding's PlanReplayer")
             i += 1
         if opts.progress and time.monotonic() - last >= PROGRESS_SECONDS:
             last = time.monotonic()
             opts.progress(f"conform: trace {i}/{len(plan)}, {res.steps} steps, {sum(covered)} transitions "
                           f"covered, {len(res.found)} mismatches, {last - start:.0f}s")
+
+
+def _cached_plan(h: Harness, graph: StateGraph, plan: list[Trace], mat: Materializer,
+                 opts: Options) -> replay_plan.ReplayPlan:
+    options = f"max_len={opts.max_len} check_rows={opts.check_rows} traces={len(plan)}"
+    return replay_plan.cached_build(h.adapter, graph, (mat.trace(t) for t in plan), options, opts.check_rows,
+                                    opts.progress)
+
+
+def plan_of(h: Harness, graph: StateGraph, opts: Options) -> replay_plan.ReplayPlan:
+    """The compact replay plan of the whole conformance run (cached as `run` caches it)."""
+    cg = graph.as_cover_graph()
+    parent, _ = bfs_tree(cg)
+    mat = Materializer(h.stepper, graph)
+    mat.set_tree(parent)
+    return _cached_plan(h, graph, cover(cg, opts.max_len), mat, opts)
+
+
+def _account(cp: replay_plan.ReplayPlan, h: Harness, res: ConformResult, covered: bytearray,
+             first: int, last: int) -> None:
+    """Steps, covered transitions and rows of plan traces [first, last), which agreed."""
+    n = cp.steps_in(first, last)
+    res.steps += n
+    h.stats.steps += n
+    for e in cp.edges_in(first, last):
+        covered[e] = 1
+    checks, rows = cp.rows_in(first, last)
+    h.stats.row_checks += checks
+    h.stats.rows.update(rows)
 
 
 def _slow_one(model: Model, graph: StateGraph, h: Harness, opts: Options, plan: list[Trace],

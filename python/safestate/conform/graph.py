@@ -17,7 +17,7 @@ import pickle
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterator
+from typing import Callable, Iterator, TypeVar
 
 from ..checker.explore import explore_states
 from ..checker.model import Model
@@ -86,11 +86,14 @@ def cache_dir() -> Path:
 
 
 def graph_key(model: Model) -> str:
-    """A hash of the model (every .tla and .cfg beside its module), its cfg file and the
-    checker's own sources (its 'version'): a change to any gives a new key."""
+    """A hash of the model (every .tla and .cfg beside its module, and every module it
+    read from another folder), its cfg file and the checker's own sources (its
+    'version'): a change to any gives a new key."""
     h = hashlib.sha256()
     folder = Path(model.module.file).resolve().parent
-    for f in sorted(list(folder.glob("*.tla")) + list(folder.glob("*.cfg"))):
+    beside = list(folder.glob("*.tla")) + list(folder.glob("*.cfg"))
+    elsewhere = [Path(f).resolve() for f in model.module_files if Path(f).resolve().parent != folder]
+    for f in sorted(beside) + sorted(elsewhere):
         h.update(f.name.encode() + b"\0" + f.read_bytes() + b"\0")
     cfg = Path(model.config.file)
     h.update(str(cfg.resolve()).encode() + b"\0" + cfg.read_bytes())
@@ -103,45 +106,53 @@ def graph_key(model: Model) -> str:
 
 
 def cached_explore(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
-    """`explore`, reusing the graph of an earlier run with the same `graph_key`.  Safe for
-    parallel processes (pytest-xdist workers): one explores while holding a lock beside the
-    cache file, the others wait and then read its result; the file appears atomically."""
+    """`explore`, reusing the graph of an earlier run with the same `graph_key`."""
     path = cache_dir() / f"{Path(model.module.file).stem}-{graph_key(model)}.pickle"
-    g = _read_cached(path, progress)
-    if g is not None:
-        return g
+    return cached_pickle(path, StateGraph, lambda: explore(model, progress=progress), "state graph", progress)
+
+
+T = TypeVar("T")
+
+
+def cached_pickle(path: Path, kind: type[T], build: Callable[[], T], what: str, progress=None) -> T:  # type: ignore[no-untyped-def]
+    """The object pickled at `path`, else `build()` written there.  Safe for parallel
+    processes (pytest-xdist workers): one builds while holding a lock beside the cache file,
+    the others wait and then read its result; the file appears atomically."""
+    obj = _read_cached(path, kind, what, progress)
+    if obj is not None:
+        return obj
     with _exploring(path):
-        g = _read_cached(path, progress)  # another process may have written it meanwhile
-        if g is not None:
-            return g
-        g = explore(model, progress=progress)
+        obj = _read_cached(path, kind, what, progress)  # another process may have written it meanwhile
+        if obj is not None:
+            return obj
+        obj = build()
         try:
             tmp = path.with_suffix(f".{os.getpid()}.tmp")
             with open(tmp, "wb") as f:
-                pickle.dump(g, f, protocol=pickle.HIGHEST_PROTOCOL)
+                pickle.dump(obj, f, protocol=pickle.HIGHEST_PROTOCOL)
             os.replace(tmp, path)
         except OSError:
             pass  # a read-only cache only costs time
-    return g
+    return obj
 
 
-def _read_cached(path: Path, progress) -> StateGraph | None:  # type: ignore[no-untyped-def]
+def _read_cached(path: Path, kind: type[T], what: str, progress) -> T | None:  # type: ignore[no-untyped-def]
     try:
         with open(path, "rb") as f:
-            g = pickle.load(f)
+            obj = pickle.load(f)
     except (OSError, pickle.UnpicklingError, EOFError, AttributeError):
         return None
-    if not isinstance(g, StateGraph):
+    if not isinstance(obj, kind):
         return None
     if progress:
-        progress(f"conform: state graph from the cache {path}")
-    return g
+        progress(f"conform: {what} from the cache {path}")
+    return obj
 
 
 @contextmanager
 def _exploring(path: Path) -> Iterator[None]:
-    """An exclusive lock on `path`.lock for the time of one exploration (none when the
-    cache folder cannot be written: then each process explores on its own)."""
+    """An exclusive lock on `path`.lock for the time of one build (none when the cache
+    folder cannot be written: then each process builds on its own)."""
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         lock = open(path.with_suffix(".lock"), "a")

@@ -20,8 +20,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--seed", type=int, default=1, help="seed of the generator (default 1)")
     p.add_argument("--count", type=int, default=100, help="number of generated specs (default 100)")
     p.add_argument("--start", type=int, default=0, help="index of the first generated spec (default 0)")
-    p.add_argument("--grammar", type=int, choices=GRAMMARS, default=2,
-                   help="generator version (default 2; 1 reproduces specs of earlier runs)")
+    p.add_argument("--grammar", type=int, choices=GRAMMARS, default=3,
+                   help="generator version (default 3; 1 and 2 reproduce specs of earlier runs)")
     p.add_argument("--specs", metavar="DIR", help="compare on every NAME.tla/NAME.cfg pair below DIR "
                    "instead of generated specs")
     p.add_argument("--out", metavar="DIR", help="write every (minimised) disagreement here")
@@ -47,7 +47,7 @@ def main(argv: list[str] | None = None) -> int:
     summary = {"tlc": jar is not None, "seed": None if args.specs else args.seed,
                "grammar": None if args.specs else args.grammar, "specs": t.specs,
                "agree": t.agree, "refused": t.refused, "disagree": t.disagree, "timeouts": t.timeouts,
-               "crashes": t.crashes, "tlc_results": t.results, "seconds": round(time.monotonic() - start, 1),
+               "crashes": t.crashes, "tlc_results": t.results, "features": t.features, "seconds": round(time.monotonic() - start, 1),
                "disagreements": [{k: d[k] for k in ("name", "fields", "detail") if k in d}
                                  | ({"repro": d["repro"]} if "repro" in d else {}) for d in t.disagreements]}
     if args.json:

@@ -2,15 +2,20 @@
 
 from __future__ import annotations
 
+import re
+
 from ..checker.tlc import TlcSummary
 from .ours import REFUSED
 
 FIELDS = ("result", "violated", "distinct_states", "states_generated", "depth", "exit_code")
 
 
-def differences(ours: dict, tlc: TlcSummary) -> list[str]:
+def differences(ours: dict, tlc: TlcSummary, states_comparable: bool = True) -> list[str]:
     """Fields on which we differ from TLC.  A refusal (an unsupported construct,
-    reported as such) is not a difference; counts TLC did not print are skipped."""
+    reported as such) is not a difference; counts TLC did not print are skipped.
+    The length of a safety/deadlock trace is always compared, its states only when
+    `states_comparable` (with SYMMETRY or VIEW TLC may print another member of a
+    state's class)."""
     if ours.get("result") == REFUSED:
         return []
     diffs = []
@@ -20,8 +25,26 @@ def differences(ours: dict, tlc: TlcSummary) -> list[str]:
             continue
         if ours.get(name) != theirs:
             diffs.append(name)
+    mine, theirs = ours.get("trace"), tlc.trace
+    if theirs is not None and (mine is None or len(mine) != len(theirs)):
+        diffs.append("trace_length")
+    elif theirs is not None and states_comparable and [_words(x) for x in mine] != [_words(x) for x in theirs]:
+        diffs.append("trace_states")
     return diffs
 
 
+def states_comparable(cfg: str) -> bool:
+    return re.search(r"^\s*(SYMMETRY|VIEW)\b", cfg, re.M) is None
+
+
+def _words(state: str) -> str:
+    """A state's text without line breaks (TLC wraps long values)."""
+    return " ".join(state.split())
+
+
 def describe(ours: dict, tlc: TlcSummary, diffs: list[str]) -> str:
-    return "; ".join(f"{d}: ours {ours.get(d)!r}, TLC {getattr(tlc, d)!r}" for d in diffs)
+    def field(d: str) -> str:
+        if d.startswith("trace"):
+            return f"{d}: ours {ours.get('trace')!r}, TLC {tlc.trace!r}"
+        return f"{d}: ours {ours.get(d)!r}, TLC {getattr(tlc, d)!r}"
+    return "; ".join(field(d) for d in diffs)

@@ -27,9 +27,10 @@ class GeneratedSpec:
     name: str
     tla: str
     cfg: str
+    features: tuple[str, ...] = ()  # grammar 3: the constructs this spec exercises
 
 
-class _Gen:
+class Gen:
     def __init__(self, rng: random.Random, grammar: int) -> None:
         self.r = rng
         self.grammar = grammar
@@ -236,22 +237,39 @@ class _Gen:
         return self.expr(ty, d)
 
 
-GRAMMARS = (1, 2)
+GRAMMARS = (1, 2, 3)
 
 
 def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     """Spec number `index` of the run seeded with `seed` (reproducible on its own).
     Grammar 2 adds branching assignments (``x' = a \\/ x' = b``), \\E over strings
-    and \\E with two binders; grammar 1 specs are unchanged by it."""
+    and \\E with two binders; grammar 3 the constructs listed in `grammar3.py`.
+    Specs of a lower grammar are unchanged by a higher one."""
+    from .grammar3 import NEST, PSET, RECURSIVE_SUM, TYPES3, Gen3
     rng = random.Random(f"{seed}:{index}")
-    g = _Gen(rng, grammar)
+    g = Gen3(rng, grammar) if grammar >= 3 else Gen(rng, grammar)
+    g3 = g if isinstance(g, Gen3) else None
     name = f"G{seed}x{index}"
     nvars = rng.randint(1, 3)
     for i in range(nvars):
-        g.vars[f"v{i}"] = rng.choice(TYPES)
+        g.vars[f"v{i}"] = rng.choice(TYPES3 if g3 else TYPES)
     vs = list(g.vars)
-    lines = [f"---- MODULE {name} ----", "EXTENDS Naturals, Sequences, FiniteSets",
+    lines = [f"---- MODULE {name} ----", "EXTENDS Naturals, Sequences, FiniteSets" + (", TLC" if g3 else ""),
              f"VARIABLES {', '.join(vs)}", f"vars == <<{', '.join(vs)}>>"]
+    cfg_extra: list[str] = []
+    uses_procs = g3 is not None and PSET in g.vars.values()
+    if g3 is not None:
+        g3.symmetric = uses_procs and rng.random() < 0.4
+        if uses_procs:
+            lines.insert(2, "CONSTANTS Procs, p1, p2, p3")
+            cfg_extra += ["CONSTANTS p1 = p1  p2 = p2  p3 = p3", "CONSTANT Procs = {p1, p2, p3}"]
+        if g3.symmetric:
+            lines.append("Perms == Permutations(Procs)")
+            cfg_extra.append("SYMMETRY Perms")
+            g3.use("symmetry")
+        if rng.random() < 0.3:
+            lines += RECURSIVE_SUM
+            g3.recursive = True
     # Operators whose parameters get primed (the priming class of issue 14).
     helpers = []
     if rng.random() < 0.5:
@@ -263,13 +281,22 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     if rng.random() < 0.3:
         lines.append("Moved(x) == x' # x")
         helpers.append("Moved")
+    if g3 is not None and rng.random() < 0.4:
+        lines.append("Bump(x) == x' = (x + 1) % 4")
+        helpers.append("Bump")
     init = []
     for v, ty in g.vars.items():
         op, val = g.init_value(ty)
+        if g3 is not None and rng.random() < 0.2:
+            op2, val2 = g.init_value(ty)
+            init.append(f"/\\ ({v} {op} {val} \\/ {v} {op2} {val2})")
+            g3.use("init_disjunction")
+            continue
         init.append(f"/\\ {v} {op} {val}")
     lines.append("Init ==")
     lines += ["    " + c for c in init]
     actions = []
+    action_forms: list[tuple[str, str | None]] = []  # (name, the range of its parameter)
     for a in range(rng.randint(1, 4)):
         aname = f"A{a}"
         param = None
@@ -284,7 +311,14 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
                 body.append(f"/\\ {'Keep(' + v + ')' if 'Keep' in helpers and rng.random() < 0.5 else 'UNCHANGED ' + v}")
                 continue
             k = rng.randint(0, 9)
-            if k == 0 and ty == INT:
+            if g3 is not None and ty == PSET and g3.symmetric:
+                w = g.name("w")
+                op = rng.choice(["\\cup", "\\"])
+                body.append(f"/\\ \\E {w} \\in Procs : {v}' = ({v} {op} {{{w}}})")
+            elif g3 is not None and ty == INT and "Bump" in helpers and k < 3:
+                body.append(f"/\\ Bump({v})")
+                g3.use("primed_parameter")
+            elif k == 0 and ty == INT:
                 body.append(f"/\\ {v}' \\in {{0, ({g.e_int(1)}) % {MOD}}}")
             elif k == 1:
                 body.append(f"/\\ IF {g.e_bool(1)} THEN {v}' = {g.update(v, ty, 1)} ELSE {v}' = {g.update(v, ty, 1)}")
@@ -313,11 +347,16 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
             body.append(f"/\\ Moved({rng.choice(vs)})")
         if rng.random() < 0.2:
             body.append(f"/\\ {g.e_bool(1)}")
+        if g3 is not None and rng.random() < 0.25:
+            body.append(f"/\\ (IF {g.state_predicate()} THEN {g.state_predicate()} ELSE {g.state_predicate()})'")
+            g3.use("if_under_prime")
         if param:
             g.bound.pop()
         lines.append(f"{aname}{'(' + param + ')' if param else ''} ==")
         lines += ["    " + c for c in body]
-        actions.append(f"\\E p \\in 0..{rng.randint(1, 2)} : {aname}(p)" if param else aname)
+        prange = f"0..{rng.randint(1, 2)}" if param else None
+        actions.append(f"\\E p \\in {prange} : {aname}(p)" if param else aname)
+        action_forms.append((aname, prange))
     lines.append("Next ==")
     lines += [f"    \\/ {a}" for a in actions]
     invs = []
@@ -332,8 +371,48 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
             bound.append(f"{v} \\subseteq 0..3")
     conj = " /\\ ".join(bound) if bound else "TRUE"
     lines.append(f"Bound == {conj}")
+    head = ["INIT Init", "NEXT Next"]
+    if g3 is not None:
+        head, more = _grammar3_spec(g3, rng, lines, action_forms)
+        cfg_extra += more
     lines.append("====")
-    cfg = ["INIT Init", "NEXT Next"] + [f"INVARIANT {i}" for i in invs] + ["CONSTRAINT Bound"]
+    cfg = head + [f"INVARIANT {i}" for i in invs] + ["CONSTRAINT Bound"] + cfg_extra
     if rng.random() < 0.3:
         cfg.append("CHECK_DEADLOCK FALSE")
-    return GeneratedSpec(name, "\n".join(lines) + "\n", "\n".join(cfg) + "\n")
+    features = tuple(sorted(g3.features)) if g3 is not None else ()
+    return GeneratedSpec(name, "\n".join(lines) + "\n", "\n".join(cfg) + "\n", features)
+
+
+def _grammar3_spec(g, rng: random.Random, lines: list[str],
+                   action_forms: list[tuple[str, str | None]]) -> tuple[list[str], list[str]]:
+    """Grammar 3's spec-level additions (appended to `lines`): the cfg head (INIT/NEXT
+    or SPECIFICATION) and further cfg statements."""
+    cfg: list[str] = []
+    if not g.symmetric and rng.random() < 0.15:
+        lines.append(f"View == <<{', '.join(rng.sample(list(g.vars), rng.randint(1, len(g.vars))))}>>")
+        cfg.append("VIEW View")
+        g.use("view")
+    if rng.random() < 0.15:
+        lines.append(f"ACon == ({g.state_predicate()})' \\/ {g.state_predicate()}")
+        cfg.append("ACTION_CONSTRAINT ACon")
+        g.use("action_constraint")
+    if g.symmetric or "VIEW View" in cfg or rng.random() < 0.65:
+        return ["INIT Init", "NEXT Next"], cfg
+    # Liveness: TLC warns that SYMMETRY or VIEW may make it wrong, so never with them.
+    fair = []
+    for aname, prange in action_forms:
+        if rng.random() < 0.4:
+            kind = rng.choice(["WF", "SF"])
+            fair.append(f"(\\A p \\in {prange} : {kind}_vars({aname}(p)))" if prange else f"{kind}_vars({aname})")
+    if rng.random() < 0.3:
+        fair.append("WF_vars(Next)")
+    lines.append("Spec == Init /\\ [][Next]_vars" + "".join(f" /\\ {f}" for f in fair))
+    g.use("fairness" if fair else "specification")
+    for i in range(rng.randint(1, 2)):
+        k = rng.randint(0, 4)
+        p, q = g.state_predicate(), g.state_predicate()
+        form = [f"<>({p})", f"[]<>({p})", f"<>[]({p})", f"({p}) ~> ({q})", f"[][({p})' \\/ {q}]_vars"][k]
+        lines.append(f"Prop{i} == {form}")
+        cfg.append(f"PROPERTY Prop{i}")
+        g.use(["eventually", "infinitely_often", "eventually_always", "leads_to", "action_property"][k])
+    return ["SPECIFICATION Spec"], cfg

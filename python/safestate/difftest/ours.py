@@ -22,7 +22,8 @@ REFUSED = "refused"  # our checker says the construct is unsupported: acceptable
 def summary_of(tla_path: str, cfg_path: str) -> dict:
     """Check in this process; the summary has TLC's fields plus `exit_code`."""
     try:
-        r = explore_states(load_model(tla_path, cfg_path))
+        model = load_model(tla_path, cfg_path)
+        r = explore_states(model)
     except TlaError as e:
         result = REFUSED if e.kind == "unsupported" else "error"
         return {"result": result, "distinct_states": None, "states_generated": None, "depth": None,
@@ -38,9 +39,15 @@ def summary_of(tla_path: str, cfg_path: str) -> dict:
             return {"result": REFUSED, "distinct_states": None, "states_generated": None, "depth": None,
                     "violated": None, "exit_code": code, "message": msg}
     initial = r.initial_violation
+    # TLC prints a behaviour for a safety violation, a deadlock or an evaluation error
+    # after the initial states; a liveness lasso is compared by verdict only (see
+    # docs/tla-subset.md: the lassos may differ).
+    trace = None
+    if r.trace and not initial and r.result not in ("liveness failure", "success"):
+        trace = [model.format_state(step.state) for step in r.trace]
     return {"result": r.result, "distinct_states": None if initial else r.distinct_states,
             "states_generated": None if initial else r.states_generated, "depth": None if initial else r.depth,
-            "violated": r.violated, "exit_code": code, "message": msg}
+            "violated": r.violated, "exit_code": code, "message": msg, "trace": trace}
 
 
 def run_ours(tla_path: str, cfg_path: str, timeout: float = 120) -> dict:

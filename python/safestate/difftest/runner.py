@@ -14,8 +14,8 @@ from pathlib import Path
 from typing import Callable, Iterator
 
 from ..checker.tlc import TlcSummary
-from .compare import describe, differences
-from .generator import generate
+from .compare import describe, differences, states_comparable
+from .generator import GeneratedSpec, generate
 from .minimise import minimise_spec
 from .ours import REFUSED, run_ours
 from .tlc_batch import TlcBatch
@@ -31,15 +31,21 @@ class Tally:
     crashes: int = 0  # our checker raised an internal error (always a defect)
     results: dict[str, int] = field(default_factory=dict)  # TLC's verdicts, for coverage
     disagreements: list[dict] = field(default_factory=list)
+    # Grammar 3: per construct, how many specs used it and how each one ended.
+    features: dict[str, dict[str, int]] = field(default_factory=dict)
+
+    def count_features(self, features: tuple[str, ...], outcome: str) -> None:
+        for f in features:
+            row = self.features.setdefault(f, {})
+            row[outcome] = row.get(outcome, 0) + 1
 
 
 Source = Iterator[tuple[str, str, str]]  # (name, tla text or path, cfg text or path)
 
 
-def generated(seed: int, count: int, start: int = 0, grammar: int = 2) -> Iterator[tuple[str, str, str]]:
+def generated(seed: int, count: int, start: int = 0, grammar: int = 2) -> Iterator[GeneratedSpec]:
     for i in range(start, start + count):
-        g = generate(seed, i, grammar)
-        yield g.name, g.tla, g.cfg
+        yield generate(seed, i, grammar)
 
 
 def spec_dir(folder: str) -> list[tuple[str, str, str]]:
@@ -83,7 +89,9 @@ class Runner:
         tlc = self.tlc.run(tla_path, cfg_path)[0] if self.tlc else None
         return ours, tlc
 
-    def check(self, name: str, tla_path: str, cfg_path: str, texts: tuple[str, str] | None) -> None:
+    def check(self, name: str, tla_path: str, cfg_path: str, texts: tuple[str, str] | None) -> str:
+        """Compares one spec; returns its outcome: agree, refused, timeout, crash,
+        disagree, or (without TLC) ours."""
         t = self.tally
         t.specs += 1
         ours, tlc = self.both(tla_path, cfg_path)
@@ -96,18 +104,20 @@ class Runner:
                 t.timeouts += 1
             if ours["result"] == "crash":
                 self._record(name, tla_path, cfg_path, texts, ours, None, ["crash"])
-            return
+            return ours["result"] if ours["result"] in (REFUSED, "timeout", "crash") else "ours"
         t.results[tlc.result] = t.results.get(tlc.result, 0) + 1
         if tlc.result == "timeout" or ours["result"] == "timeout":
             t.timeouts += 1
-            return
-        diffs = differences(ours, tlc)
+            return "timeout"
+        diffs = differences(ours, tlc, states_comparable(Path(cfg_path).read_text(errors="replace")))
         if ours["result"] == REFUSED:
             t.refused += 1
-        elif not diffs:
+            return REFUSED
+        if not diffs:
             t.agree += 1
-        else:
-            self._record(name, tla_path, cfg_path, texts, ours, tlc, diffs)
+            return "agree"
+        self._record(name, tla_path, cfg_path, texts, ours, tlc, diffs)
+        return "disagree"
 
     def _record(self, name: str, tla_path: str, cfg_path: str, texts: tuple[str, str] | None,
                 ours: dict, tlc: TlcSummary | None, diffs: list[str]) -> None:
@@ -145,7 +155,7 @@ class Runner:
                 return False
             if tlc.exit_code in (150, 151, 255) and ours["exit_code"] == tlc.exit_code:
                 return False
-            return differences(ours, tlc) == diffs
+            return differences(ours, tlc, states_comparable(c)) == diffs
         start = time.monotonic()
         out = minimise_spec(tla, cfg, still_fails)
         self.log(f"  minimised {name}: {len(tla.splitlines())} -> {len(out[0].splitlines())} lines "
@@ -155,9 +165,10 @@ class Runner:
     # ------------------------------------------------------------ loops
     def run_generated(self, seed: int, count: int, start: int, every: int, grammar: int = 2) -> None:
         t0 = time.monotonic()
-        for i, (name, tla, cfg) in enumerate(generated(seed, count, start, grammar), 1):
-            tp, cp = self._write(name, tla, cfg)
-            self.check(name, tp, cp, (tla, cfg))
+        for i, g in enumerate(generated(seed, count, start, grammar), 1):
+            tp, cp = self._write(g.name, g.tla, g.cfg)
+            outcome = self.check(g.name, tp, cp, (g.tla, g.cfg))
+            self.tally.count_features(g.features, outcome)
             shutil.rmtree(os.path.dirname(tp), ignore_errors=True)
             if i % every == 0 or i == count:
                 self.progress(i, count, t0)

@@ -16,8 +16,8 @@ from ..errors import UsageError
 from ..systems.registry import System, load_all
 from . import diagrams, junit, manifest, render, sources, traces
 from .collect import Runner, StepResult
-from .matrix import (SystemFacts, build as build_matrix, cfg_invariants, check_verdict, conform_summary,
-                     proofs_by_invariant)
+from .matrix import (REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_verdict,
+                     conform_summary, proofs_by_invariant)
 from .render import SystemPage
 from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
 
@@ -97,10 +97,14 @@ def build(opts: Options) -> Result:
     reqs = sources.read_requirements(opts.requirements, root)
     known = {r.id for r in reqs}
     pages = sorted((root / "docs" / "design").glob("*.md"))
-    corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)],
-                            [t for d in [root / "tests" / "cpp", *sorted((root / "src").rglob("tests"))]
-                             for t in sources.gtests(d, root, known)]
-                            + sources.pytests(root / "tests" / "python", root, known))
+    try:
+        tests = [t for d in [root / "tests" / "cpp", *sorted((root / "src").rglob("tests"))]
+                 for t in sources.gtests(d, root, known)] + sources.pytests(root / "tests" / "python", root, known)
+        reasons = [g for p in pages for g in sources.gap_reasons(p, root, known, REQUIREMENT_GAP_KINDS)]
+    except sources.RequirementLinkError as e:
+        raise UsageError(str(e)) from None
+    corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)], tests,
+                            [u for p in pages for u in sources.unreachable_rows(p, root)], reasons)
     runner = Runner(root, cache_dir(root), opts.reuse, opts.log)
 
     facts: list[SystemFacts] = []
@@ -119,7 +123,7 @@ def build(opts: Options) -> Result:
     wanted = owned | (known - set(elsewhere))
     selected = [t for t in corpus.tests if set(t.requirements) & wanted]
     ctest = run_ctest(runner, root, None if not opts.systems else
-                      "^(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")$")
+                      "^([^/ ]*/)?(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")(/.*)?$")
     pyt = run_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
     results = {**junit.results(ctest.files.get("ctest.xml"), "gtest"),
                **(junit.results(pyt.files.get("pytest.xml"), "pytest") if pyt else {})}
@@ -149,6 +153,7 @@ def build(opts: Options) -> Result:
              for st in _all_steps(facts, ctest, pyt)]
     manifest.write(out, root, inputs, {"systems": [s.name for s in systems], "requirements_file": str(opts.requirements),
                                        "gaps": len(m.gaps), "gap_kinds": _kinds(m.gaps), "failures": failures,
+                                       "unreachable_rows": [f"{u.why.page} {u.why.id}" for u in m.unreachable],
                                        "checks": checks, "steps": steps})
     return Result(out, len(m.gaps), failures)
 

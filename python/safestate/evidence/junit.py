@@ -1,6 +1,7 @@
 """Test results from JUnit XML (ctest --output-junit, pytest --junitxml), by test name:
 GoogleTest `Suite.Name`, pytest node id `tests/python/f.py::name` (parametrised cases
-folded into one: failed if any case failed)."""
+folded into one: failed if any case failed; GoogleTest's value-parametrised cases
+likewise)."""
 
 from __future__ import annotations
 
@@ -18,6 +19,13 @@ def _outcome(case: ET.Element) -> str:
     return "passed"
 
 
+def gtest_name(ctest_name: str) -> str:
+    """`Suite.Name` of a ctest name: a value-parametrised case `Prefix/Suite.Name/param`
+    (TEST_P, INSTANTIATE_TEST_SUITE_P) folds into its TEST_P."""
+    parts = ctest_name.split(" ", 1)[0].split("/")
+    return next((p for p in parts if "." in p), ctest_name)
+
+
 def results(path: Path | None, kind: str) -> dict[str, str]:
     """name -> passed / failed / skipped."""
     if path is None or not path.is_file():
@@ -33,6 +41,8 @@ def results(path: Path | None, kind: str) -> dict[str, str]:
             path_part = "/".join(parts[: i + 1]) + ".py"
             inner = parts[i + 1:]
             name = "::".join([path_part, *inner, name.split("[", 1)[0]])
+        else:
+            name = gtest_name(name)
         o = _outcome(case)
         if RANK[o] >= RANK.get(out.get(name, "passed"), 0) or name not in out:
             out[name] = o if name not in out else max(out[name], o, key=RANK.__getitem__)

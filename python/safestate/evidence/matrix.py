@@ -8,8 +8,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..checker.cfg import parse_config
-from .sources import Corpus, DesignRow, Loc, ModelDef, Requirement, TestCase
+from .sources import Corpus, DesignRow, GapReason, Loc, ModelDef, Requirement, TestCase, Unreachable
+
 from .steps import SystemRuns
+
+# The gaps of one requirement that a design page may explain (sources.gap_reasons).
+REQUIREMENT_GAP_KINDS = {"no invariant", "no conformance", "no design row", "no C++ row", "no model operator",
+                         "no test"}
 
 
 @dataclass(frozen=True)
@@ -60,10 +65,20 @@ class SystemFacts:
     cpp_rows: dict[str, list[Loc]]
 
 
+@dataclass(frozen=True)
+class UnreachableRow:
+    """A row never exercised because it cannot fire: not a gap, shown with its reason (the
+    design page) and the argument that it indeed never fires (the conformance run)."""
+    system: str
+    why: Unreachable
+    argument: str
+
+
 @dataclass
 class Matrix:
     entries: list[Entry]
     gaps: list[Gap]           # every gap once (requirement, invariant and row gaps)
+    unreachable: list[UnreachableRow] = field(default_factory=list)
 
 
 def check_verdict(runs: SystemRuns) -> str:
@@ -108,11 +123,14 @@ def build(corpus: Corpus, facts: list[SystemFacts], test_results: dict[str, str]
         e.tests = [(t, test_results.get(t.name, "not run")) for t in corpus.tests if req.id in t.requirements]
         for name in e.systems:
             _fill_system(e, by_name[name])
-        e.gaps = _requirement_gaps(e)
+        e.gaps = _explained(_requirement_gaps(e), corpus.gap_reasons)
         gaps += e.gaps
         entries.append(e)
-    gaps += _invariant_gaps(facts) + _row_gaps(corpus, facts)
-    return Matrix(entries, gaps)
+    here = {e.req.id for e in entries if not e.outside}
+    gaps += _stale_reasons([r for r in corpus.gap_reasons if r.requirement in here], gaps)
+    row_gaps, unreachable = _row_gaps(corpus, facts)
+    gaps += _invariant_gaps(facts) + row_gaps
+    return Matrix(entries, gaps, unreachable)
 
 
 def _fill_system(e: Entry, f: SystemFacts) -> None:
@@ -174,6 +192,20 @@ def _requirement_gaps(e: Entry) -> list[Gap]:
     return out
 
 
+def _explained(gaps: list[Gap], reasons: list[GapReason]) -> list[Gap]:
+    """A gap a design page explains keeps its kind (it stays counted), with the reason."""
+    why = {(r.requirement, k): r for r in reasons for k in r.kinds}
+    return [Gap(g.kind, g.subject, f"{why[g.subject, g.kind].reason} ({why[g.subject, g.kind].loc})")
+            if (g.subject, g.kind) in why else g for g in gaps]
+
+
+def _stale_reasons(reasons: list[GapReason], gaps: list[Gap]) -> list[Gap]:
+    """A reason for a gap that is not there any more is itself shown (the page is out of date)."""
+    open_ = {(g.subject, g.kind) for g in gaps}
+    return [Gap("stale gap reason", r.requirement, f"{r.loc} explains '{k}', which is not a gap of it")
+            for r in reasons for k in r.kinds if (r.requirement, k) not in open_]
+
+
 def _invariant_gaps(facts: list[SystemFacts]) -> list[Gap]:
     out = []
     for f in facts:
@@ -195,12 +227,25 @@ def _invariant_gaps(facts: list[SystemFacts]) -> list[Gap]:
     return out
 
 
-def _row_gaps(corpus: Corpus, facts: list[SystemFacts]) -> list[Gap]:
+def unreachable_argument(system: str, conf: dict[str, Any]) -> str:
+    """Why a row the conformance declares unreachable indeed never fires (CI cfg)."""
+    ic = conf.get("input_complete") or {}
+    probes = (f"; the input-complete pass fed every one of its {ic['states']:,} reachable states "
+              f"{ic['probes']:,} input probes" if isinstance(ic, dict) and "states" in ic else "")
+    return (f"{system}: the conformance replayed {conf.get('transitions_covered', 0):,} of "
+            f"{conf.get('transitions_total', 0):,} reachable transitions of the CI model{probes}; the row fired "
+            "neither in the model (RowsFiredBy) nor in the C++, and `safestate conform` fails if a row declared "
+            f"unreachable fires (fired: {', '.join(conf.get('rows_unreachable_fired', [])) or 'none'})")
+
+
+def _row_gaps(corpus: Corpus, facts: list[SystemFacts]) -> tuple[list[Gap], list[UnreachableRow]]:
     """A design-page row is exercised when a system with conformance and that design
-    page fired it; every other row of a page of a packaged system is a gap."""
+    page fired it; a row its conformance declares unreachable (and never saw fire) is
+    shown apart with the page's reason, a gap only when the page gives none; every
+    other row of a page of a packaged system is a gap."""
     pages = {str(f.runs.system.design.relative_to(f.runs.system.root)): f for f in facts}
     taken: dict[str, set[str]] = {}
-    unreachable: dict[str, set[str]] = {}
+    unreachable: dict[str, dict[str, str]] = {}     # page -> row -> the argument
     conformed: set[str] = set()
     for f in facts:
         conf = conform_summary(f.runs)
@@ -208,21 +253,35 @@ def _row_gaps(corpus: Corpus, facts: list[SystemFacts]) -> list[Gap]:
         if conf is not None:
             conformed.add(page)
             taken.setdefault(page, set()).update(conf.get("rows_taken", []))
-            unreachable.setdefault(page, set()).update(conf.get("rows_unreachable", []))
+            arg = unreachable_argument(f.runs.system.name, conf)
+            unreachable.setdefault(page, {}).update({r: arg for r in conf.get("rows_unreachable", [])})
+    reasons = {(u.page, u.id): u for u in corpus.unreachable}
     ids: dict[str, set[str]] = {}
     for f in facts:
         page = str(f.runs.system.design.relative_to(f.runs.system.root))
         ids.setdefault(page, set()).update(f.runs.system.requirements)
         ids[page].update(r for d in f.defs if d.name in f.invariants for r in d.requirements)
-    out = []
+    out: list[Gap] = []
+    shown: list[UnreachableRow] = []
     for r in corpus.rows:
         if r.page not in pages or not set(r.requirements) & ids[r.page]:
             continue   # another system's row (a shared design page)
+        subject = f"{r.page} {r.id}"
         if r.page not in conformed:
-            out.append(Gap("row never exercised", f"{r.page} {r.id}", "no system with this design page has "
+            out.append(Gap("row never exercised", subject, "no system with this design page has "
                            "conformance: the C++ of this row is not run against the model"))
-        elif r.id not in taken.get(r.page, set()):
-            why = "declared unreachable by construction" if r.id in unreachable.get(r.page, set()) else \
-                "conformance never fired it"
-            out.append(Gap("row never exercised", f"{r.page} {r.id}", why))
-    return out
+        elif r.id in taken.get(r.page, set()):
+            if (r.page, r.id) in reasons:
+                out.append(Gap("declared unreachable but fired", subject, f"{reasons[r.page, r.id].loc} says it "
+                               "cannot fire, the conformance fired it"))
+        elif r.id in unreachable.get(r.page, {}):
+            why = reasons.get((r.page, r.id))
+            if why is None:
+                out.append(Gap("unreachable row without a reason", subject, "the conformance declares it "
+                               "unreachable by construction and it never fired, but the design page gives no "
+                               f"'- {r.id} unreachable by construction: <reason>' item"))
+            else:
+                shown.append(UnreachableRow(pages[r.page].runs.system.name, why, unreachable[r.page][r.id]))
+        else:
+            out.append(Gap("row never exercised", subject, "conformance never fired it"))
+    return out, shown

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from html import escape
 from typing import Any
 
-from .matrix import Entry, Gap, Matrix, check_verdict, conform_summary, proofs_by_invariant
+from .matrix import Entry, Gap, Matrix, UnreachableRow, check_verdict, conform_summary, proofs_by_invariant
 from .steps import SystemRuns
 
 CSS = """
@@ -87,7 +87,7 @@ def _gapcell(text: str) -> str:
     return f'<td class="gap">{escape(text)}</td>'
 
 
-def matrix_row(e: Entry) -> str:
+def matrix_row(e: Entry, unreachable: frozenset[tuple[str, str]] = frozenset()) -> str:
     rid = e.req.id
     if e.outside:
         return (f'<tr class="req"><td id="{escape(rid)}"><b>{escape(rid)}</b><br><span class="muted">'
@@ -100,7 +100,9 @@ def matrix_row(e: Entry) -> str:
     if e.cpp_rows:
         items = []
         for c in e.cpp_rows:
-            taken = "" if c.taken is None else (" ✓ fired" if c.taken else ' <span class="bad">never fired</span>')
+            taken = "" if c.taken is None else (" ✓ fired" if c.taken else ' <span class="muted">unreachable by '
+                                                  'construction</span>' if (c.system, c.id) in unreachable else
+                                                  ' <span class="bad">never fired</span>')
             items.append(f"{escape(c.id)} <code>{escape(', '.join(map(str, c.locs[:2])))}</code>{taken}")
         cells.append(f"<td>{_ul(items)}</td>")
     else:
@@ -129,7 +131,7 @@ def matrix_row(e: Entry) -> str:
             f'<span class="bad">{escape(i.name)}: no killing mutant</span>' for i in e.invariants]
     cells.append(f"<td>{'<br>'.join(muts)}</td>" if muts else _gapcell("no mutant"))
     tests = [f"{_status(o == 'passed', o)} <code>{escape(t.name)}</code> <code>{escape(str(t.loc))}</code>"
-             for t, o in e.tests[:12]]
+             + (' <span class="muted">(req marker)</span>' if e.req.id in t.declared else "") for t, o in e.tests[:12]]
     if len(e.tests) > 12:
         passed = sum(1 for _, o in e.tests[12:] if o == "passed")
         tests.append(f"… {len(e.tests) - 12} more ({passed} passed)")
@@ -153,14 +155,27 @@ def gap_table(gaps: list[Gap]) -> str:
             f"<table><tr><th>gap</th><th>subject</th><th>detail</th></tr>{rows}</table>")
 
 
+def unreachable_table(rows: list[UnreachableRow]) -> str:
+    if not rows:
+        return '<p class="muted">none</p>'
+    body = "".join(f'<tr id="unreachable-{escape(u.why.id)}"><td><code>{escape(u.why.page)} {escape(u.why.id)}</code>'
+                   f"</td><td>{escape(u.system)}</td><td>{escape(u.why.reason)}<br><code>{escape(str(u.why.loc))}</code>"
+                   f"</td><td>{escape(u.argument)}</td></tr>" for u in rows)
+    return (f"<p>{len(rows)} rows are never exercised because they cannot fire: not counted as gaps; each with the "
+            "design page's reason and the argument that it indeed never fires.</p><table><tr><th>row</th>"
+            f"<th>system</th><th>reason (by construction)</th><th>argument</th></tr>{body}</table>")
+
+
 def index_html(pages: list[SystemPage], m: Matrix, header: dict[str, Any], extras: list[tuple[str, str]],
                test_counts: dict[str, dict[str, int]]) -> str:
     tools = "".join(f"<tr><th>{escape(k)}</th><td><code>{escape(str(v))}</code></td></tr>"
                     for k, v in header["tools"].items())
     summary = "".join(summary_row(p, test_counts.get(p.runs.system.name, {})) for p in pages)
+    unreachable = frozenset((u.system, u.why.id) for u in m.unreachable)
     raw = "".join(f'<li><a href="{h}">{escape(t)}</a></li>' for t, h in extras)
     body = f"""<h1>safestate evidence package</h1>
 <nav><a href="#summary">summary</a><a href="#matrix">traceability matrix</a><a href="#gaps">gaps</a>
+<a href="#unreachable">unreachable rows</a>
 <a href="#artefacts">raw artefacts</a><a href="manifest.json">manifest.json</a></nav>
 <p>Built {escape(header['date'])} on {escape(header['machine']['hostname'])} ({escape(header['machine']['system'])}).
 Verify with <code>safestate evidence --verify DIR</code>: it re-hashes every input and output listed in
@@ -172,8 +187,9 @@ Verify with <code>safestate evidence --verify DIR</code>: it re-hashes every inp
 {summary}</table>
 <h2 id="matrix">Traceability matrix ({len(m.entries)} requirements)</h2>
 <p>Every requirement ID of REQUIREMENTS.md, in its order. A red cell is a gap.</p>
-<table class="matrix" id="matrix-table">{MATRIX_HEAD}{''.join(matrix_row(e) for e in m.entries)}</table>
+<table class="matrix" id="matrix-table">{MATRIX_HEAD}{''.join(matrix_row(e, unreachable) for e in m.entries)}</table>
 <h2 id="gaps">Gaps</h2>{gap_table(m.gaps)}
+<h2 id="unreachable">Rows unreachable by construction</h2>{unreachable_table(m.unreachable)}
 <h2 id="artefacts">Raw artefacts</h2><ul>{raw}</ul>"""
     return page("safestate evidence", body)
 

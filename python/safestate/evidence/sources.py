@@ -17,6 +17,15 @@ _DEF = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(\([^)]*\))?\s*==")
 _GTEST = re.compile(r"^\s*TEST(?:_F|_P)?\(\s*([A-Za-z0-9_]+)\s*,\s*([A-Za-z0-9_]+)\s*\)")
 _PYTEST = re.compile(r"^(\s*)def (test_[A-Za-z0-9_]+)\s*\(")
 _PYCLASS = re.compile(r"^class (Test[A-Za-z0-9_]*)")
+# Declared links from a test to the requirements it covers (docs/evidence.md):
+#   pytest:     @pytest.mark.req("RSM-05", "INV-RESET")   (above the def or the class)
+#   GoogleTest: // req: RSM-05 INV-RESET                   (the line(s) just above TEST)
+_PYREQ = re.compile(r"^\s*@pytest\.mark\.req\((.*)\)\s*$")
+_GTREQ = re.compile(r"^\s*// req:(.*)$")
+# "- K17 unreachable by construction: <reason>" on a design page.
+_UNREACHABLE = re.compile(r"^- ([A-Z]{1,2}\d{2}) unreachable by construction: (.+)$")
+# "- RSM-15 (no design row, no C++ row): <reason>": why a requirement's gap stays open.
+_GAP_REASON = re.compile(r"^- (" + REQ_ID.pattern[2:-2] + r") \(([^)]*)\): (.+)$")
 
 
 @dataclass(frozen=True)
@@ -60,6 +69,25 @@ class TestCase:
     name: str          # Suite.Name (as ctest reports it) or file::[Class::]name (the node id)
     requirements: tuple[str, ...]
     loc: Loc
+    declared: tuple[str, ...] = ()   # of `requirements`, those linked by a req marker / comment
+
+
+@dataclass(frozen=True)
+class GapReason:
+    """A design page's reason why gaps of a requirement stay open (they stay counted)."""
+    requirement: str
+    kinds: tuple[str, ...]
+    reason: str
+    loc: Loc
+
+
+@dataclass(frozen=True)
+class Unreachable:
+    """A design-page row its page declares unreachable by construction, with the reason."""
+    page: str
+    id: str
+    reason: str
+    loc: Loc
 
 
 @dataclass
@@ -67,6 +95,8 @@ class Corpus:
     requirements: list[Requirement]
     rows: list[DesignRow] = field(default_factory=list)
     tests: list[TestCase] = field(default_factory=list)
+    unreachable: list[Unreachable] = field(default_factory=list)
+    gap_reasons: list[GapReason] = field(default_factory=list)
 
 
 def rel(root: Path, p: Path) -> str:
@@ -181,14 +211,46 @@ def cpp_row_locations(dirs: list[Path], root: Path) -> dict[str, list[Loc]]:
     return out
 
 
+class RequirementLinkError(ValueError):
+    """A declared link names no requirement of REQUIREMENTS.md, or is malformed."""
+
+
+def declared_ids(text: str, line: str, known: set[str], where: str) -> tuple[str, ...]:
+    """The IDs of a req marker's arguments or a `// req:` comment (`text`, part of the
+    source `line` at `where` = file:line): each must be a requirement ID of
+    REQUIREMENTS.md, written as it spells it; the error names the column of the first bad one."""
+    ids = re.findall(r"[A-Za-z0-9_-]+", text.replace('"', " ").replace("'", " ").replace(",", " "))
+    if not ids:
+        raise RequirementLinkError(f"{where}:{line.index(text) + 1}: expected requirement IDs (e.g. RSM-05) "
+                                   "after the req marker, found none")
+    bad = [x for x in ids if x not in known]
+    if bad:
+        col = line.index(bad[0], line.index(text)) + 1
+        raise RequirementLinkError(f"{where}:{col}: {', '.join(bad)}: not a requirement ID of REQUIREMENTS.md "
+                                   "(expected e.g. RSM-05, INV-RESET)")
+    return tuple(ids)
+
+
+def _link(kind: str, name: str, named: tuple[str, ...], declared: tuple[str, ...], loc: Loc) -> TestCase:
+    return TestCase(kind, name, tuple(sorted(set(named) | set(declared))), loc, declared)
+
+
 def gtests(folder: Path, root: Path, known: set[str]) -> list[TestCase]:
     out = []
     for f in sorted(folder.rglob("*.cpp")):
+        pending: list[str] = []
         for i, line in enumerate(f.read_text(encoding="utf-8").splitlines(), start=1):
+            r = _GTREQ.match(line)
+            if r:
+                pending += declared_ids(r.group(1), line, known, f"{rel(root, f)}:{i}")
+                continue
             m = _GTEST.match(line)
             if m:
                 name = f"{m.group(1)}.{m.group(2)}"
-                out.append(TestCase("gtest", name, code_ids(m.group(1) + " " + m.group(2), known), Loc(rel(root, f), i)))
+                out.append(_link("gtest", name, code_ids(m.group(1) + " " + m.group(2), known), tuple(pending),
+                                 Loc(rel(root, f), i)))
+            if not line.lstrip().startswith("//"):
+                pending = []    # a `// req:` line binds to the TEST right below its comment block
     return out
 
 
@@ -196,10 +258,19 @@ def pytests(folder: Path, root: Path, known: set[str]) -> list[TestCase]:
     out = []
     for f in sorted(folder.glob("test_*.py")):
         cls = None
+        cls_ids: tuple[str, ...] = ()
+        pending: list[str] = []
         for i, line in enumerate(f.read_text(encoding="utf-8").splitlines(), start=1):
+            r = _PYREQ.match(line)
+            if r:
+                pending += declared_ids(r.group(1), line, known, f"{rel(root, f)}:{i}")
+                continue
+            if line.lstrip().startswith("@pytest.mark.req"):
+                raise RequirementLinkError(f"{rel(root, f)}:{i}:{line.index('pytest.mark.req') + 1}: expected "
+                                           '@pytest.mark.req("ID", ...) on one line, above a test or a test class')
             c = _PYCLASS.match(line)
             if c:
-                cls = c.group(1)
+                cls, cls_ids, pending = c.group(1), tuple(pending), []
                 continue
             if line and not line[0].isspace() and not line.startswith(("def ", "@", "#", ")")):
                 cls = None if not line.startswith("class ") else cls
@@ -209,5 +280,39 @@ def pytests(folder: Path, root: Path, known: set[str]) -> list[TestCase]:
                 node = f"{rel(root, f)}::{cls}::{m.group(2)}" if inner else f"{rel(root, f)}::{m.group(2)}"
                 if m.group(1) and not inner:
                     continue  # a nested helper, not a test
-                out.append(TestCase("pytest", node, code_ids(m.group(2), known), Loc(rel(root, f), i)))
+                declared = (cls_ids if inner else ()) + tuple(pending)
+                out.append(_link("pytest", node, code_ids(m.group(2), known), declared, Loc(rel(root, f), i)))
+                pending = []
+            elif line and not line[0].isspace() and not line.startswith(("@", ")", "#")):
+                pending = []    # markers bind to the def or class right below them
+    return out
+
+
+def unreachable_rows(page: Path, root: Path) -> list[Unreachable]:
+    """The rows a design page declares unreachable by construction, each with its reason."""
+    out = []
+    for i, line in enumerate(page.read_text(encoding="utf-8").splitlines(), start=1):
+        m = _UNREACHABLE.match(line)
+        if m:
+            out.append(Unreachable(rel(root, page), m.group(1), m.group(2).strip(), Loc(rel(root, page), i)))
+    return out
+
+
+def gap_reasons(page: Path, root: Path, known: set[str], kinds: set[str]) -> list[GapReason]:
+    """The `- ID (kind, kind): reason` items of a design page; an unknown ID or kind is a
+    located error (a reason that explains nothing would pass unnoticed)."""
+    out = []
+    for i, line in enumerate(page.read_text(encoding="utf-8").splitlines(), start=1):
+        m = _GAP_REASON.match(line)
+        if not m:
+            continue
+        where = f"{rel(root, page)}:{i}"
+        if m.group(1) not in known:
+            raise RequirementLinkError(f"{where}:3: {m.group(1)}: not a requirement ID of REQUIREMENTS.md")
+        named = tuple(k.strip() for k in m.group(2).split(","))
+        bad = [k for k in named if k not in kinds]
+        if bad:
+            raise RequirementLinkError(f"{where}:{line.index('(') + 2}: {', '.join(bad)}: not a gap kind (expected "
+                                       f"one of: {', '.join(sorted(kinds))})")
+        out.append(GapReason(m.group(1), named, m.group(3).strip(), Loc(rel(root, page), i)))
     return out

@@ -32,9 +32,11 @@ def link_binary(build_dir: Path = DEFAULT_BUILD) -> Path:
 
 
 def render_diagram(dest: Path) -> None:
-    """The C++ table's DOT export rendered by Graphviz `dot` into dest/diagram.svg."""
+    """The C++ table (the binding's JSON export) laid out for the panel (diagram_dot.py), rendered
+    by Graphviz `dot` into dest/diagram.svg."""
     from safestate.conform.binding import load_core
     from safestate.errors import UsageError
+    from safestate.panel.diagram_dot import panel_dot
 
     try:
         core = load_core("safestate._core")  # the binding: the same table the control cycle runs
@@ -43,7 +45,7 @@ def render_diagram(dest: Path) -> None:
     dot = shutil.which("dot")
     if dot is None:
         raise PanelError("Graphviz 'dot' not found on PATH (apt-get install graphviz)")
-    done = subprocess.run([dot, "-Tsvg"], input=core.transition_table_dot(), capture_output=True,
+    done = subprocess.run([dot, "-Tsvg"], input=panel_dot(core.transition_table_json()), capture_output=True,
                           text=True, check=False)
     if done.returncode != 0:
         raise PanelError(f"dot -Tsvg failed: {done.stderr.strip()}")

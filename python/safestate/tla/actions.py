@@ -21,9 +21,9 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Callable
 
 from . import ast as A
-from .compiler import Compiler, _enum_checked, _prefix, all_names, check_bool
+from .compiler import Compiler, _enum_checked, _prefix, _subterms, all_names, check_bool
 from .compiler import _assign as assign_binder
-from .env import UNSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal, SlotLocal
+from .env import UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
 from .specialise import var_read
@@ -42,9 +42,31 @@ class Leaf:
     params: list[tuple[str, int]] = field(default_factory=list)
 
 
+@dataclass
+class _RecursiveAction:
+    """The compiled body of a recursive action-level operator (see
+    `ActionCompiler.recursive_action`)."""
+
+    body: Code | None = None
+    size: int = 0
+    ret: int = 0
+
+
+def _primes_a_parameter(body: A.Expr, params: set[str]) -> bool:
+    """Does `body` prime (or UNCHANGE) an expression naming one of `params`?  TLC
+    binds such a parameter by name; a recursive call passes values."""
+    def walk(x: Any, primed: bool) -> bool:
+        if isinstance(x, (A.Name, A.Apply)) and primed and x.name in params:
+            return True
+        inner = primed or isinstance(x, A.Prime) or (isinstance(x, A.Unary) and x.op == "UNCHANGED")
+        return any(walk(c, inner) for c in _subterms(x))
+    return walk(body, False)
+
+
 class ActionCompiler:
     def __init__(self, compiler: Compiler) -> None:
         self.c = compiler
+        self._recursive: dict[tuple[int, bool], _RecursiveAction] = {}
 
     # ---------------------------------------------------------------- splitting Next
     def split(self, e: A.Expr, env: Env, label: str, label_loc: Loc, params: list[tuple[str, int]],
@@ -134,7 +156,12 @@ class ActionCompiler:
         return k
 
     def _all_assigned_guard(self, e: A.Expr, env: Env, act: Code, k: Cont) -> Code:
-        test = self.guard(e, env, k)
+        try:
+            test = self.guard(e, env, k)
+        except UnsupportedError:
+            # A recursive action cannot be compiled as an expression: run it as an
+            # action on the complete state and continue once if any branch holds.
+            test = self._once(e, env, k)
 
         def conjunct(s: Any, t: Any, L: list) -> None:
             for v in t:
@@ -143,6 +170,20 @@ class ActionCompiler:
                     return
             test(s, t, L)
         return conjunct
+
+    def _once(self, e: A.Expr, env: Env, k: Cont) -> Code:
+        hit = [False]
+
+        def mark(s: Any, t: Any, L: list) -> None:
+            hit[0] = True
+        probe = self.action(e, env, mark)
+
+        def once(s: Any, t: Any, L: list) -> None:
+            hit[0] = False
+            probe(s, t, L)
+            if hit[0]:
+                k(s, t, L)
+        return once
 
     def _plain_assignments(self, e: A.Expr, env: Env) -> list[tuple[int, Code, Loc]] | None:
         """``x' = e`` or ``UNCHANGED <<x, y>>`` as (variable, value code, loc) triples."""
@@ -276,13 +317,51 @@ class ActionCompiler:
             inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
             return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode, env.primed), k)
         # TLC evaluates every user-defined operator in action position by descending
-        # into its body (so a disjunction inside it branches), except recursive ones.
+        # into its body (so a disjunction inside it branches); a recursive one cannot
+        # be expanded at compile time and runs with its arguments' values.
+        if isinstance(sym, DefSym) and sym.recursive and sym.defn.fn_bounds is None \
+                and self.c.def_info(sym).action:
+            return self.recursive_action(sym, args, env, e.loc, k)
         if not isinstance(sym, DefSym) or sym.defn.fn_bounds is not None or sym.recursive:
             return None
         if self.c._inline_depth > 40:
             return None
         pre, code = self.c.inline_def(sym, args, env, e.loc, lambda b, benv: self.action(b, benv, k))
         return _prefix_act(pre, code)
+
+    def recursive_action(self, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc, k: Cont) -> Code:
+        """A RECURSIVE operator in action position (``Step(n) == IF n = 0 THEN x' = 1
+        ELSE Step(n - 1)``): its body is compiled once as an action whose
+        continuation is a frame slot, filled at each call with the caller's."""
+        d = sym.defn
+        self.c._arity(d.name, len(d.params), args, loc)
+        params = {p.name for p in d.params}
+        if sym.scope.instance_params or _primes_a_parameter(d.body, params):
+            raise UnsupportedError(f"the recursive operator {d.name} primes one of its parameters (or is "
+                                   f"defined in a parameterised instance): not supported", loc)
+        key = (id(sym), env.init_mode)
+        rec = self._recursive.get(key)
+        if rec is None:
+            rec = self._recursive[key] = _RecursiveAction()
+            frame = Frame()
+            bindings: dict[str, Any] = {}
+            for p in d.params:
+                slot = frame.alloc()
+                bindings[p.name] = OpLocal(slot, p.arity) if p.arity else SlotLocal(slot)
+            ret = rec.ret = frame.alloc()
+
+            def back(s: Any, t: Any, L: list) -> None:
+                L[ret](s, t)
+            rec.body = self.action(d.body, Env(sym.scope, frame, bindings, env.init_mode), back)
+            rec.size = frame.size
+        arg_codes = [self.c._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
+
+        def call(s: Any, t: Any, L: list) -> None:
+            frame = [a(s, t, L) for a in arg_codes]
+            frame += [None] * (rec.size - len(frame))
+            frame[rec.ret] = lambda s2, t2: k(s2, t2, L)
+            rec.body(s, t, frame)
+        return call
 
     def a_Prefixed(self, e: A.Prefixed, env: Env, k: Cont) -> Code | None:
         pre, code = self.c.prefixed(e, env, lambda b, benv: self.action(b, benv, k))

@@ -726,6 +726,8 @@ class Compiler:
     def _call_builtin(self, sym: BuiltinSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
         b = sym.builtin
         self._arity(b.name, b.arity, args, loc)
+        if b.refused is not None:
+            raise UnsupportedError(b.refused, loc)
         fn = b.fn
         if b.name in ("TLCGet", "TLCSet"):
             RUNTIME.used = True  # the explorer keeps the counters up to date
@@ -1220,7 +1222,8 @@ class Compiler:
 
     def _product(self, e: A.Apply, env: Env) -> Code:
         codes = [self.expr(x, env) for x in e.args]
-        return _guard(lambda s, t, L: ProductSet(tuple(_need_set(c(s, t, L), "\\X") for c in codes)), e.loc)
+        # Factors are checked when the product is used (values.ProductSet), as by TLC.
+        return _guard(lambda s, t, L: ProductSet(tuple(c(s, t, L) for c in codes)), e.loc)
 
     def membership(self, set_expr: A.Expr, env: Env) -> Callable[[Any, Any, list, Value], bool]:
         """Compile ``v \\in set_expr`` without building structured sets."""

@@ -24,8 +24,6 @@ from .modules import BuiltinSym, ConstSym, DefSym, VarSym
 # Builtins whose evaluation has an effect besides its value.
 IMPURE_BUILTINS = frozenset({"Print", "PrintT", "Assert", "TLCGet", "TLCSet"})
 
-_NOT_CONSTANT = None  # free_names() result for expressions that are never constant
-
 
 def const_code(v: Any) -> Callable:
     """A closure returning the constant `v`, tagged with its value."""

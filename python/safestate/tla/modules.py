@@ -47,12 +47,25 @@ def load_module(path: str) -> A.Module:
     return root
 
 
+# Folders searched for a module after the root module's own folder, like TLC's
+# -DTLA-Library: os.pathsep-separated, so that a model can EXTEND or INSTANCE a module
+# shared from another folder.
+MODULE_PATH_ENV = "SAFESTATE_MODULE_PATH"
+
+
+def module_search_path(root_folder: str) -> list[str]:
+    extra = [p for p in os.environ.get(MODULE_PATH_ENV, "").split(os.pathsep) if p]
+    return [root_folder] + [os.path.abspath(p) for p in extra]
+
+
 class ModuleLoader:
-    """Finds modules by name relative to the root module's folder."""
+    """Finds modules by name: the root module's folder first, then the folders of
+    SAFESTATE_MODULE_PATH, then the standard modules."""
 
     def __init__(self, root: A.Module) -> None:
         self.root = root
         self.folder = os.path.dirname(os.path.abspath(root.file))
+        self.search_path = module_search_path(self.folder)
         self.cache: dict[str, A.Module] = {root.name: root}
         self._register_submodules(root)
 
@@ -64,8 +77,9 @@ class ModuleLoader:
     def find(self, name: str, loc: Loc) -> A.Module | dict[str, Builtin]:
         if name in self.cache:
             return self.cache[name]
-        path = os.path.join(self.folder, name + ".tla")
-        if os.path.exists(path):
+        path = next((p for p in (os.path.join(d, name + ".tla") for d in self.search_path)
+                     if os.path.exists(p)), None)
+        if path is not None:
             mod = load_module(path)
             if mod.name != name:
                 raise TlaError("semantic", f"file {name}.tla contains module {mod.name}, not {name}", loc)
@@ -76,7 +90,12 @@ class ModuleLoader:
             return STANDARD_MODULES[name]
         if name in UNSUPPORTED_MODULES:
             raise UnsupportedError(f"the standard module {name} is not supported", loc)
-        raise TlaError("semantic", f"Cannot find source file for module {name}", loc)
+        raise TlaError("semantic", f"Cannot find source file for module {name} (searched "
+                       f"{os.pathsep.join(self.search_path)}; more folders: {MODULE_PATH_ENV})", loc)
+
+    def files(self) -> list[str]:
+        """The files of every module loaded so far (the root's included)."""
+        return sorted({m.file for m in self.cache.values() if m.file})
 
 
 def tlc_intern_order(loader: ModuleLoader) -> list[str]:

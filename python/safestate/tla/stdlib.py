@@ -14,10 +14,10 @@ import sys
 from dataclasses import dataclass
 from typing import Callable
 
-from .errors import AssertFailure, EvalError, ModuleEvalError
+from .errors import AssertFailure, EvalError, ModuleEvalError, UnsupportedError
 from .tlcget import tlc_get, tlc_set
 from .values import (
-    BOOLEAN, INT, NAT, STRING, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
+    INT, NAT, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
 )
 
@@ -29,6 +29,8 @@ class Builtin:
     fn: Callable[..., Value]
     module: str
     higher_order: bool = False
+    # Set for an operator we do not implement: using it is this "unsupported" error.
+    refused: str | None = None
 
 
 def _int(v: Value, op: str) -> int:
@@ -277,10 +279,6 @@ def tlc_eval(v: Value) -> Value:
     return v
 
 
-def any_set() -> Value:
-    raise EvalError("The TLC operator Any is not supported")
-
-
 TLC = {
     "Print": Builtin("Print", 2, print_op, "TLC"), "PrintT": Builtin("PrintT", 1, print_t, "TLC"),
     "Assert": Builtin("Assert", 2, assert_op, "TLC"), ":>": Builtin(":>", 2, single_fn, "TLC"),
@@ -392,12 +390,51 @@ BAGS = {
     "BagOfAll": Builtin("BagOfAll", 2, bag_of_all, "Bags", higher_order=True),
 }
 
+# TLCExt: the operators whose value TLC defines deterministically.  The others are
+# Java overrides that read TLC's own state (Trace, CounterExample, TLCFP...), change
+# its search (TLCDefer, PickSuccessor) or catch its errors (AssertError): using one is
+# an "unsupported" error, never a guess.
+
+
+def assert_eq(a: Value, b: Value) -> bool:
+    """TLCExt's definition: a = b, printing both when they differ."""
+    if values_equal(a, b):
+        return True
+    for v in ("Assertion failed", a, b):
+        print_t(v)
+    return False
+
+
+def _refused(name: str, arity: int) -> Builtin:
+    def refuse(*_: Value) -> Value:
+        raise UnsupportedError(message)
+    message = (f"TLCExt!{name} is not supported: TLC computes it from its own search state, which "
+               f"safestate check does not reproduce")
+    return Builtin(name, arity, refuse, "TLCExt", refused=message)
+
+
+TLC_EXT = {
+    "AssertEq": Builtin("AssertEq", 2, assert_eq, "TLCExt"),
+    "TLCNoOp": Builtin("TLCNoOp", 1, lambda v: v, "TLCExt"),
+    "TLCCache": Builtin("TLCCache", 2, lambda e, _closure: e, "TLCExt"),
+    "TLCModelValue": Builtin("TLCModelValue", 1, lambda s: ModelValue(s) if type(s) is str else _not_string(s),
+                             "TLCExt"),
+    **{n: _refused(n, a) for n, a in (("AssertError", 2), ("TLCGetOrDefault", 2), ("TLCGetAndSet", 4),
+                                       ("Trace", 0), ("CounterExample", 0), ("ToTrace", 1), ("TLCDefer", 1),
+                                       ("PickSuccessor", 1), ("TLCFP", 1), ("TLCEvalDefinition", 1))},
+}
+
+
+def _not_string(v: Value) -> Value:
+    raise EvalError(f"TLCModelValue expects a string, not {fmt(v)}")
+
+
 STANDARD_MODULES: dict[str, dict[str, Builtin]] = {
     "Naturals": NATURALS, "Integers": INTEGERS, "Sequences": SEQUENCES, "FiniteSets": FINITE_SETS,
-    "TLC": TLC, "Bags": BAGS,
+    "TLC": TLC, "Bags": BAGS, "TLCExt": TLC_EXT,
 }
 # Modules TLC ships that we do not implement: naming them is an "unsupported" error.
-UNSUPPORTED_MODULES = {"Reals", "RealTime", "TLCExt", "Json", "Randomization", "IOUtils", "CSV"}
+UNSUPPORTED_MODULES = {"Reals", "RealTime", "Json", "Randomization", "IOUtils", "CSV"}
 
 
 # ----------------------------------------------------------------- core set operators
@@ -484,8 +521,6 @@ def domain(f: Value) -> Value:
         return IntervalSet(1, len(f))
     raise EvalError(f"Attempted to apply the operator DOMAIN to a non-function:\n{fmt(f)}")
 
-
-CORE_SETS = {"BOOLEAN": BOOLEAN, "STRING": STRING}
 
 __all__ = ["Builtin", "STANDARD_MODULES", "UNSUPPORTED_MODULES", "cup", "cap", "setminus", "subseteq",
            "union", "domain", "values_equal", "kind", "ModelValue"]

@@ -4,7 +4,8 @@ order SANY interns them, with the modules each one extends and instantiates.
 TLC orders strings by when they were interned; a spec's string that is also a word of
 a standard module it uses (e.g. "a" in Naturals) gets the rank of that word.  Generated
 from the module texts with `parser._token_order`; the standard modules have no string
-literals."""
+literals, except TLCExt's "Assertion failed" (left out: it only matters to a spec that
+uses that very string)."""
 
 from __future__ import annotations
 
@@ -44,5 +45,15 @@ STANDARD_TOKENS: dict[str, tuple[tuple[str, ...], tuple[str, ...], tuple[str, ..
         'Modified', 'version', 'for', 'standard', 'module', 'set', 'Dec', 'Corrected',
         'error', 'found', 'by', 'Stephan', 'Merz', 'comments', 'based', 'on',
         'suggestions', 'Lyle', 'Ramshaw', 'Initial',
+    )),
+    # Its one string literal, "Assertion failed", is not listed (see the docstring).
+    'TLCExt': ((), ('TLC', 'Integers'), (
+        'MODULE', 'TLCExt', 'LOCAL', 'INSTANCE', 'TLC', 'Integers', 'AssertEq', 'a', 'b', 'IF',
+        'THEN', 'PrintT', 'ELSE', 'AssertError', 'err', 'exp', 'LET', 'FailsEval', 'e', 'CHOOSE',
+        'BOOLEAN', 'TRUE', 'TLCError', 's', 'STRING', 'IN', 'Assert', 'TLCGetOrDefault', 'key',
+        'defaultVal', 'n', 'TLCGetAndSet', 'Op', 'val', 'oldVal', 'v', 'TLCSet', 'Trace',
+        'CounterExample', 'ToTrace', 'CE', 'TLCModelValue', 'str', 'ToString', 'TLCDefer',
+        'expression', 'TLCNoOp', 'PickSuccessor', 'bool', 'TLCCache', 'closure', 'TLCFP', 'var',
+        'i', 'Int', 'TLCEvalDefinition', 'definitionName',
     )),
 }

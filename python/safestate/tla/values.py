@@ -337,25 +337,34 @@ class RecSetValue(LazySet):
 
 
 class ProductSet(LazySet):
-    """``S1 \\X S2 \\X ...``."""
+    """``S1 \\X S2 \\X ...``.  As TLC's SetOfTuplesValue, a factor that is not a set
+    is an error only when the product is used as a set (``({2} \\X 0)..2`` fails in
+    ``..``, as in TLC)."""
 
     __slots__ = ("factors", "finite")
 
     def __init__(self, factors: tuple[Value, ...]) -> None:
         self.factors = factors
-        self.finite = all(is_finite(s) for s in factors)
+        self.finite = all(is_finite(s) for s in factors if is_set(s))
+
+    def _sets(self) -> tuple[Value, ...]:
+        for s in self.factors:
+            if not is_set(s):
+                raise EvalError(f"Attempted to apply \\X to the non-set {fmt(s)}")
+        return self.factors
 
     def contains(self, v: Value) -> bool:
-        if type(v) is not tuple or len(v) != len(self.factors):
+        factors = self._sets()
+        if type(v) is not tuple or len(v) != len(factors):
             return False
-        return all(member(x, s) for x, s in zip(v, self.factors))
+        return all(member(x, s) for x, s in zip(v, factors))
 
     def iterate(self) -> Iterator[Value]:
-        return iter(itertools.product(*(sorted_elems(s) for s in self.factors)))
+        return iter(itertools.product(*(sorted_elems(s) for s in self._sets())))
 
     def size(self) -> int:
         n = 1
-        for s in self.factors:
+        for s in self._sets():
             n *= set_size(s)
         return n
 

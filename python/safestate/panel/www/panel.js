@@ -71,7 +71,7 @@ function highlight(state, row) {
   for (const g of nodes.values()) g.classList.remove("current");
   const n = nodes.get(state);
   if (n) n.classList.add("current");
-  for (const e of edges) e.g.classList.toggle("fired", e.row === row && e.to === state);
+  for (const e of edges) e.g.classList.toggle("fired", e.rows.includes(row) && e.to === state);
 }
 
 function loadDiagram() {
@@ -83,11 +83,11 @@ function loadDiagram() {
       if (t) nodes.set(t.textContent.trim(), g);
     }
     for (const g of box.querySelectorAll("g.edge")) {
+      // diagram_dot.py: the edge's id is "rows:" + the ids of the rows it stands for.
       const t = g.querySelector("title");
-      const label = g.querySelector("text");
-      if (!t || !label) continue;
+      if (!t || !g.id.startsWith("rows:")) continue;
       const [from, to] = t.textContent.split("->").map((s) => s.trim());
-      edges.push({ row: label.textContent.trim().split(" ")[0], from, to, g });
+      edges.push({ rows: g.id.slice("rows:".length).split(","), from, to, g });
     }
     box.dataset.loaded = "true";
   });

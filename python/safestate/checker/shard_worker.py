@@ -1,0 +1,303 @@
+"""One worker of the sharded breadth-first search (`parallel.py`).
+
+Worker ``me`` of ``n`` owns the states whose key (the state, or its VIEW/SYMMETRY
+reduction) hashes to ``me`` modulo ``n``: it keeps their seen-set, stores them and
+expands them.  A BFS level runs in three phases, each ended by a barrier at the
+coordinator (messages over a pipe):
+
+1. **expand** its states of the level in their global BFS order; every successor
+   gets the sort key (parent's position in the level, successor's rank among the
+   parent's successors) — its place in a single worker's generation order.  Owned
+   successors become candidates, the others are batched per owner (one candidate
+   per state and level, the one with the smallest sort key) and written to a file;
+2. **merge** the batches sent to it: a candidate not seen before is new; of the
+   candidates for the same state the smallest sort key wins, so the parent and
+   action recorded are the ones a single worker records;
+3. **number** its new states: their position in the next level is their rank among
+   every worker's new sort keys (the sorted key arrays are exchanged as files).
+
+Anything a single worker would stop at (a violated invariant or action property,
+a deadlock, an evaluation error) is only flagged: the coordinator then replays the
+level sequentially (`parallel.py`), so counts and traces are those of one worker.
+"""
+
+from __future__ import annotations
+
+import copyreg
+import os
+import pickle
+import time
+from array import array
+from bisect import bisect_left
+from multiprocessing.connection import Connection
+from typing import Any
+
+from ..tla.enum_watch import rss_mb
+from ..tla.env import UNSET
+from ..tla.values import FnValue
+from .model import Model
+
+RANK_BITS = 32  # a sort key packs (position in level, rank) into one signed 64-bit int
+
+
+def pss_mb() -> float:
+    """This process's proportional memory in MB: pages shared with the other workers
+    (the model, forked from the coordinator) count once over all of them."""
+    try:
+        with open("/proc/self/smaps_rollup") as f:
+            for line in f:
+                if line.startswith("Pss:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return rss_mb()
+
+
+def _fn_with_hash(d: dict, h: int) -> FnValue:
+    fv = FnValue(d)
+    fv._hash = h
+    return fv
+
+
+def _reduce_fn(fv: FnValue) -> tuple:
+    return (_fn_with_hash, (fv.d, hash(fv)))
+
+
+# Records and functions travel with their hash: every worker is a fork of the same
+# process (same string-hash seed, same interned model values), so the receiver need not
+# rebuild a frozenset per record to hash it again.  Only for these files: a pickle that
+# outlives the run (the graph cache) must not carry hashes.
+_DISPATCH = dict(copyreg.dispatch_table)
+_DISPATCH[FnValue] = _reduce_fn
+
+
+def dump_between_workers(obj: Any, path: str) -> None:
+    with open(path, "wb") as f:
+        pickler = pickle.Pickler(f, protocol=pickle.HIGHEST_PROTOCOL)
+        pickler.dispatch_table = _DISPATCH
+        pickler.dump(obj)
+
+
+class _Flag(Exception):
+    """Ends the expansion: something a single worker stops at; the level is replayed."""
+
+
+class ShardWorker:
+    def __init__(self, model: Model, me: int, n: int, folder: str, conn: Connection,
+                 max_memory_mb: float) -> None:
+        self.m = model
+        self.me = me
+        self.n = n
+        self.folder = folder
+        self.conn = conn
+        self.keyed = model.view is not None or model.symmetry is not None
+        # The shards split the states evenly, so each worker gets an even share of the limit.
+        self.memory_share_mb = max_memory_mb / n
+        # key -> the state's local index once stored, or its best candidate
+        # (sort key, state, leaf[, key]) during the level that discovers it.
+        self.known: dict[Any, Any] = {}
+        self.states: list[tuple] = []
+        self.level_start = [0, 0]  # local index of each level's first state (levels from 1)
+        self.pos = array("q")      # position in its level's global BFS order
+        self.ppos = array("q")     # the parent's position in the previous level
+        self.leaf = array("i")
+        self.depth = 1             # the level being expanded
+        self.memory_exceeded = False
+        self.phase_start = time.process_time()
+
+    # ---------------------------------------------------------------- helpers
+    def _path(self, kind: str, src: int, dst: int = 0, depth: int | None = None) -> str:
+        return os.path.join(self.folder, f"{kind}{self.depth if depth is None else depth}_{src}_{dst}")
+
+    def _barrier(self, flagged: bool, count: int) -> str:
+        """Report this phase (with the CPU seconds it took), wait for the coordinator's decision."""
+        now = time.process_time()
+        self.conn.send((flagged, self.memory_exceeded, count, now - self.phase_start))
+        decision = self.conn.recv()
+        self.phase_start = time.process_time()
+        return decision
+
+    def _check_memory(self) -> None:
+        if pss_mb() > self.memory_share_mb:
+            self.memory_exceeded = True
+            raise _Flag()
+
+    # ---------------------------------------------------------------- the search
+    def run(self, initial: list[tuple]) -> None:
+        m = self.m
+        for p, st in enumerate(initial):
+            key = m.key(st) if self.keyed else st
+            if hash(key) % self.n == self.me:
+                self.known[key] = len(self.states)
+                self.states.append(st)
+                self.pos.append(p)
+                self.ppos.append(-1)
+                self.leaf.append(-1)
+        self.level_start.append(len(self.states))
+        while True:
+            fresh: list = []
+            flagged, generated = self._expand(fresh)
+            decision = self._barrier(flagged, generated)
+            if self.depth > 1:  # every worker has read the previous level's key files
+                os.unlink(self._path("K", self.me, 0, self.depth - 1))
+            if decision != "merge":
+                return self._stop(decision)
+            flagged, new = self._merge(fresh)
+            decision = self._barrier(flagged, new)
+            if decision != "number":
+                return self._stop(decision)
+            self._number()
+
+    def _expand(self, fresh: list) -> tuple[bool, int]:
+        """Phase 1: expand the level's states; `fresh` gets the keys of the new owned
+        candidates.  Returns (flagged, states generated)."""
+        m, me, n, keyed = self.m, self.me, self.n, self.keyed
+        known = self.known
+        constrained = bool(m.constraints or m.action_constraints)
+        invariants, action_properties, holds = m.invariants, m.action_properties, m.holds
+        outgoing: list[dict] = [{} for _ in range(n)]
+        cur: tuple = ()
+        base = rank = 0
+
+        def on_succ(st: tuple, leaf: int, L: list) -> None:
+            # The hot path: kept to the checks that apply, as Explorer.expand's on_succ.
+            nonlocal rank
+            r = rank
+            rank = r + 1
+            if UNSET in st:
+                raise _Flag()  # not completely specified: the replay reports it
+            if action_properties:
+                for prop in action_properties:
+                    if not holds(prop, cur, st):
+                        raise _Flag()
+            if constrained and not (m.in_model(st) and m.action_ok(cur, st)):
+                for inv in invariants:  # TLC checks constraint-violating successors too
+                    if not holds(inv, st):
+                        raise _Flag()
+                return
+            if keyed:
+                key = m.key(st)
+                dest = hash(key) % n
+                if dest == me:
+                    if key not in known:
+                        known[key] = (base + r, st, leaf, key)
+                        fresh.append(key)
+                else:
+                    batch = outgoing[dest]
+                    if key not in batch:
+                        batch[key] = (base + r, st, leaf, key)
+                return
+            dest = hash(st) % n
+            if dest == me:
+                if st not in known:
+                    known[st] = (base + r, st, leaf)
+                    fresh.append(st)
+            else:
+                batch = outgoing[dest]
+                if st not in batch:
+                    batch[st] = (base + r, st, leaf)
+
+        flagged = False
+        generated = 0
+        states, pos = self.states, self.pos
+        deadlock = m.check_deadlock
+        try:
+            for li in range(self.level_start[self.depth], len(states)):
+                cur, base, rank = states[li], pos[li] << RANK_BITS, 0
+                if not li & 4095:
+                    self._check_memory()
+                m.run_next(cur, on_succ)
+                if rank == 0 and deadlock:
+                    raise _Flag()
+                if rank >> RANK_BITS:
+                    raise _Flag()  # cannot be numbered; the replay handles the level
+                generated += rank
+        except _Flag:
+            flagged = True
+        except Exception:  # an evaluation error (or a recursion): the replay reports it exactly
+            flagged = True
+        for dest, batch in enumerate(outgoing):
+            if dest != me:
+                dump_between_workers(list(batch.values()), self._path("B", me, dest))
+        return flagged, generated
+
+    def _merge(self, fresh: list) -> tuple[bool, int]:
+        """Phase 2: merge the batches sent here, store the new states in BFS order and
+        check the invariants on them.  Returns (flagged, number of new states)."""
+        m, known, keyed = self.m, self.known, self.keyed
+        for src in range(self.n):
+            if src == self.me:
+                continue
+            path = self._path("B", src, self.me)
+            with open(path, "rb") as f:
+                entries = pickle.load(f)
+            os.unlink(path)
+            for c in entries:
+                key = c[3] if keyed else c[1]
+                old = known.get(key)
+                if old is None:
+                    known[key] = c
+                    fresh.append(key)
+                elif type(old) is tuple and c[0] < old[0]:
+                    known[key] = c
+        # Sort keys are unique, so the candidates sort by them alone.
+        ordered = sorted([known[k] for k in fresh])
+        first = len(self.states)
+        if keyed:
+            for i, c in enumerate(ordered):
+                known[c[3]] = first + i
+        else:
+            for i, c in enumerate(ordered):
+                known[c[1]] = first + i
+        sort_keys = array("q", [c[0] for c in ordered])
+        with open(self._path("K", self.me), "wb") as f:
+            sort_keys.tofile(f)
+        new_states = [c[1] for c in ordered]
+        self.states.extend(new_states)
+        self.ppos.extend(array("q", [c[0] >> RANK_BITS for c in ordered]))
+        self.leaf.extend(array("i", [c[2] for c in ordered]))
+        self.sort_keys = sort_keys
+        flagged = False
+        try:
+            self._check_memory()
+            holds = m.holds
+            for inv in m.invariants:
+                for st in new_states:
+                    if not holds(inv, st):
+                        raise _Flag()
+        except Exception:
+            flagged = True
+        return flagged, len(ordered)
+
+    def _number(self) -> None:
+        """Phase 3: positions of the new states in the next level (their rank among every
+        worker's new sort keys); they become the level to expand."""
+        others = []
+        for src in range(self.n):
+            if src != self.me:
+                keys = array("q")
+                with open(self._path("K", src), "rb") as f:
+                    keys.frombytes(f.read())
+                others.append(keys)
+        sort_keys = self.sort_keys
+        if len(others) == 1:
+            other = others[0]
+            self.pos.extend(array("q", [i + bisect_left(other, k) for i, k in enumerate(sort_keys)]))
+        else:
+            self.pos.extend(array("q", [i + sum(bisect_left(o, k) for o in others)
+                                        for i, k in enumerate(sort_keys)]))
+        self.depth += 1
+        self.level_start.append(len(self.states))
+
+    def _stop(self, decision: str) -> None:
+        """The coordinator stops the search; on "dump" it replays the level being
+        expanded, so it gets every stored state of that level and the ones before."""
+        if decision == "dump":
+            keep = self.level_start[self.depth + 1]
+            levels = array("i")
+            for lv in range(1, self.depth + 1):
+                levels.extend(array("i", [lv]) * (self.level_start[lv + 1] - self.level_start[lv]))
+            path = self._path("D", self.me)
+            dump_between_workers((self.states[:keep], levels, self.pos[:keep], self.ppos[:keep],
+                                  self.leaf[:keep]), path)
+            self.conn.send((path,))
