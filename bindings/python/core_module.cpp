@@ -424,18 +424,21 @@ PYBIND11_MODULE(_core, m) {
         const std::vector<BatchStep> steps = batch_steps(prefix);
         py::list out;
         for (const auto& p : probes) {
-          const ScanInputs in = scan_inputs(p.cast<py::dict>());
+          // A probe is one cycle's inputs, or a list of steps (e.g. a submit, then a cycle).
+          const std::vector<BatchStep> tail =
+              py::isinstance<py::list>(p) ? batch_steps(p.cast<py::list>())
+                                          : std::vector<BatchStep>{BatchStep(scan_inputs(p.cast<py::dict>()))};
           auto mgr = std::make_unique<SystemStateManager>(config);  // not movable: one per probe
           for (const auto& s : steps) run_step(*mgr, s);
-          (void)mgr->cycle(in);
+          for (const auto& s : tail) run_step(*mgr, s);
           out.append(py::make_tuple(observe(*mgr), rows_dict(*mgr)));
         }
         return out;
       },
       py::arg("config"), py::arg("prefix"), py::arg("probes"),
-      "Input-complete conformance: for each probe (a cycle's inputs dict), a fresh Manager runs\n"
-      "the prefix (cycle inputs dicts and submit tuples (kind, axis, direction, speed_mm_s)),\n"
-      "then one cycle with the probe. Returns [(observe(), last_rows())] per probe.");
+      "Input-complete conformance: for each probe (a cycle's inputs dict, or a list of steps), a\n"
+      "fresh Manager runs the prefix (cycle inputs dicts and submit tuples (kind, axis, direction,\n"
+      "speed_mm_s)), then the probe. Returns [(observe(), last_rows())] per probe.");
   m.def(
       "replay",
       [](const Config& config, const py::list& calls) {

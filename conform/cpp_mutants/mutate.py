@@ -88,6 +88,12 @@ def cmake_text(mutants: list[Mutant], gtest: bool, build: Path) -> str:
         "project(safestate_cpp_mutants LANGUAGES CXX)",
         "set(CMAKE_CXX_STANDARD 17)", "set(CMAKE_CXX_STANDARD_REQUIRED ON)",
         "set(CMAKE_POSITION_INDEPENDENT_CODE ON)",
+        # Several mutant modules are loaded into one process: with default visibility an
+        # inline variable (the constexpr transition table kRows) is a GNU-unique symbol,
+        # bound process-wide to the FIRST module loaded, so a later mutant would run the
+        # first one's table (and guards).  Hidden symbols bind within their own module.
+        "set(CMAKE_CXX_VISIBILITY_PRESET hidden)", "set(CMAKE_VISIBILITY_INLINES_HIDDEN ON)",
+        "add_compile_options(-fno-gnu-unique)",
         "find_package(Eigen3 3.3 REQUIRED NO_MODULE)",
         "find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)",
         "find_package(pybind11 CONFIG REQUIRED)",

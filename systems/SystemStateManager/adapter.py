@@ -19,7 +19,9 @@ interface, docs/adding-a-system.md walks through writing one).
 * Input-complete alphabet: from each state, every value of each input dimension with
   the others held at the state's last inputs (every channel pair, every selector
   contact pattern, every enabling pair, concrete velocities just below / at / just
-  above the zero and T1 thresholds, NaN, and each free signal).
+  above the zero and T1 thresholds, NaN, and each free signal); and, with the queue
+  empty, a JOG_START at each bound of its argument check and of the T1 clamp
+  (`jog_probes`, outside the cfg's JogCommands) followed by one cycle.
 """
 
 from __future__ import annotations
@@ -92,6 +94,7 @@ class SystemStateManagerAdapter(Adapter):
         self.cfg = self.config()
         self.queue_capacity = int(self.constants["QueueCapacity"])
         self.speeds = speed_vectors(core, self.cfg)
+        self.jog_probes = jog_probes(int(self.constants["T1SpeedLimit"]))
         self._raw_cache: dict[Value, dict[str, Any]] = {}
 
     # ------------------------------------------------------------ C++ calls
@@ -165,18 +168,17 @@ class SystemStateManagerAdapter(Adapter):
         for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok", "operator_link_ok"):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
+        if not state[self.index["queue"]]:
+            hold = Event.of(CYCLE, {"in": FnValue(cur)})
+            for label, cmd in self.jog_probes:
+                submit = Event.of(SUBMIT, {"c": FnValue(cmd)})
+                probes.append(Probe(hold, [self.plan_call(submit), base], f"submit {label}, then hold the inputs",
+                                    (submit,)))
         return probes
 
     def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
         """Run each probe on a fresh C++ manager brought to the state by `prefix`."""
-        calls: list[Any] = []
-        for ev in prefix:
-            rec = ev.record()
-            if ev.action == CYCLE:
-                calls.append(self.raw(rec, ev.param()))
-            else:
-                calls.append((rec["kind"], rec["axis"], rec["direction"], rec["speed_mm_s"]))
-        out = self.core.probe(self.cfg, calls, [p.concrete for p in probes])
+        out = self.core.probe(self.cfg, [self.plan_call(ev) for ev in prefix], [p.concrete for p in probes])
         return [(obs, frozenset(r for r in (rows["cycle"], rows["command"]) if r is not None))
                 for obs, rows in out]
 
@@ -261,6 +263,19 @@ class SystemStateManagerAdapter(Adapter):
         return flagship_rules(int(self.constants["DiscrepancyCycles"]), self.queue_capacity,
                               sorted({int(self.constants[k]) + d for k in ("ArmingTimeoutCycles", "MaxStopCycles")
                                       for d in (-1, 0, 1, 2)} - {0}))
+
+
+def jog_probes(t1_limit: int) -> list[tuple[str, dict[str, Value]]]:
+    """JOG_START commands at each bound of K26's argument check (axis 1..6, direction
+    -1/1, speed > 0) and of the T1 clamp, beyond the cfg's JogCommands: the
+    input-complete pass submits each (queue empty) and then runs one cycle."""
+    def jog(axis: int, direction: int, speed: int) -> dict[str, Value]:
+        return {"kind": "JOG_START", "axis": axis, "direction": direction, "speed_mm_s": speed}
+    return [("JOG_START speed 0", jog(1, 1, 0)), ("JOG_START speed 1 mm/s", jog(1, 1, 1)),
+            ("JOG_START axis 0", jog(0, 1, 100)), ("JOG_START axis 6", jog(6, -1, 100)),
+            ("JOG_START direction 0", jog(1, 0, 100)),
+            ("JOG_START exactly at the T1 limit", jog(1, 1, t1_limit)),
+            ("JOG_START just above the T1 limit", jog(1, -1, t1_limit + 1))]
 
 
 def tcp_speed_per_rad_s(dh: list[tuple[float, ...]], q: list[float], joint: int) -> float:

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <iterator>
 #include <set>
 #include <string>
 #include <utility>
@@ -39,6 +40,22 @@ TEST(RSM17_PlcopenAxis, StateNamesAreTheEnumeratorNames) {
       {S::ErrorStop, "ErrorStop"},
   };
   for (const auto& [s, n] : names) EXPECT_EQ(safestate::to_string(s), n);
+}
+
+// The function blocks carry their PLCopen Part 1 names (rejections and the diagram name
+// them); found missing by the C++ mutation score (an emptied name survived).
+TEST(RSM17_PlcopenAxis, FunctionBlockNamesAreThePlcopenNames) {
+  const std::pair<AxisEvent, const char*> names[] = {
+      {AxisEvent::PowerOn, "MC_Power(on)"},         {AxisEvent::PowerOff, "MC_Power(off)"},
+      {AxisEvent::Home, "MC_Home"},                 {AxisEvent::MoveAbsolute, "MC_MoveAbsolute"},
+      {AxisEvent::MoveRelative, "MC_MoveRelative"}, {AxisEvent::Halt, "MC_Halt"},
+      {AxisEvent::MoveVelocity, "MC_MoveVelocity"}, {AxisEvent::GearIn, "MC_GearIn"},
+      {AxisEvent::CamIn, "MC_CamIn"},               {AxisEvent::Stop, "MC_Stop"},
+      {AxisEvent::Done, "Done"},                    {AxisEvent::AxisError, "AxisError"},
+      {AxisEvent::Reset, "MC_Reset"},
+  };
+  static_assert(std::size(names) == safestate::kAxisEventCount);
+  for (const auto& [e, n] : names) EXPECT_EQ(safestate::to_string(e), n);
 }
 
 // The transitions of the PLCopen Part 1 single-axis diagram, written out independently of

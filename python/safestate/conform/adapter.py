@@ -50,11 +50,14 @@ class Applied:
 @dataclass(frozen=True)
 class Probe:
     """One input vector of the input-complete pass: the model event it stands for and
-    the concrete C++ input it is sent as (several probes may share an event)."""
+    the concrete C++ input it is sent as (several probes may share an event).  With
+    `before`, a short sequence: those model events first (e.g. a command outside the
+    cfg's alphabet), then `event`; `concrete` then stands for all the steps."""
 
     event: Event
     concrete: Any
     label: str
+    before: tuple[Event, ...] = ()
 
 
 def plain(v: Value) -> Any:

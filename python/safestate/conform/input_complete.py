@@ -8,7 +8,9 @@ Here each state reached along the BFS tree is probed with `Adapter.input_alphabe
 pair, concrete velocities around each threshold, each free signal), each probe on a
 fresh C++ object brought to the state by the tree path (`Adapter.probe_batch`, one
 binding call per state).  The model must accept every probe (exactly one successor);
-the C++ must then observe the model's projection and fire the model's rows.
+the C++ must then observe the model's projection and fire the model's rows.  A probe
+with `before` events is a short sequence (the flagship: a command outside the cfg's
+alphabet, then one cycle): the model takes each step, the C++ is compared after the last.
 """
 
 from __future__ import annotations
@@ -64,25 +66,31 @@ def run_input_complete(h: Harness, g: StateGraph, stride: int = 1,
         state = ct.steps[-1].state if ct.steps else ct.initial
         prefix = [st.event for st in ct.steps]
         probes = adapter.input_alphabet(state)
-        expected: dict[Event, tuple[dict[str, object], frozenset[str] | None]] = {}
+        expected: dict[tuple[Event, ...], tuple[dict[str, object], frozenset[str] | None]] = {}
         for p in probes:
-            if p.event in expected:
+            key = p.before + (p.event,)
+            if key in expected:
                 continue
             try:
-                succ = stepper.edge_successor(state, p.event)
+                at = state
+                for ev in p.before:
+                    at = stepper.edge_successor(at, ev)
+                succ = stepper.edge_successor(at, p.event)
             except ModelStepError as e:
                 res.mismatch = f"the model does not accept probe '{p.label}' at node {node}: {e}"
                 return _done(res, start)
-            expected[p.event] = (adapter.project(succ), adapter.model_rows(state, p.event))
-            res.model_steps += 1
+            expected[key] = (adapter.project(succ), adapter.model_rows(at, p.event))
+            res.model_steps += len(key)
         for p, (cpp, fired) in zip(probes, adapter.probe_batch(prefix, probes)):
             res.probes += 1
-            model, rows = expected[p.event]
+            key = p.before + (p.event,)
+            model, rows = expected[key]
             note = "" if rows is None or rows == fired else \
                 f"rows: model fires {sorted(rows)}, C++ fired {sorted(fired)}"
             if note or differing(model, cpp):
                 where = f"after the {len(prefix)}-step tree path to node {node} ({', '.join(map(str, prefix)) or 'initial'})"
-                res.mismatch = report(len(prefix) + 1, f"probe '{p.label}' = {p.event}", model, cpp,
+                what = ", then ".join(map(str, p.before + (p.event,)))
+                res.mismatch = report(len(prefix) + len(key), f"probe '{p.label}' = {what}", model, cpp,
                                       note) + f"\n  {where}"
                 res.states += 1
                 return _done(res, start)

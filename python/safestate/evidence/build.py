@@ -24,6 +24,9 @@ from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, ru
 REQUIREMENTS_ENV = "SAFESTATE_REQUIREMENTS"
 CACHE_ENV = "SAFESTATE_EVIDENCE_CACHE"
 MUTATION_SCORE = Path("build") / "cpp-mutation" / "score.json"
+# The last measured score, committed (conform/cpp_mutants/README.md), when no run of the
+# main job has written MUTATION_SCORE.
+STORED_MUTATION_SCORE = Path("conform") / "cpp_mutants" / "score.json"
 COVERAGE_DIR = Path("build") / "coverage"
 
 
@@ -327,15 +330,17 @@ def _mutant_html(out: Path, s: System, mr: Any, control: str) -> str:
 
 
 def _mutation_score(out: Path, root: Path, extras: list[tuple[str, str]]) -> None:
-    src = root / MUTATION_SCORE
-    if not src.is_file():
+    src = next((p for p in (root / MUTATION_SCORE, root / STORED_MUTATION_SCORE) if p.is_file()), None)
+    if src is None:
         extras.append(("C++ mutation score: not measured yet (conform/cpp_mutants/score.py)", "index.html#artefacts"))
         return
     (out / "mutation").mkdir(exist_ok=True)
     shutil.copyfile(src, out / "mutation" / "score.json")
     d = json.loads(src.read_text(encoding="utf-8"))
-    extras.append((f"C++ mutation score: {d.get('score_percent')}% ({d.get('killed')}/{d.get('sampled')} sampled "
-                   f"mutants killed, of {d.get('generated')} generated; {d.get('date')})", "mutation/score.json"))
+    lo, hi = d.get("confidence_95_percent") or ("?", "?")
+    extras.append((f"C++ mutation score: {d.get('score_percent')}% (95% interval {lo}-{hi}%; {d.get('killed')} killed "
+                   f"of {d.get('evaluated', '?')} evaluated, {d.get('stillborn')} stillborn, {d.get('sampled')} "
+                   f"sampled of {d.get('generated')} generated; {d.get('date')})", "mutation/score.json"))
     surv = "".join(f"<tr><td><code>{escape(x.get('file', ''))}:{x.get('line')}</code></td>"
                    f"<td><code>{escape(x.get('original', ''))}</code></td><td><code>{escape(x.get('mutant', ''))}</code></td>"
                    f"<td>{escape(x.get('note', ''))}</td></tr>" for x in d.get("survivors", []))
