@@ -28,7 +28,7 @@ def differences(ours: dict, tlc: TlcSummary, states_comparable: bool = True) -> 
     mine, theirs = ours.get("trace"), tlc.trace
     if theirs is not None and (mine is None or len(mine) != len(theirs)):
         diffs.append("trace_length")
-    elif theirs is not None and states_comparable and [_words(x) for x in mine] != [_words(x) for x in theirs]:
+    elif theirs is not None and mine is not None and states_comparable and [_words(x) for x in mine] != [_words(x) for x in theirs]:
         diffs.append("trace_states")
     return diffs
 

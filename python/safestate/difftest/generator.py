@@ -245,7 +245,7 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     Grammar 2 adds branching assignments (``x' = a \\/ x' = b``), \\E over strings
     and \\E with two binders; grammar 3 the constructs listed in `grammar3.py`.
     Specs of a lower grammar are unchanged by a higher one."""
-    from .grammar3 import NEST, PSET, RECURSIVE_SUM, TYPES3, Gen3
+    from .grammar3 import PSET, RECURSIVE_SUM, TYPES3, Gen3
     rng = random.Random(f"{seed}:{index}")
     g = Gen3(rng, grammar) if grammar >= 3 else Gen(rng, grammar)
     g3 = g if isinstance(g, Gen3) else None

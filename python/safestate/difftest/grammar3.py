@@ -44,12 +44,12 @@ class Gen3(Gen):
         base = self.e_nest(d - 1)
         i = self.r.randint(1, 2)
         self.use("except_nested_path")
-        k = self.r.randint(0, 3)
-        if k == 0:
+        form = self.r.randint(0, 3)
+        if form == 0:
             return f"[{base} EXCEPT !.h[{i}] = (@ + 1) % 3]"
-        if k == 1:
+        if form == 1:
             return f"[{base} EXCEPT !.s = (@ \\cup {{({self.e_int(d - 1)}) % {MOD}}})]"
-        if k == 2:
+        if form == 2:
             return f"[{base} EXCEPT !.s = @ \\ {{{self.r.randint(0, 3)}}}, !.h[{i}] = ({self.e_int(d - 1)}) % 3]"
         return f"[{base} EXCEPT !.h = [@ EXCEPT ![{i}] = 2 - @]]"
 
