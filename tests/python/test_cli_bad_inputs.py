@@ -53,6 +53,8 @@ def cases(tmp: Path) -> list[tuple[str, list[str], dict[str, str], str]]:
     bad_tla = write(tmp, "Broken.tla", "---- MODULE Broken ----\nVARIABLE x\nInit == x = \nNext == x' = x\n====\n")
     write(tmp, "Broken.cfg", "INIT Init\nNEXT Next\n")
     a_file = write(tmp, "plainfile", "not a directory")
+    good_tla = write(tmp, "Good.tla", "---- MODULE Good ----\nVARIABLE x\nInit == x = 0\nNext == x' = x\n====\n")
+    write(tmp, "Good.cfg", "INIT Init\nNEXT Next\n")
     bad_plan = write(tmp, "plan.toml", "engine = [unclosed\n")
     return [
         ("unknown system", ["conform", "NoSuchSystem"], {}, "not a registered system"),
@@ -75,7 +77,7 @@ def cases(tmp: Path) -> list[tuple[str, list[str], dict[str, str], str]]:
         ("adapter class missing", ["conform", "Bad"], {"SAFESTATE_SYSTEMS": "noclass"}, "no class Adapter"),
         ("prove: missing model", ["prove", str(tmp / "NoSuch.tla")], {}, "NoSuch.tla"),
         ("prove: syntax error in the model", ["prove", bad_tla], {}, "Broken.tla:"),
-        ("prove: malformed proof plan", ["prove", bad_tla, "--proofs", bad_plan], {}, "plan.toml"),
+        ("prove: malformed proof plan", ["prove", good_tla, "--proofs", bad_plan], {}, "plan.toml"),
     ]
 
 

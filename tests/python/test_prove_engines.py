@@ -89,8 +89,12 @@ def test_untyped_variable_is_untracked_until_read(capsys) -> None:
     assert code == 2 and "Untyped.tla:8:10: unsupported in proofs: a variable that TypeOK does not type" in err
 
 
-def test_empty_sequence_branch_is_refused_with_its_position(capsys) -> None:
+def test_empty_sequence_branch_is_given_the_other_branchs_shape(capsys) -> None:
     code, rep, err = prove(capsys, spec("EmptySeqBranch.tla"), "--proofs", "/dev/null", "--invariant", "ShortOut")
-    assert code == 2 and rep is None
-    assert "EmptySeqBranch.tla:9:8: unsupported in proofs: cannot widen an empty sequence literal" in err
+    assert code == 0 and rep is not None, err
+    assert by_invariant(rep)["ShortOut"]["status"] == "proved"
+    code, rep, err = prove(capsys, spec("EmptySeqBranch.tla"), "--proofs", "/dev/null", "--invariant", "OneOut")
+    assert code == 12 and rep is not None, err
+    r = by_invariant(rep)["OneOut"]
+    assert r["status"] == "violated" and len(r["trace"]["states"]) == 1  # <<>> at x = 0
     assert "Traceback" not in err
