@@ -21,17 +21,16 @@ MAX_BMC_LENGTH = 6
 # - HydraulicPress: its translation needs its proof plan's typed call log and takes
 #   minutes (docs/prove.md); without the plan it is refused ("DOMAIN of a value").
 BMC_LEFT_OUT_SYSTEMS = {"HydraulicPress"}
-# A KNOWN SOUNDNESS GAP, kept visible: a set-valued variable is represented only inside
-# its TypeOK domain (one Boolean per element), so a step that assigns an element
-# outside it disappears from the translation instead of violating TypeOK.  BMC misses
-# this mutant (TLC: TypeOK violated in 2 states) and k-induction would call TypeOK
-# proved.  Strict xfail: the test turns red when the gap is closed, so that the
-# marker is removed.
+# A set-valued variable is represented only inside its TypeOK domain (one Boolean per
+# element), so a step assigning an element outside it cannot be represented: the
+# k-induction engine reports it through the 'type' obligation of the assignment
+# (test_kinduction_reports_a_step_out_of_typeok); the BMC engine alone does not check
+# obligations yet and misses it.  Strict xfail: red when BMC learns it.
 TYPE_GAP = "FLAT_TypeOK_output_stage_energises_none"
 ENTRIES = [m for s in registry.load_all(Path(MODELS).parent / "systems") for m in mutants.of_system(s)
            if m.expect == "violated" and m.trace_length and m.trace_length <= MAX_BMC_LENGTH
            and s.name not in BMC_LEFT_OUT_SYSTEMS]
-PARAMS = [pytest.param(m, id=m.id, marks=pytest.mark.xfail(strict=True, reason="type-domain soundness gap"))
+PARAMS = [pytest.param(m, id=m.id, marks=pytest.mark.xfail(strict=True, reason="BMC does not check type obligations"))
           if m.name == TYPE_GAP else pytest.param(m, id=m.id) for m in ENTRIES]
 
 
@@ -65,3 +64,18 @@ def test_kinduction_never_proves_a_mutant(tmp_path: Path, capsys) -> None:
     r = by_invariant(rep)[entry.invariant]
     assert r["status"] == "violated" and len(r["trace"]["states"]) == n and code == 12
 
+
+
+def test_kinduction_reports_a_step_out_of_typeok(tmp_path: Path, capsys) -> None:
+    """A step that leaves TypeOK's domain (the flat press drives the placeholder output
+    "none") must not vanish from the translation and leave TypeOK 'proved': its type
+    obligation fails on the initial state, and TypeOK is reported violated (exit 12)."""
+    entry = next(e for e in ENTRIES if e.name == TYPE_GAP)
+    tla, cfg = _materialise(entry, tmp_path)
+    code, rep, err = prove(capsys, tla, "--config", cfg, "--proofs", "/dev/null", "--cfg-constants",
+                           "--invariant", "TypeOK")
+    assert rep is not None, err
+    r = by_invariant(rep)["TypeOK"]
+    assert r["status"] == "violated" and code == 12
+    assert "the value given to outputs is in its TypeOK domain" in r["undefined"]
+    assert len(r["trace"]["states"]) == int(entry.trace_length or 0) - 1  # the state after it is not shown

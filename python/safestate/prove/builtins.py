@@ -349,6 +349,7 @@ def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
     loc = e.loc
     if op == "=":
         _oblige_capacity(tr, a, b, loc)
+        _oblige_type(tr, a, b, loc)
         return eq(a, b, loc)
     if op in ("/=", "#"):
         return z3.Not(eq(a, b, loc))
@@ -356,6 +357,7 @@ def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
     if op in (":>", "@@"):
         return _tlc_fn(tr, op, a, b, loc)
     if op == "\\in":
+        _oblige_type_of_choice(tr, a, b, loc)
         return need_set(b, "\\in", loc).member(a, loc)
     if op == "\\notin":
         return z3.Not(need_set(b, "\\notin", loc).member(a, loc))
@@ -449,6 +451,31 @@ def _test_of(tr: "Translator", test: A.Expr, ctx: "Ctx", loc: Loc) -> Callable[[
             from .translate import Ctx
             return lambda x: tr.boolean(sym.defn.body, Ctx(sym.scope, {sym.defn.params[0].name: x}, ctx.primed))
     raise ProveError("the test of SelectSeq must be a LAMBDA or a one-argument operator", loc)
+
+
+def _oblige_type(tr: "Translator", a: Any, b: Any, loc: Loc) -> None:
+    """x = e in Init, x' = e in Next, x structured: e must lie in x's TypeOK domain, the
+    only values the translation can give x; outside it the step would disappear, and a
+    TypeOK violation with it (reported as a failing 'type' obligation)."""
+    if not tr.type_targets:
+        return
+    for var, other in ((a, b), (b, a)):
+        hit = tr.type_targets.get(id(var))
+        if hit is not None and tr.type_targets.get(id(other)) is None:
+            name, domain = hit
+            tr.obl.add("type", loc, f"the value given to {name} is in its {tr.type_invariant} domain",
+                       domain.member(other, loc))
+
+
+def _oblige_type_of_choice(tr: "Translator", a: Any, b: Any, loc: Loc) -> None:
+    """x' \\in S (x \\in S in Init), x structured, S enumerable: every element of S must lie
+    in x's TypeOK domain (a non-enumerable S is bounded by the domain itself)."""
+    hit = tr.type_targets.get(id(a)) if tr.type_targets else None
+    if hit is None or not isinstance(b, EnumSet):
+        return
+    name, domain = hit
+    tr.obl.add("type", loc, f"every value {name} may take is in its {tr.type_invariant} domain",
+               z3.And([z3.Implies(g, domain.member(x, loc)) for g, x in b.items]))
 
 
 def _oblige_capacity(tr: "Translator", a: Any, b: Any, loc: Loc) -> None:

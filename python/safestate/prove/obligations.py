@@ -25,7 +25,7 @@ Guard = Union[z3.BoolRef, Callable[[], z3.BoolRef]]  # a callable: built only if
 
 @dataclass(eq=False)
 class Obligation:
-    kind: str          # domain | field | choose | division | sequence | case | capacity
+    kind: str          # domain | field | choose | division | sequence | case | capacity | type
     loc: Loc | None
     what: str          # what must hold, in words
     site: z3.BoolRef   # the condition at the site itself

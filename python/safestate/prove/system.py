@@ -32,7 +32,7 @@ from .builtins import powerset
 from .obligations import Obligation, distinct
 from .sets import EnumSet, PredSet, SetV
 from .translate import Ctx, Translator
-from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, leaves
+from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, is_z3, leaves
 
 _TAG = [0]
 
@@ -322,7 +322,7 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
     tr._memo.clear()
 
     var_names = [v.name for v in var_syms]
-    cur, nxt, tracked, untracked, domain_parts = _variables(tr, scope, type_invariant, var_names, model_path)
+    cur, nxt, tracked, untracked, domain_parts, doms = _variables(tr, scope, type_invariant, var_names, model_path)
     if untracked:
         log(f"not typed by {type_invariant}, not tracked: {', '.join(untracked)}")
     tr.cur, tr.nxt = cur, nxt
@@ -334,12 +334,20 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
         init_name, next_name = _split_spec(scope, config.specification.name)
     tr.obl.take()  # ASSUMEs and TypeOK's sets: TLC evaluates them once, before Init (not obliged here)
     tr.assigning = True
+    tr.type_invariant = type_invariant
+    # A structured variable (set, function, record, sequence) is represented only inside
+    # its TypeOK domain, so a value assigned outside it would make the step (or initial
+    # state) disappear instead of violating TypeOK: such assignments are obliged to stay
+    # in the domain (builtins._oblige_type).  A scalar can hold any value of its sort.
+    tr.type_targets = {id(cur[v]): (v, doms[v]) for v in tracked if not is_z3(cur[v])}
     init = tr.act(_def_body(scope, init_name, model_path), ctx)
     init_aux, tr.skolems = tr.skolems, []
     init_obligations = tr.obl.take()
+    tr.type_targets = {id(nxt[v]): (v, doms[v]) for v in tracked if not is_z3(nxt[v])}
     trans = tr.act(_def_body(scope, next_name, model_path), ctx)
     trans_aux, tr.skolems = tr.skolems, []
     trans_obligations = tr.obl.take()
+    tr.type_targets = {}
     tr.assigning = False
     sys_ = System(module, scope, strings, tr, tracked, untracked, cur, nxt, params,
                   report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux,
@@ -457,8 +465,8 @@ def _constant_report(declared: dict[str, Any], params: dict[str, Any], constants
     return report
 
 
-def _variables(tr: Translator, scope: Any, type_invariant: str, var_names: list[str],
-               model_path: str) -> tuple[dict[str, Any], dict[str, Any], list[str], list[str], list[Any]]:
+def _variables(tr: Translator, scope: Any, type_invariant: str, var_names: list[str], model_path: str
+               ) -> tuple[dict[str, Any], dict[str, Any], list[str], list[str], list[Any], dict[str, SetV]]:
     """Current and next-state z3 variables, typed by the domains TypeOK gives; the
     variables TypeOK does not type are not tracked."""
     tsym = scope.lookup(type_invariant)
@@ -495,7 +503,7 @@ def _variables(tr: Translator, scope: Any, type_invariant: str, var_names: list[
         nxt[v] = _fresh_var(tr, s, v + "'", bounds.get(v), c)
         domain_parts.append(s.member(cur[v], c.loc))
     tracked = [v for v in var_names if v not in untracked]
-    return cur, nxt, tracked, untracked, domain_parts
+    return cur, nxt, tracked, untracked, domain_parts, {v: domains[v][0] for v in tracked}
 
 
 def _uf_subset(name: str, s: PredSet, has: z3.FuncDeclRef) -> PredSet:

@@ -70,6 +70,9 @@ class Translator:
         self.skolems: list[z3.ExprRef] = []
         self.obl = Obligations()        # well-definedness obligations of what is translated
         self.assigning = False          # translating Init or Next (x = e may assign x)
+        # while assigning: id of each structured variable value -> (name, TypeOK domain)
+        self.type_targets: dict[int, tuple[str, Any]] = {}
+        self.type_invariant = "TypeOK"
         self._memo: dict[tuple, tuple[Any, Any, list[Obligation]]] = {}
         self._fresh = 0
 

@@ -121,7 +121,10 @@ def first_on_trace(sys: System, m: z3.ModelRef, k: int, parts: Parts) -> Undefin
             for o in obligations:
                 if fails(sys.at(o.cond, i)):
                     return Undefined(o, name, trace(i + 1), params=sys.param_values(m))
-        if i < k:
+        # Next from the last state too: reach() asks for a failing step out of state k
+        # without adding that step (a step the translation cannot represent would be
+        # excluded by it, e.g. a value outside TypeOK's domain)
+        if i <= k:
             for o in parts.trans:
                 if fails(sys.trans_at(i, o.cond)):
                     return Undefined(o, "Next", trace(i + 1), params=sys.param_values(m))
