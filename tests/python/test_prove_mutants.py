@@ -22,16 +22,15 @@ MAX_BMC_LENGTH = 6
 #   minutes (docs/prove.md); without the plan it is refused ("DOMAIN of a value").
 BMC_LEFT_OUT_SYSTEMS = {"HydraulicPress"}
 # A set-valued variable is represented only inside its TypeOK domain (one Boolean per
-# element), so a step assigning an element outside it cannot be represented: the
-# k-induction engine reports it through the 'type' obligation of the assignment
-# (test_kinduction_reports_a_step_out_of_typeok); the BMC engine alone does not check
-# obligations yet and misses it.  Strict xfail: red when BMC learns it.
-TYPE_GAP = "FLAT_TypeOK_output_stage_energises_none"
+# element), so a step assigning an element outside it cannot be represented: both
+# engines report it through the 'type' obligation of the assignment, as a TypeOK
+# violation whose trace ends in the state before that step (one state shorter than
+# TLC's, whose last state is outside the representation).
+TYPE_STEP = "FLAT_TypeOK_output_stage_energises_none"
 ENTRIES = [m for s in registry.load_all(Path(MODELS).parent / "systems") for m in mutants.of_system(s)
            if m.expect == "violated" and m.trace_length and m.trace_length <= MAX_BMC_LENGTH
            and s.name not in BMC_LEFT_OUT_SYSTEMS]
-PARAMS = [pytest.param(m, id=m.id, marks=pytest.mark.xfail(strict=True, reason="BMC does not check type obligations"))
-          if m.name == TYPE_GAP else pytest.param(m, id=m.id) for m in ENTRIES]
+
 
 
 def _materialise(m: mutants.Mutant, tmp_path: Path) -> tuple[str, str]:
@@ -39,7 +38,7 @@ def _materialise(m: mutants.Mutant, tmp_path: Path) -> tuple[str, str]:
     return str(tla), os.path.splitext(str(tla))[0] + ".cfg"
 
 
-@pytest.mark.parametrize("entry", PARAMS)
+@pytest.mark.parametrize("entry", ENTRIES, ids=[m.id for m in ENTRIES])
 def test_bmc_agrees_with_tlc(entry: mutants.Mutant, tmp_path: Path, capsys) -> None:
     tla, cfg = _materialise(entry, tmp_path)
     n = int(entry.trace_length or 0)
@@ -49,7 +48,7 @@ def test_bmc_agrees_with_tlc(entry: mutants.Mutant, tmp_path: Path, capsys) -> N
     assert rep is not None, err
     r = by_invariant(rep)[entry.invariant]
     assert r["status"] == "violated", f"{entry.id}: BMC found no violation of {entry.invariant} in {n} states"
-    assert len(r["trace"]["states"]) == n
+    assert len(r["trace"]["states"]) == (n - 1 if entry.name == TYPE_STEP else n)
     assert code == 12
 
 
@@ -70,7 +69,7 @@ def test_kinduction_reports_a_step_out_of_typeok(tmp_path: Path, capsys) -> None
     """A step that leaves TypeOK's domain (the flat press drives the placeholder output
     "none") must not vanish from the translation and leave TypeOK 'proved': its type
     obligation fails on the initial state, and TypeOK is reported violated (exit 12)."""
-    entry = next(e for e in ENTRIES if e.name == TYPE_GAP)
+    entry = next(e for e in ENTRIES if e.name == TYPE_STEP)
     tla, cfg = _materialise(entry, tmp_path)
     code, rep, err = prove(capsys, tla, "--config", cfg, "--proofs", "/dev/null", "--cfg-constants",
                            "--invariant", "TypeOK")

@@ -105,9 +105,12 @@ def _failing(sys: System, s: z3.Solver, tagged: list[tuple[Obligation, str]]) ->
     return found
 
 
-def first_on_trace(sys: System, m: z3.ModelRef, k: int, parts: Parts) -> Undefined | None:
+def first_on_trace(sys: System, m: z3.ModelRef, k: int, parts: Parts, last_step: bool = False) -> Undefined | None:
     """The first ill-defined evaluation along the trace of model `m` (steps 0..k of an
-    unrolling), in TLC's order: Init, the predicates in state 0, Next from state 0, ..."""
+    unrolling), in TLC's order: Init, the predicates in state 0, Next from state 0, ...
+    With `last_step`, also Next out of state k (reach() asks for such a step without
+    adding it: a step the translation cannot represent, e.g. a value outside TypeOK's
+    domain, would be excluded by it); a counterexample ending in state k stops there."""
     def fails(f: z3.BoolRef) -> bool:
         return z3.is_false(m.eval(f, model_completion=True))
 
@@ -121,10 +124,7 @@ def first_on_trace(sys: System, m: z3.ModelRef, k: int, parts: Parts) -> Undefin
             for o in obligations:
                 if fails(sys.at(o.cond, i)):
                     return Undefined(o, name, trace(i + 1), params=sys.param_values(m))
-        # Next from the last state too: reach() asks for a failing step out of state k
-        # without adding that step (a step the translation cannot represent would be
-        # excluded by it, e.g. a value outside TypeOK's domain)
-        if i <= k:
+        if i < k or last_step:
             for o in parts.trans:
                 if fails(sys.trans_at(i, o.cond)):
                     return Undefined(o, "Next", trace(i + 1), params=sys.param_values(m))
@@ -147,7 +147,7 @@ def reach(sys: System, parts: Parts, depth: int, timeout_s: float) -> Undefined 
             s.push()
             s.add(z3.Not(z3.And(here)))
             if s.check() == z3.sat:
-                found = first_on_trace(sys, s.model(), k, parts)
+                found = first_on_trace(sys, s.model(), k, parts, last_step=True)
                 s.pop()
                 if found is not None:
                     return found
