@@ -19,11 +19,21 @@ import pytest
 
 from conftest import REPO, run_safestate
 from safestate import browser
-from safestate.evidence.build import CACHE_ENV, find_requirements
+from safestate.evidence.build import CACHE_ENV, REQUIREMENTS_COPY, find_requirements, shared_requirements
 from safestate.evidence.sources import read_requirements
 
 REQUIREMENTS = find_requirements(REPO)
-pytestmark = pytest.mark.skipif(REQUIREMENTS is None, reason="REQUIREMENTS.md (../shared/) not found")
+
+
+def test_the_repositorys_requirements_copy_is_the_maintainers_file() -> None:
+    """The package reads ../shared/REQUIREMENTS.md where it exists, else the repository's
+    copy (a clean clone elsewhere, CI): the two must not drift apart."""
+    copy = REPO / REQUIREMENTS_COPY
+    assert copy.is_file() and REQUIREMENTS is not None
+    shared = shared_requirements(REPO)
+    if shared is None:
+        pytest.skip("../shared/REQUIREMENTS.md not here (a clone elsewhere): the copy is what is read")
+    assert copy.read_bytes() == shared.read_bytes(), f"{copy} differs from {shared}: copy the maintainers' file"
 
 
 @pytest.fixture(scope="module")

@@ -58,18 +58,34 @@ def cache_dir(root: Path) -> Path:
     return Path(os.environ.get(CACHE_ENV) or root / "build" / "evidence-cache")
 
 
-def find_requirements(root: Path) -> Path | None:
-    """REQUIREMENTS.md: $SAFESTATE_REQUIREMENTS, else ../shared/REQUIREMENTS.md of the
-    repository or of a folder above it (a worktree sits deeper than the main clone)."""
-    import os
-    env = os.environ.get(REQUIREMENTS_ENV)
-    if env:
-        return Path(env)
+# The repository's copy of the maintainers' REQUIREMENTS.md, so that a clone anywhere
+# (CI's clean clone) builds and tests the package; tests/python/test_evidence.py checks
+# it is identical to ../shared/REQUIREMENTS.md wherever that exists.
+REQUIREMENTS_COPY = Path("docs") / "requirements" / "REQUIREMENTS.md"
+
+
+def shared_requirements(root: Path) -> Path | None:
+    """../shared/REQUIREMENTS.md of the repository or of a folder above it (a worktree
+    sits deeper than the main clone)."""
     for d in (root, *root.parents):
         p = d / "shared" / "REQUIREMENTS.md"
         if p.is_file():
             return p
     return None
+
+
+def find_requirements(root: Path) -> Path | None:
+    """REQUIREMENTS.md: $SAFESTATE_REQUIREMENTS, else ../shared/REQUIREMENTS.md, else the
+    repository's copy (docs/requirements/)."""
+    import os
+    env = os.environ.get(REQUIREMENTS_ENV)
+    if env:
+        return Path(env)
+    shared = shared_requirements(root)
+    if shared is not None:
+        return shared
+    copy = root / REQUIREMENTS_COPY
+    return copy if copy.is_file() else None
 
 
 def select_systems(root: Path, names: list[str]) -> list[System]:

@@ -36,7 +36,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--reuse", action="store_true", help="reuse cached step results whose inputs are unchanged")
     p.add_argument("--system", action="append", default=[], metavar="NAME",
                    help="only this registered system (repeatable; default every system)")
-    p.add_argument("--requirements", metavar="FILE", help="REQUIREMENTS.md (default ../shared/REQUIREMENTS.md)")
+    p.add_argument("--requirements", metavar="FILE", help="REQUIREMENTS.md (default ../shared/, else docs/requirements/)")
     p.add_argument("--conform-args", default="--input-complete --seed 0",
                    help="arguments of each `safestate conform` run (default: %(default)s)")
     p.add_argument("--no-pytest", action="store_true", help="leave the pytest tests out (GoogleTest still runs)")
