@@ -69,11 +69,12 @@ def _type_step(sys: System, s: z3.Solver, obligations: list, i: int, results: di
                t0: float) -> None:
     """From a reached state i, a step whose assignment leaves TypeOK's domain: the type
     invariant is violated in the state after it (not shown: it is not representable)."""
+    conds = [sys.trans_at(i, o.cond) for o in obligations]  # one substitution each, queried and read back
     s.push()
-    s.add(z3.Not(z3.And([sys.trans_at(i, o.cond) for o in obligations])))
+    s.add(z3.Not(z3.And(conds)))
     if s.check() == z3.sat:
         m = s.model()
-        failing = next(o for o in obligations if z3.is_false(m.eval(sys.trans_at(i, o.cond), model_completion=True)))
+        failing = next(o for o, c in zip(obligations, conds) if z3.is_false(m.eval(c, model_completion=True)))
         name = sys.tr.type_invariant
         results[name] = Result(name, "violated", "bmc", i + 1, time.monotonic() - t0,
                                trace=[sys.state_values(m, j) for j in range(i + 1)], params=sys.param_values(m),
