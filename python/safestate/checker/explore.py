@@ -91,6 +91,23 @@ class _Stop(Exception):
     """Ends the search: a violation, a deadlock or an error was recorded."""
 
 
+def step_params(m: Model, state: tuple, leaf: int, want: tuple) -> dict:
+    """The parameters of the step `state` -> `want` by action `leaf`: the successors
+    are generated again up to that step only, so an action after it that fails to
+    evaluate (TLC never got there) cannot turn a violation into an error."""
+    found: list[dict] = []
+
+    def match(st: tuple, lf: int, L: list) -> None:
+        if lf == leaf and st == want:
+            found.append(m.leaf_params(lf, L))
+            raise _Found()
+    try:
+        m.run_next(state, match)
+    except _Found:
+        return found[0]
+    return {}
+
+
 def default_memory_limit_mb() -> int:
     try:
         with open("/proc/meminfo") as f:
@@ -187,21 +204,7 @@ class Explorer:
         return steps
 
     def _step_params(self, state: tuple, leaf: int, want: tuple) -> dict:
-        """The parameters of the step `state` -> `want` by action `leaf`: the successors
-        are generated again up to that step only, so an action after it that fails to
-        evaluate (TLC never got there) cannot turn a violation into an error."""
-        m = self.m
-        found: list[dict] = []
-
-        def match(st: tuple, lf: int, L: list) -> None:
-            if lf == leaf and st == want:
-                found.append(m.leaf_params(lf, L))
-                raise _Found()
-        try:
-            m.run_next(state, match)
-        except _Found:
-            return found[0]
-        return {}
+        return step_params(self.m, state, leaf, want)
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
