@@ -206,12 +206,14 @@ enum Op : int {
     CONST, VAR, PVAR, SLOT, LETREF, LET, NOT, NEG, AND, OR, IMPLIES, EQUIV, EQ, NEQ, LT, LE, GT, GE,
     ADD, SUB, MUL, DIV, MOD, RANGE, IN, NOTIN, CUP, CAP, DIFF, SUBSETEQ, IF, CASE, FORALL, EXISTS,
     SETENUM, SETFILTER, SETMAP, FNAPP, FNLIT, RECLIT, TUPLE, EXCEPT, AT, DOMAIN, LEN, HEAD, TAIL,
-    APPEND, CONCAT, SUBSEQ, CARD, IN_SD, BIND,
+    APPEND, CONCAT, SUBSEQ, CARD, IN_SD, BIND, RECSET,
     // set descriptors (membership only)
     SD_SET, SD_RANGE, SD_SEQ, SD_FN, SD_REC, SD_NAT, SD_INT, SD_STRING,
     // actions
     A_EMIT, A_FALSE, A_GUARD, A_OR, A_EXISTS, A_LET, A_ASSIGN, A_ASSIGN_IN, A_IF, A_CASE, A_IMPLIES,
     A_ALLASSIGNED, A_BIND,
+    // more set descriptors
+    SD_CUP, SD_CAP, SD_DIFF,
     OP_COUNT
 };
 
@@ -374,6 +376,9 @@ public:
             case SD_NAT: return Store::is_int(x) && Store::int_of(x) >= 0;
             case SD_INT: return Store::is_int(x);
             case SD_STRING: return st.kind(x) == K_STR;
+            case SD_CUP: return member_sd(x, sd->kids[0], c) || member_sd(x, sd->kids[1], c);
+            case SD_CAP: return member_sd(x, sd->kids[0], c) && member_sd(x, sd->kids[1], c);
+            case SD_DIFF: return member_sd(x, sd->kids[0], c) && !member_sd(x, sd->kids[1], c);
             case SD_SEQ: {
                 if (st.kind(x) != K_SEQ) return false;
                 for (uint32_t i = 0; i < st.len(x); ++i)
@@ -519,16 +524,31 @@ public:
                 for (Node* k : n->kids) el.push_back(eval(k, c));
                 return st.mk_set(el);
             }
-            case SETFILTER: case SETMAP: {
+            case SETFILTER: {
                 uint32_t s = set(n->kids[0], c);
                 std::vector<uint32_t> el;
                 for (uint32_t i = 0; i < st.len(s); ++i) {
                     uint32_t x = st.items(s)[i];
                     slots[size_t(n->ints[0])] = x;
-                    if (n->op == SETMAP) el.push_back(eval(n->kids[1], c));
-                    else if (boolean(n->kids[1], c, "set filter predicate")) el.push_back(x);
+                    if (boolean(n->kids[1], c, "set filter predicate")) el.push_back(x);
                 }
-                return n->op == SETMAP ? st.mk_set(el) : st.intern(K_SET, el.data(), uint32_t(el.size()));
+                return st.intern(K_SET, el.data(), uint32_t(el.size()));  // a subsequence: still sorted
+            }
+            case SETMAP: {
+                // ints: one slot per binder; kids: the binders' sets, then the expression.
+                size_t nb = n->ints.size();
+                std::vector<uint32_t> sets(nb), pos(nb, 0), el;
+                for (size_t b = 0; b < nb; ++b) {
+                    sets[b] = set(n->kids[b], c);
+                    if (st.len(sets[b]) == 0) return st.mk_set(el);
+                }
+                while (true) {
+                    for (size_t b = 0; b < nb; ++b) slots[size_t(n->ints[b])] = st.items(sets[b])[pos[b]];
+                    el.push_back(eval(n->kids[nb], c));
+                    size_t b = 0;
+                    while (b < nb && ++pos[b] == st.len(sets[b])) pos[b++] = 0;
+                    if (b == nb) return st.mk_set(el);
+                }
             }
             case FNAPP: return apply(eval(n->kids[0], c), eval(n->kids[1], c), n->loc);
             case FNLIT: {
@@ -598,6 +618,24 @@ public:
             }
             case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
             case BIND: bind(n, c); return eval(n->kids.back(), c);
+            case RECSET: {
+                // [a : S, b : T] as a finite set of records (ints: the field names).
+                size_t nf = n->ints.size();
+                std::vector<uint32_t> sets(nf), pos(nf, 0), el;
+                for (size_t f = 0; f < nf; ++f) {
+                    sets[f] = set(n->kids[f], c);
+                    if (st.len(sets[f]) == 0) return st.mk_set(el);
+                }
+                std::vector<std::pair<uint32_t, uint32_t>> kv(nf);
+                while (true) {
+                    for (size_t f = 0; f < nf; ++f) kv[f] = {uint32_t(n->ints[f]), st.items(sets[f])[pos[f]]};
+                    auto rec = kv;
+                    el.push_back(st.mk_fun(rec));
+                    size_t f = 0;
+                    while (f < nf && ++pos[f] == st.len(sets[f])) pos[f++] = 0;
+                    if (f == nf) return st.mk_set(el);
+                }
+            }
             default: fail("not an expression", n->loc);
         }
     }
@@ -703,7 +741,7 @@ public:
 
     // ------------------------------------------------------------ folding constants
     void fold(Node* n) {
-        if (n->op < NOT || n->op > IN_SD || n->op == AT) return;
+        if (n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) return;
         if (n->kids.empty() && n->op != SETENUM && n->op != TUPLE && n->op != RECLIT) return;
         for (Node* k : n->kids)
             if (k->op != CONST) return;
@@ -748,19 +786,27 @@ public:
     size_t nstates() const { return nvars ? arena.size() / size_t(nvars) : parent.size(); }
     int max_level() const { return int(level_start.size()); }
 
-    uint64_t state_hash(const uint32_t* x) const {
+    // With a VIEW the seen-set holds the view's value (one id per state), else the state.
+    Node* view = nullptr;
+    std::vector<uint32_t> view_keys;
+    uint32_t view_key = 0;  // of the state being looked up
+    const uint32_t* key_of(uint32_t idx) const {
+        return view ? &view_keys[idx] : arena.data() + size_t(idx) * size_t(nvars);
+    }
+    int key_len() const { return view ? 1 : nvars; }
+    uint64_t key_hash(const uint32_t* x) const {
         uint64_t h = 0x12345;
-        for (int i = 0; i < nvars; ++i) h = mix(h, x[i]);
+        for (int i = 0; i < key_len(); ++i) h = mix(h, x[i]);
         return h;
     }
     // Index of the state, or -1 after adding it to the seen-set (then the caller stores it).
     int64_t find_or_insert(const uint32_t* x) {
         if ((seen_count + 1) * 2 > seen.size()) grow_seen();
         size_t mask = seen.size() - 1;
-        size_t pos = state_hash(x) & mask;
+        size_t pos = key_hash(x) & mask;
         while (seen[pos] != kUnset) {
-            const uint32_t* y = arena.data() + size_t(seen[pos]) * size_t(nvars);
-            if (std::equal(x, x + nvars, y)) return seen[pos];
+            const uint32_t* y = key_of(seen[pos]);
+            if (std::equal(x, x + key_len(), y)) return seen[pos];
             pos = (pos + 1) & mask;
         }
         seen[pos] = uint32_t(nstates());
@@ -773,13 +819,14 @@ public:
         size_t mask = seen.size() - 1;
         for (uint32_t id : old) {
             if (id == kUnset) continue;
-            size_t pos = state_hash(arena.data() + size_t(id) * size_t(nvars)) & mask;
+            size_t pos = key_hash(key_of(id)) & mask;
             while (seen[pos] != kUnset) pos = (pos + 1) & mask;
             seen[pos] = id;
         }
     }
     void add(const uint32_t* x, int32_t par, int32_t lf, int lvl) {
         arena.insert(arena.end(), x, x + nvars);
+        if (view) view_keys.push_back(view_key);
         parent.push_back(par);
         leaf.push_back(lf);
         if (lvl > max_level()) level_start.push_back(uint32_t(nstates() - 1));
@@ -827,7 +874,8 @@ public:
         bool is_new = true;
         int64_t idx = -1;
         if (in_model) {
-            int64_t found = find_or_insert(c.t);
+            if (view) view_key = eval(view, sc);
+            int64_t found = find_or_insert(view ? &view_key : c.t);
             if (found < 0) {
                 idx = int64_t(nstates());
                 add(c.t, emit_kind ? int32_t(head) : -1, emit_kind ? lf : -1, emit_kind ? cur_level + 1 : 1);
@@ -938,6 +986,7 @@ PYBIND11_MODULE(_tla_native, m) {
             e.max_memory_mb = max_mb;
             e.progress = progress;
         })
+        .def("set_view", [](Engine& e, py::handle v) { e.view = e.build(v); })
         .def("run", &Engine::run)
         .def("state", &Engine::state)
         .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
@@ -956,6 +1005,6 @@ PYBIND11_MODULE(_tla_native, m) {
         .def_readonly("error_loc", &Engine::error_loc)
         .def_property_readonly("bytes", [](Engine& e) {
             return e.st.bytes() + e.arena.capacity() * 4 + e.parent.capacity() * 4 + e.leaf.capacity() * 4 +
-                   e.seen.capacity() * 4;
+                   e.seen.capacity() * 4 + e.view_keys.capacity() * 4;
         });
 }

@@ -48,6 +48,7 @@ class NativeRun:
         self.invariants = [tr.expr(A.Name(e.loc, e.name), TEnv(scope, {})) for e in cfg.invariants]
         self.constraints = [tr.expr(A.Name(e.loc, e.name), TEnv(scope, {})) for e in cfg.constraints]
         self.action_constraints = [tr.expr(A.Name(e.loc, e.name), TEnv(scope, {})) for e in cfg.action_constraints]
+        self.view = tr.expr(A.Name(cfg.view.loc, cfg.view.name), TEnv(scope, {})) if cfg.view else None
         self.init, self.next = init, next_
         self.nslots = tr.nslots
 
@@ -58,7 +59,7 @@ def _refuse_model(model: Model) -> None:
     loc = model.module_loc()
     if cfg.properties:
         raise unsupported(f"PROPERTY {cfg.properties[0].name} (temporal properties)", cfg.properties[0].loc)
-    for what, entry in (("VIEW", cfg.view), ("SYMMETRY", cfg.symmetry), ("POSTCONDITION", cfg.postcondition)):
+    for what, entry in (("SYMMETRY", cfg.symmetry), ("POSTCONDITION", cfg.postcondition)):
         if entry is not None:
             raise unsupported(what, entry.loc)
     if RUNTIME.used:
@@ -92,6 +93,8 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
                      f"{left} states left on queue.")
     if progress is not None:
         progress("Computing initial states...")
+    if run.view is not None:
+        eng.set_view(run.view)
     eng.configure(run.init, run.next, run.invariants, run.constraints, run.action_constraints,
                   model.check_deadlock, limit, report)
     eng.run()

@@ -282,6 +282,10 @@ class Translator:
         if isinstance(e, A.RecSet):
             keys = [self.bridge.engine.mk_str(f, string_rank(f)) for f, _ in e.fields]
             return self.node(Op.SD_REC, e.loc, keys, kids=tuple(self.set_test(s, env, depth + 1) for _, s in e.fields))
+        set_op = {"\\cup": Op.SD_CUP, "\\cap": Op.SD_CAP, "\\": Op.SD_DIFF}.get(e.op) \
+            if isinstance(e, A.Binary) and not isinstance(self.lookup(e.op, env), DefSym) else None
+        if set_op is not None:
+            return self.node(set_op, e.loc, kids=(self.set_test(e.lhs, env, depth + 1), self.set_test(e.rhs, env, depth + 1)))
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(self.lookup("..", env), BuiltinSym):
             return self.node(Op.SD_RANGE, e.loc, kids=(self.expr(e.lhs, env), self.expr(e.rhs, env)))
         if isinstance(e, (A.Name, A.Apply)):
@@ -397,6 +401,22 @@ class Translator:
         name, s = pairs[0]
         return slot, self.expr(s, env), replace(env, locals={**env.locals, name: SlotArg(slot, None)})
 
+    def x_RecSet(self, e: A.RecSet, env: TEnv) -> Node:
+        keys = [self.bridge.engine.mk_str(f, string_rank(f)) for f, _ in e.fields]
+        return self.node(Op.RECSET, e.loc, keys, kids=tuple(self.expr(s, env) for _, s in e.fields))
+
+    def x_Prefixed(self, e: A.Prefixed, env: TEnv) -> Node:
+        """``M!Op(args)`` of an ``M == INSTANCE ...`` without parameters."""
+        from ...tla.modules import InstanceSym
+        inst = self.lookup(e.path[0].name, env) if len(e.path) == 1 and not e.path[0].args else None
+        if not isinstance(inst, InstanceSym) or inst.inst.params or inst.let_locals:
+            raise unsupported("this instance reference M!Op", e.loc)
+        sym = inst.scope.lookup(e.name)
+        sym = self.c.sym_overrides.get(id(sym), sym)
+        if not isinstance(sym, DefSym):
+            raise unsupported(f"the instance operator {e.name}", e.loc)
+        return self.call_def(sym, e.args, env, e.loc)
+
     def x_SetEnum(self, e: A.SetEnum, env: TEnv) -> Node:
         return self.node(Op.SETENUM, e.loc, kids=tuple(self.expr(x, env) for x in e.elems))
 
@@ -405,10 +425,11 @@ class Translator:
         return self.node(Op.SETFILTER, e.loc, (slot,), kids=(s, self.expr(e.pred, env2)))
 
     def x_SetMap(self, e: A.SetMap, env: TEnv) -> Node:
-        if len(e.bounds) != 1:
-            raise unsupported("a set map over several bounds", e.loc)
-        slot, s, env2 = self._bind_one(e.bounds[0], env, e.loc)
-        return self.node(Op.SETMAP, e.loc, (slot,), kids=(s, self.expr(e.expr, env2)))
+        pairs = self.names_of(e.bounds, e.loc)
+        sets = tuple(self.expr(s, env) for _, s in pairs)
+        slots = [self.alloc() for _ in pairs]
+        env2 = replace(env, locals={**env.locals, **{n: SlotArg(sl, None) for (n, _), sl in zip(pairs, slots)}})
+        return self.node(Op.SETMAP, e.loc, slots, kids=sets + (self.expr(e.expr, env2),))
 
     def x_FnApp(self, e: A.FnApp, env: TEnv) -> Node:
         return self.node(Op.FNAPP, e.loc, kids=(self.expr(e.fn, env), self.fn_arg(e.args, env, e.loc)))
@@ -474,13 +495,22 @@ class Translator:
 
     def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
         pairs = self.names_of(e.bounds, e.loc)
-        sets = tuple(self.expr(s, env) for _, s in pairs)
+        sets = tuple(self.enumerated(s, env) for _, s in pairs)
         locals_ = dict(env.locals)
         slots = []
         for n, _ in pairs:
             slots.append(self.alloc())
             locals_[n] = SlotArg(slots[-1], None)
         return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(replace(env, locals=locals_)),))
+
+    def enumerated(self, e: A.Expr, env: TEnv) -> Node:
+        """A set whose elements the action enumerates, in TLC's order: the core's
+        sets are in TLC's sorted order, but the Python engine enumerates a record set
+        ``[a : S]`` (or a filter of one) in product order, so those are refused."""
+        n = self.expr(e, env)
+        if _product_ordered(n):
+            raise unsupported("enumerating a set of records [a : S] in an action", e.loc)
+        return n
 
     def action(self, e: A.Expr, env: TEnv, k: Node) -> Node:
         method = getattr(self, "a_" + type(e).__name__, None)
@@ -601,7 +631,7 @@ class Translator:
             return None
         if e.op == "=":
             return self.node(Op.A_ASSIGN, e.loc, (target,), kids=(self.expr(e.rhs, env),), k=k)
-        return self.node(Op.A_ASSIGN_IN, e.loc, (target,), kids=(self.expr(e.rhs, env), self.set_test(e.rhs, env, 0)),
+        return self.node(Op.A_ASSIGN_IN, e.loc, (target,), kids=(self.enumerated(e.rhs, env), self.set_test(e.rhs, env, 0)),
                          k=k)
 
     def target_var(self, lhs: A.Expr, env: TEnv, depth: int) -> int | None:
@@ -676,6 +706,22 @@ class Translator:
         if named is not None:
             return self.unchanged_vars(named[0], named[1], depth + 1)
         return None
+
+
+def _product_ordered(n: Node) -> bool:
+    """Can the set `n` be one the Python engine enumerates in product order?"""
+    op, kids = n[0], n[4]
+    if op == Op.RECSET:
+        return True
+    if op == Op.SETFILTER:
+        return _product_ordered(kids[0])
+    if op in (Op.LET, Op.LETREF, Op.BIND):
+        return _product_ordered(kids[-1])
+    if op == Op.IF:
+        return _product_ordered(kids[1]) or _product_ordered(kids[2])
+    if op == Op.CASE:
+        return any(_product_ordered(k) for i, k in enumerate(kids) if i % 2 == 1 or i == len(kids) - 1)
+    return False
 
 
 def _names(e: Any) -> set[str]:
