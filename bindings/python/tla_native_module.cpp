@@ -907,6 +907,7 @@ public:
                 emit_kind = 0;
                 Ctx c{nullptr, t.data(), nullptr};
                 exec(init, c);
+                if (!progress.is_none()) progress(-1, generated, nstates(), 0);  // initial states done
                 emit_kind = 1;
                 while (head < nstates()) {
                     while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;

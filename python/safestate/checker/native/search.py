@@ -88,7 +88,10 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
     limit = max_memory_mb or default_memory_limit_mb()
 
     def report(level: int, generated: int, distinct: int, left: int) -> None:
-        if progress is not None:
+        if progress is not None and level < 0:
+            progress(f"Finished computing initial states: {distinct} distinct state{'' if distinct == 1 else 's'} "
+                     f"generated.")
+        elif progress is not None:
             progress(f"Progress({level}): {generated} states generated, {distinct} distinct states found, "
                      f"{left} states left on queue.")
     if progress is not None:

@@ -560,8 +560,11 @@ class Translator:
 
     def a_Quant(self, e: A.Quant, env: TEnv, k: Node) -> Node | None:
         if e.kind != "\\E":
-            if _mentions_prime(e.body):
-                raise unsupported("\\A over an action", e.loc)
+            # A plain boolean \A (its body never branches) is a guard; otherwise TLC takes it as
+            # a conjunction of actions, one per binding (`ActionCompiler._forall`): not here.
+            inner = self.exists(A.Quant(e.loc, "\\E", e.bounds, e.body), env, lambda env2: self.action(e.body, env2, k))
+            if not _guard_chain(inner[4][-1], k):
+                raise unsupported("\\A over an action whose body branches", e.loc)
             return None
         return self.exists(e, env, lambda env2: self.action(e.body, env2, k))
 
@@ -594,7 +597,7 @@ class Translator:
                 return self.action(local.expr, local.env, k)
             if isinstance(local, LetRef) and not args:
                 code = self.action(local.expr, local.env, k)
-                return None if code[0] == Op.A_GUARD and code[5] is k else code
+                return None if _guard_chain(code, k) else code
             if isinstance(local, LetOp) and e.name not in _names(local.defn.body):
                 return self.inline(local.defn, args, local.env.scope, local.env.locals, env, e.loc,
                                    lambda b, benv: self.action(b, benv, k))
@@ -706,6 +709,15 @@ class Translator:
         if named is not None:
             return self.unchanged_vars(named[0], named[1], depth + 1)
         return None
+
+
+def _guard_chain(n: Node, k: Node) -> bool:
+    """Is `n` a chain of guards ending in `k` (never branches; `actions._plain_guard`)?"""
+    while n[0] == Op.A_GUARD:
+        n = n[5]
+        if n is k:
+            return True
+    return False
 
 
 def _product_ordered(n: Node) -> bool:
