@@ -214,6 +214,7 @@ enum Op : int {
     A_ALLASSIGNED, A_BIND,
     // more set descriptors
     SD_CUP, SD_CAP, SD_DIFF,
+    CHOOSE,
     OP_COUNT
 };
 
@@ -618,6 +619,14 @@ public:
             }
             case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
             case BIND: bind(n, c); return eval(n->kids.back(), c);
+            case CHOOSE: {  // the first element in TLC's order that satisfies the predicate
+                uint32_t s = set(n->kids[0], c);
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    slots[size_t(n->ints[0])] = st.items(s)[i];
+                    if (boolean(n->kids[1], c, "CHOOSE predicate")) return st.items(s)[i];
+                }
+                fail("Attempted to compute the value of an expression of form CHOOSE x \\in S: P, but no element of S satisfied P", n->loc);
+            }
             case RECSET: {
                 // [a : S, b : T] as a finite set of records (ints: the field names).
                 size_t nf = n->ints.size();

@@ -87,6 +87,7 @@ class Op(IntEnum):
     SD_CUP = 75
     SD_CAP = 76
     SD_DIFF = 77
+    CHOOSE = 78
 
 
 assert (core.OP_COUNT, core.OP_IN_SD, core.OP_SD_STRING, core.OP_A_BIND) == \

@@ -420,6 +420,16 @@ class Translator:
     def x_SetEnum(self, e: A.SetEnum, env: TEnv) -> Node:
         return self.node(Op.SETENUM, e.loc, kids=tuple(self.expr(x, env) for x in e.elems))
 
+    def x_Choose(self, e: A.Choose, env: TEnv) -> Node:
+        if e.set is None or e.tuple or len(e.names) != 1:
+            raise unsupported("this CHOOSE (unbounded, or over a tuple of names)", e.loc)
+        slot = self.alloc()
+        s = self.expr(e.set, env)
+        if _product_ordered(s):
+            raise unsupported("CHOOSE from a set of records [a : S]", e.loc)
+        env2 = replace(env, locals={**env.locals, e.names[0]: SlotArg(slot, None)})
+        return self.node(Op.CHOOSE, e.loc, (slot,), kids=(s, self.expr(e.body, env2)))
+
     def x_SetFilter(self, e: A.SetFilter, env: TEnv) -> Node:
         slot, s, env2 = self._bind_one(e.bound, env, e.loc)
         return self.node(Op.SETFILTER, e.loc, (slot,), kids=(s, self.expr(e.pred, env2)))
