@@ -13,10 +13,13 @@ exact message, counts and trace (said on stderr).
 from __future__ import annotations
 
 import sys
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from ..explore import CheckResult, explore_states
 from ..model import Model
+
+if TYPE_CHECKING:
+    from .search import NativeRun
 
 ENGINES = ("python", "native", "auto")
 
@@ -25,14 +28,13 @@ def _note(msg: str) -> None:
     print(f"safestate check: {msg}", file=sys.stderr, flush=True)
 
 
-def _native_refusal(model: Model, graph: bool) -> str | None:
-    """Why the native engine cannot run this check (None if it can); raises
-    `UnsupportedError` (file:line:col) for a construct outside its subset."""
+def _translate(model: Model, graph: bool) -> "NativeRun | str":
+    """The model translated for the core, or why the native engine cannot run this
+    check; raises `UnsupportedError` (file:line:col) for a construct outside its subset."""
     if graph:
         return "--graph needs the Python engine"
     from .search import NativeRun
-    NativeRun(model)
-    return None
+    return NativeRun(model)
 
 
 def check(model: Model, engine: str, workers: int = 1, graph: bool = False, max_memory_mb: int | None = None,
@@ -41,12 +43,13 @@ def check(model: Model, engine: str, workers: int = 1, graph: bool = False, max_
         return explore_states(model, workers=workers, graph=graph, max_memory_mb=max_memory_mb, progress=progress)
     from ...tla.errors import UnsupportedError
     try:
-        why = _native_refusal(model, graph)
+        run = _translate(model, graph)
     except UnsupportedError as e:
         if engine == "native":
             raise
-        why = f"{e.loc}: {e.message}" if e.loc else e.message
-    if why is not None:
+        run = f"{e.loc}: {e.message}" if e.loc else e.message
+    if isinstance(run, str):
+        why = run
         if engine == "native":
             raise UnsupportedError(f"{why}: not supported by the native engine")
         _note(f"{why}; using the Python engine")
@@ -54,7 +57,7 @@ def check(model: Model, engine: str, workers: int = 1, graph: bool = False, max_
     if workers > 1:
         _note("the native engine uses one worker")
     from .search import explore_native
-    result, error = explore_native(model, max_memory_mb, progress)
+    result, error = explore_native(model, max_memory_mb, progress, run)
     if result is None:
         _note(f"the native engine stopped at an evaluation error ({error}); checking again with the Python "
               f"engine for TLC's report")

@@ -78,11 +78,13 @@ def native_unsupported(model: Model) -> UnsupportedError | None:
 
 
 def explore_native(model: Model, max_memory_mb: int | None = None,
-                   progress: Callable[[str], None] | None = None) -> tuple[CheckResult | None, str]:
-    """Search with the C++ core.  Returns (result, "") or (None, why) after an
-    evaluation error, which the Python engine then reports exactly."""
+                   progress: Callable[[str], None] | None = None,
+                   run: NativeRun | None = None) -> tuple[CheckResult | None, str]:
+    """Search with the C++ core (`run`: the model already translated).  Returns
+    (result, "") or (None, why) after an evaluation error, which the Python engine
+    then reports exactly."""
     start = time.monotonic()
-    run = NativeRun(model)
+    run = run or NativeRun(model)
     eng = run.engine
     eng.set_slots(run.nslots)
     limit = max_memory_mb or default_memory_limit_mb()
