@@ -34,6 +34,7 @@ from ..tla.env import Env, Frame, SlotLocal
 from ..tla.errors import Loc, TlaError, UnsupportedError
 from ..tla.modules import DefSym, InstanceSym, Scope
 from ..tla.values import Value, as_set
+from . import ltl
 
 
 @dataclass
@@ -77,17 +78,23 @@ class Obligation:
     q: Pred | None = None
     # For "wf", "sf" and "infinitely_step": <<A>>_v, a step the tail never takes.
     forbid: Pred | None = None
+    # For "tableau": the property over the state predicates `atoms`.
+    formula: ltl.Formula | None = None
+    atoms: list[Pred] = dataclasses.field(default_factory=list)
 
 
-LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually",
-                  "infinitely_step", "wf", "sf")
+# The fixed forms over state predicates only (the tableau checks them too).
+STATE_LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually")
+LIVENESS_KINDS = (*STATE_LIVENESS_KINDS, "infinitely_step", "wf", "sf", "tableau")
 
 
 class TemporalCompiler:
     """Expands temporal formulas into `Fairness` and `Obligation` instances."""
 
-    def __init__(self, model: Any) -> None:
+    def __init__(self, model: Any, force_tableau: bool = False) -> None:
         self.model = model
+        # Check the fixed forms over state predicates with the tableau too (to compare).
+        self.force_tableau = force_tableau
         self.compiler = model.compiler
         self._temporal_defs: dict[int, bool] = {}
 
@@ -149,31 +156,45 @@ class TemporalCompiler:
             for item in e.items:
                 self._expand(item, scope, binds, leaf)
             return
-        if isinstance(e, (A.Name, A.Apply, A.Prefixed)) and e.name not in binds:
-            sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
-            if isinstance(sym, DefSym) and self.is_temporal(e, scope):
-                if isinstance(e, A.Prefixed) and any(step.args for step in e.path):
-                    raise UnsupportedError("a temporal formula of a parameterised instance (M(p)!Op) is not "
-                                           "supported", e.loc)
-                args = e.args if isinstance(e, (A.Apply, A.Prefixed)) else []
-                if len(args) != len(sym.defn.params):
-                    raise TlaError("semantic", f"{e.name} expects {len(sym.defn.params)} arguments", e.loc)
-                values = {p.name: self._constant(a, scope, binds) for p, a in zip(sym.defn.params, args)}
-                self._expand(sym.defn.body, sym.scope, values, leaf)
-                return
+        defn = self._temporal_definition(e, scope, binds)
+        if defn is not None:
+            self._expand(*defn, leaf)
+            return
         if isinstance(e, A.Quant) and e.kind == "\\A" and self.is_temporal(e.body, scope):
-            names: list[str] = []
-            sets: list[list[Value]] = []
-            for b in e.bounds:
-                if b.tuple:
-                    raise UnsupportedError("a tuple binder <<..>> \\in S over a temporal formula", b.set.loc)
-                for n in b.names:
-                    names.append(n)
-                    sets.append(list(as_set(self._constant(b.set, scope, binds))))
-            for combo in itertools.product(*sets):
-                self._expand(e.body, scope, {**binds, **dict(zip(names, combo))}, leaf)
+            for combo in self._bindings(e, scope, binds):
+                self._expand(e.body, scope, combo, leaf)
             return
         leaf(e, scope, binds)
+
+    def _temporal_definition(self, e: A.Expr, scope: Scope,
+                             binds: dict[str, Value]) -> tuple[A.Expr, Scope, dict[str, Value]] | None:
+        """The body, scope and argument values of the temporal definition `e` applies
+        (None when `e` is not one)."""
+        if not isinstance(e, (A.Name, A.Apply, A.Prefixed)) or e.name in binds:
+            return None
+        sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
+        if not isinstance(sym, DefSym) or not self.is_temporal(e, scope):
+            return None
+        if isinstance(e, A.Prefixed) and any(step.args for step in e.path):
+            raise UnsupportedError("a temporal formula of a parameterised instance (M(p)!Op) is not "
+                                   "supported", e.loc)
+        args = e.args if isinstance(e, (A.Apply, A.Prefixed)) else []
+        if len(args) != len(sym.defn.params):
+            raise TlaError("semantic", f"{e.name} expects {len(sym.defn.params)} arguments", e.loc)
+        values = {p.name: self._constant(a, scope, binds) for p, a in zip(sym.defn.params, args)}
+        return sym.defn.body, sym.scope, values
+
+    def _bindings(self, e: A.Quant, scope: Scope, binds: dict[str, Value]) -> list[dict[str, Value]]:
+        """`binds` extended by each combination of values of the quantifier's bounds."""
+        names: list[str] = []
+        sets: list[list[Value]] = []
+        for b in e.bounds:
+            if b.tuple:
+                raise UnsupportedError("a tuple binder <<..>> \\in S over a temporal formula", b.set.loc)
+            for n in b.names:
+                names.append(n)
+                sets.append(list(as_set(self._constant(b.set, scope, binds))))
+        return [{**binds, **dict(zip(names, combo))} for combo in itertools.product(*sets)]
 
     # ------------------------------------------------------------ leaves
     def _fair(self, e: A.Expr, scope: Scope, binds: dict) -> Fairness:
@@ -206,7 +227,14 @@ class TemporalCompiler:
     def _obligation(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
         if not self.is_temporal(e, scope):
             return Obligation(name, "init", self._state(e, scope, binds))
-        e = self._normal(e, scope)
+        ob = self._fixed_shape(name, self._normal(e, scope), scope, binds)
+        if ob is None or (self.force_tableau and ob.kind in STATE_LIVENESS_KINDS):
+            return self._general(name, e, scope, binds)
+        return ob
+
+    def _fixed_shape(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation | None:
+        """The obligation of a conjunct of one of the fixed forms (each with its own
+        search in `liveness.py`), or None."""
         if (isinstance(e, A.Unary) and e.op == "[]" and isinstance(e.arg, A.Binary) and e.arg.op == "=>"
                 and not self.is_temporal(e.arg.lhs, scope) and isinstance(e.arg.rhs, A.Unary)
                 and e.arg.rhs.op == "[]" and not self.is_temporal(e.arg.rhs.arg, scope)):
@@ -244,11 +272,60 @@ class TemporalCompiler:
             if not self.is_temporal(e.lhs, scope) and not self.is_temporal(e.rhs, scope):
                 return Obligation(name, "leadsto", self._live(e.lhs, scope, binds),
                                   self._live(e.rhs, scope, binds))
-        raise UnsupportedError(f"the temporal formula in property {name} is not supported: only []P, <>P, "
-                               f"P ~> Q, []<>P, <>[]P, [](P => <>Q), [](P => []Q), P => []Q, P => <>Q (P, Q state "
-                               f"predicates), "
-                               f"[][A]_v, []<><<A>>_v, WF_v(A), SF_v(A), conjunctions and \\A over them are "
-                               f"checked", e.loc)
+        return None
+
+    # ------------------------------------------------------------ general formulas
+    def _general(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
+        """Any formula of state predicates, ~, /\\, \\/, =>, <=>, [], <>, ~> and bounded
+        \\A / \\E: checked with the tableau of its negation (`tableau.py`)."""
+        atoms: list[Pred] = []
+        formula = self._ltl(name, e, scope, binds, atoms)
+        true = self.pred(A.Bool(e.loc, True), scope, {})  # p is not read for a tableau obligation
+        return Obligation(name, "tableau", true, formula=formula, atoms=atoms)
+
+    def _ltl(self, name: str, e: A.Expr, scope: Scope, binds: dict, atoms: list[Pred]) -> ltl.Formula:
+        if not self.is_temporal(e, scope):
+            atoms.append(self._live(e, scope, binds))
+            return ltl.Atom(len(atoms) - 1)
+
+        def sub(x: A.Expr, sc: Scope = scope, bs: dict = binds) -> ltl.Formula:
+            return self._ltl(name, x, sc, bs, atoms)
+        if isinstance(e, (A.And, A.Or)):
+            items = tuple(sub(x) for x in e.items)
+            return ltl.And(items) if isinstance(e, A.And) else ltl.Or(items)
+        if isinstance(e, A.Unary) and e.op in ("[]", "<>"):
+            if isinstance(e.arg, A.StepAction):
+                raise UnsupportedError(f"the temporal formula in property {name} is not supported: an action "
+                                       f"formula {e.op}[A]_v / {e.op}<<A>>_v is only checked as a conjunct of the "
+                                       f"forms [][A]_v, []<><<A>>_v", e.loc)
+            arg = sub(e.arg)
+            return ltl.Always(arg) if e.op == "[]" else ltl.Eventually(arg)
+        if isinstance(e, A.Unary) and e.op in ("~", "\\lnot", "\\neg"):
+            return ltl.negate(sub(e.arg))
+        if isinstance(e, A.Binary) and e.op in ("=>", "<=>", "\\equiv", "~>"):
+            lhs, rhs = sub(e.lhs), sub(e.rhs)
+            if e.op == "=>":
+                return ltl.Or((ltl.negate(lhs), rhs))
+            if e.op == "~>":
+                return ltl.Always(ltl.Or((ltl.negate(lhs), ltl.Eventually(rhs))))
+            return ltl.And((ltl.Or((ltl.negate(lhs), rhs)), ltl.Or((lhs, ltl.negate(rhs)))))
+        defn = self._temporal_definition(e, scope, binds)
+        if defn is not None:
+            return sub(*defn)
+        if isinstance(e, A.Quant) and e.kind in ("\\A", "\\E"):
+            items = tuple(sub(e.body, scope, combo) for combo in self._bindings(e, scope, binds))
+            return ltl.And(items) if e.kind == "\\A" else ltl.Or(items)
+        if isinstance(e, A.Fairness):
+            raise UnsupportedError(f"the temporal formula in property {name} is not supported: {e.kind}_v(A) "
+                                   f"is only checked as a conjunct of a property, not inside another formula",
+                                   e.loc)
+        what = ("temporal quantification \\AA / \\EE" if isinstance(e, A.UnboundedQuant) else
+                "-+->" if isinstance(e, A.Binary) and e.op == "-+->" else
+                "a temporal operator inside this construct")
+        raise UnsupportedError(f"the temporal formula in property {name} is not supported: {what} is not "
+                               f"checked (supported: state predicates under ~, /\\, \\/, =>, <=>, [], <>, ~>, "
+                               f"bounded \\A and \\E, and the action forms [][A]_v, []<><<A>>_v, WF_v(A), "
+                               f"SF_v(A) as conjuncts)", e.loc)
 
     # ------------------------------------------------------------ compilation
     def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:

@@ -1,0 +1,13 @@
+---- MODULE EquivEventuallyFails ----
+(* (<>P) <=> (<>Q) without fairness: x = 2 without done (stuttering). *)
+EXTENDS Naturals
+VARIABLES x, done
+vars == <<x, done>>
+Init == x = 0 /\ done = FALSE
+Step == ~done /\ x' = (x + 1) % 3 /\ UNCHANGED done
+Finish == ~done /\ x = 2 /\ done' = TRUE /\ UNCHANGED x
+Next == Step \/ Finish
+Spec == Init /\ [][Next]_vars
+
+Prop == (<>(x = 2)) <=> (<>done)
+====
