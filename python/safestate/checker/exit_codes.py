@@ -23,6 +23,7 @@ BY_KIND = {
     "unsupported": ERROR_CONFIG_PARSE,
     "eval": FAILURE_SPEC_EVAL,
     "module eval": ERROR,        # a standard module's error while computing successors (Head(<<>>))
+    "temporal": ERROR,           # a property TLC's liveness checker refuses (EC.TLC_LIVE_*), as TLC
     "invariant eval": FAILURE_SAFETY_EVAL,
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,

@@ -13,10 +13,13 @@ from typing import Union
 
 @dataclass(frozen=True)
 class Atom:
-    """State predicate number `index` of the formula's `atoms` (negated if `negated`)."""
+    """Predicate number `index` of the formula's `atoms` (negated if `negated`): a state
+    predicate, or (`action`) a step predicate ``[A]_v`` / ``<<A>>_v`` of the step
+    from this state to the next."""
 
     index: int
     negated: bool = False
+    action: bool = False
 
 
 @dataclass(frozen=True)
@@ -57,7 +60,7 @@ Formula = Union[Atom, Const, And, Or, Always, Eventually, Next]
 def negate(f: Formula) -> Formula:
     """~f in negation normal form (f is in it already)."""
     if isinstance(f, Atom):
-        return Atom(f.index, not f.negated)
+        return Atom(f.index, not f.negated, f.action)
     if isinstance(f, Const):
         return Const(not f.value)
     if isinstance(f, And):
@@ -71,9 +74,53 @@ def negate(f: Formula) -> Formula:
     return Next(negate(f.arg))  # () is self-dual on infinite behaviours
 
 
+def is_temporal(f: Formula) -> bool:
+    if isinstance(f, (Always, Eventually, Next)):
+        return True
+    return isinstance(f, (And, Or)) and any(is_temporal(x) for x in f.items)
+
+
+def has_action(f: Formula) -> bool:
+    if isinstance(f, Atom):
+        return f.action
+    if isinstance(f, (And, Or)):
+        return any(has_action(x) for x in f.items)
+    return isinstance(f, (Always, Eventually, Next)) and has_action(f.arg)
+
+
+def disjuncts(f: Formula, limit: int = 4096) -> list[list[Formula]] | None:
+    """f in disjunctive normal form over its temporal subformulas and atoms, as TLC's
+    `toDNF` (a list of conjunctions); None when it has more than `limit` disjuncts."""
+    if isinstance(f, Or):
+        out: list[list[Formula]] = []
+        for x in f.items:
+            part = disjuncts(x, limit)
+            if part is None or len(out) + len(part) > limit:
+                return None
+            out.extend(part)
+        return out
+    if isinstance(f, And):
+        acc: list[list[Formula]] = [[]]
+        for x in f.items:
+            part = disjuncts(x, limit)
+            if part is None or len(acc) * len(part) > limit:
+                return None
+            acc = [a + b for a in acc for b in part]
+        return acc
+    return [[f]]
+
+
+def without_tableau(f: Formula) -> bool:
+    """Is f one of the conjuncts TLC checks on the behaviour graph without a tableau
+    (`Liveness.classifyExpr`): ``<>[]A`` or ``[]<>A`` with A a state or step predicate?"""
+    return (isinstance(f, (Always, Eventually)) and isinstance(f.arg, (Always, Eventually))
+            and type(f.arg) is not type(f) and not is_temporal(f.arg.arg))
+
+
 def holds_on_lasso(f: Formula, atoms: list[list[bool]], loop: int) -> bool:
     """Does the behaviour 0, 1, ..., n-1, then back to `loop` (forever) satisfy f at
-    its start?  ``atoms[i][k]`` is the value of atom k in state i."""
+    its start?  ``atoms[i][k]`` is the value of atom k in state i (for a step
+    predicate: on the step from state i to the next)."""
     n = len(atoms)
 
     def successor(i: int) -> int:

@@ -81,7 +81,7 @@ class _Expander:
                 if not f.value:
                     return
             elif isinstance(f, ltl.Atom):
-                if ltl.Atom(f.index, not f.negated) in literals:
+                if ltl.Atom(f.index, not f.negated, f.action) in literals:
                     return
                 literals.add(f)
             elif isinstance(f, ltl.And):

@@ -4,8 +4,10 @@ graph; a strongly connected part of it that fulfils every promise of the tableau
 and the spec's fairness is a behaviour of the spec violating the property.
 
 A node of the behaviour graph is a pair (state, particle) whose state satisfies
-the particle's literals.  (s, t) -> (s', t') when s -> s' is a step or a
-stuttering step (s' = s) and t' is a successor of t in the tableau; the initial
+the particle's state literals.  (s, t) -> (s', t') when s -> s' is a step or a
+stuttering step (s' = s) that satisfies the step literals of t ([A]_v, <<A>>_v;
+a stuttering step satisfies [A]_v and no <<A>>_v) and t' is a successor of t
+in the tableau; the initial
 nodes pair an initial state with an initial particle.  Stuttering steps cost
 nothing in the search for the shortest prefix (0-1 BFS): they add no state to
 the printed behaviour.  The component search, fairness and cycle are those of
@@ -36,6 +38,9 @@ class BehaviourGraph:
         self.atoms = atoms
         self.states = states
         self._atom_values = bytearray(len(states) * len(atoms))  # 0 unknown, 1 false, 2 true
+        self._step_values: dict[tuple[int, int, int], bool] = {}
+        self._state_literals = [[lit for lit in p.literals if not lit.action] for p in tab.particles]
+        self._step_literals = [[lit for lit in p.literals if lit.action] for p in tab.particles]
         self.state_of = array("i")
         self.particle_of = array("i")
         self.rows: list[list[int]] = []
@@ -81,6 +86,8 @@ class BehaviourGraph:
             v, t = self.state_of[i], self.particle_of[i]
             row = self.rows[i]
             for w in (v, *graph.succ(v)):
+                if not self.step_satisfies(v, w, t):
+                    continue
                 cost = 0 if w == v else 1
                 for t2 in tab.successors[t]:
                     if not self.satisfies(w, t2):
@@ -104,13 +111,24 @@ class BehaviourGraph:
         return len(self.state_of)
 
     def satisfies(self, v: int, t: int) -> bool:
-        """Does state v satisfy the literals of particle t?"""
+        """Does state v satisfy the state literals of particle t?"""
         k = len(self.atoms)
-        for lit in self.tableau.particles[t].literals:
+        for lit in self._state_literals[t]:
             c = v * k + lit.index
             if not self._atom_values[c]:
                 self._atom_values[c] = 2 if self.atoms[lit.index](self.states[v]) else 1
             if (self._atom_values[c] == 2) == lit.negated:
+                return False
+        return True
+
+    def step_satisfies(self, v: int, w: int, t: int) -> bool:
+        """Does the step from state v to state w satisfy the step literals of particle t?"""
+        for lit in self._step_literals[t]:
+            key = (v, w, lit.index)
+            value = self._step_values.get(key)
+            if value is None:
+                value = self._step_values[key] = self.atoms[lit.index](self.states[v], self.states[w])
+            if value == lit.negated:
                 return False
         return True
 
@@ -197,5 +215,8 @@ def violated_on_lasso(ob: Obligation, states: list[tuple], loop: int) -> bool:
     """Does the lasso (states, then back to states[loop]; a stuttering lasso loops on
     its last state) violate the general property?"""
     assert ob.formula is not None
-    values = [[bool(a(s)) for a in ob.atoms] for s in states]
+    # A step predicate is evaluated on the step to the next state (the last state's
+    # next is states[loop]); a state predicate ignores the second state.
+    following = states[1:] + [states[loop]]
+    values = [[bool(a(s, t)) for a in ob.atoms] for s, t in zip(states, following)]
     return not ltl.holds_on_lasso(ob.formula, values, loop)

@@ -78,9 +78,12 @@ class Obligation:
     q: Pred | None = None
     # For "wf", "sf" and "infinitely_step": <<A>>_v, a step the tail never takes.
     forbid: Pred | None = None
-    # For "tableau": the property over the state predicates `atoms`.
+    # For "tableau": the property over the state and step predicates `atoms`, and
+    # whether TLC needs a tableau for it (its negation is not made of <>[]A and []<>A
+    # conjuncts only), which decides the order TLC checks properties in.
     formula: ltl.Formula | None = None
     atoms: list[Pred] = dataclasses.field(default_factory=list)
+    tlc_tableau: bool = True
 
 
 # The fixed forms over state predicates only (the tableau checks them too).
@@ -227,7 +230,10 @@ class TemporalCompiler:
     def _obligation(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
         if not self.is_temporal(e, scope):
             return Obligation(name, "init", self._state(e, scope, binds))
-        ob = self._fixed_shape(name, self._normal(e, scope), scope, binds)
+        try:
+            ob = self._fixed_shape(name, self._normal(e, scope), scope, binds)
+        except UnsupportedError:
+            ob = None  # e.g. a step formula where the fixed form has a state predicate: <>[][A]_v
         if ob is None or (self.force_tableau and ob.kind in STATE_LIVENESS_KINDS):
             return self._general(name, e, scope, binds)
         return ob
@@ -276,56 +282,70 @@ class TemporalCompiler:
 
     # ------------------------------------------------------------ general formulas
     def _general(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
-        """Any formula of state predicates, ~, /\\, \\/, =>, <=>, [], <>, ~> and bounded
-        \\A / \\E: checked with the tableau of its negation (`tableau.py`)."""
+        """Any formula of state predicates, ~, /\\, \\/, =>, ~>, [], <>, IF, bounded \\A /
+        \\E, WF/SF and the steps [A]_v, <<A>>_v: checked with the tableau of its negation
+        (`tableau.py`), after the checks of TLC's `Liveness.processLiveness`."""
         atoms: list[Pred] = []
         formula = self._ltl(name, e, scope, binds, atoms)
+        conjuncts = ltl.disjuncts(ltl.negate(formula))
+        if conjuncts is not None:
+            for c in (c for d in conjuncts for c in d):
+                if not ltl.without_tableau(c) and ltl.has_action(c):
+                    raise TlaError("temporal", "Temporal formulas containing actions must be of forms <>[]A or "
+                                   "[]<>A.", e.loc)
+        needs_tableau = conjuncts is None or any(not ltl.without_tableau(c) for d in conjuncts for c in d)
         true = self.pred(A.Bool(e.loc, True), scope, {})  # p is not read for a tableau obligation
-        return Obligation(name, "tableau", true, formula=formula, atoms=atoms)
+        return Obligation(name, "tableau", true, formula=formula, atoms=atoms, tlc_tableau=needs_tableau)
 
     def _ltl(self, name: str, e: A.Expr, scope: Scope, binds: dict, atoms: list[Pred]) -> ltl.Formula:
-        if not self.is_temporal(e, scope):
-            atoms.append(self._live(e, scope, binds))
-            return ltl.Atom(len(atoms) - 1)
+        def atom(pred: Pred, action: bool = False) -> ltl.Atom:
+            atoms.append(pred)
+            return ltl.Atom(len(atoms) - 1, action=action)
 
         def sub(x: A.Expr, sc: Scope = scope, bs: dict = binds) -> ltl.Formula:
             return self._ltl(name, x, sc, bs, atoms)
+        if isinstance(e, A.StepAction):
+            return atom(self.pred(e, scope, binds), action=True)
+        if isinstance(e, A.Fairness):
+            # As TLC: WF_v(A) is []<>(~ENABLED <<A>>_v \/ <<A>>_v), SF_v(A) is
+            # <>[]~ENABLED <<A>>_v \/ []<><<A>>_v.
+            fair = self._fair(e, scope, binds)
+            disabled, taken = ltl.negate(atom(fair.enabled)), atom(fair.taken, action=True)
+            if e.kind == "WF":
+                return ltl.Always(ltl.Eventually(ltl.Or((disabled, taken))))
+            return ltl.Or((ltl.Eventually(ltl.Always(disabled)), ltl.Always(ltl.Eventually(taken))))
+        if not self.is_temporal(e, scope):
+            return atom(self._live(e, scope, binds))
         if isinstance(e, (A.And, A.Or)):
             items = tuple(sub(x) for x in e.items)
             return ltl.And(items) if isinstance(e, A.And) else ltl.Or(items)
         if isinstance(e, A.Unary) and e.op in ("[]", "<>"):
-            if isinstance(e.arg, A.StepAction):
-                raise UnsupportedError(f"the temporal formula in property {name} is not supported: an action "
-                                       f"formula {e.op}[A]_v / {e.op}<<A>>_v is only checked as a conjunct of the "
-                                       f"forms [][A]_v, []<><<A>>_v", e.loc)
             arg = sub(e.arg)
             return ltl.Always(arg) if e.op == "[]" else ltl.Eventually(arg)
         if isinstance(e, A.Unary) and e.op in ("~", "\\lnot", "\\neg"):
             return ltl.negate(sub(e.arg))
-        if isinstance(e, A.Binary) and e.op in ("=>", "<=>", "\\equiv", "~>"):
+        if isinstance(e, A.Binary) and e.op in ("=>", "~>"):
             lhs, rhs = sub(e.lhs), sub(e.rhs)
             if e.op == "=>":
                 return ltl.Or((ltl.negate(lhs), rhs))
-            if e.op == "~>":
-                return ltl.Always(ltl.Or((ltl.negate(lhs), ltl.Eventually(rhs))))
-            return ltl.And((ltl.Or((ltl.negate(lhs), rhs)), ltl.Or((lhs, ltl.negate(rhs)))))
+            return ltl.Always(ltl.Or((ltl.negate(lhs), ltl.Eventually(rhs))))
+        if isinstance(e, A.If):
+            cond = sub(e.cond)
+            return ltl.Or((ltl.And((cond, sub(e.then))), ltl.And((ltl.negate(cond), sub(e.other)))))
         defn = self._temporal_definition(e, scope, binds)
         if defn is not None:
             return sub(*defn)
         if isinstance(e, A.Quant) and e.kind in ("\\A", "\\E"):
             items = tuple(sub(e.body, scope, combo) for combo in self._bindings(e, scope, binds))
             return ltl.And(items) if e.kind == "\\A" else ltl.Or(items)
-        if isinstance(e, A.Fairness):
-            raise UnsupportedError(f"the temporal formula in property {name} is not supported: {e.kind}_v(A) "
-                                   f"is only checked as a conjunct of a property, not inside another formula",
-                                   e.loc)
-        what = ("temporal quantification \\AA / \\EE" if isinstance(e, A.UnboundedQuant) else
-                "-+->" if isinstance(e, A.Binary) and e.op == "-+->" else
-                "a temporal operator inside this construct")
-        raise UnsupportedError(f"the temporal formula in property {name} is not supported: {what} is not "
-                               f"checked (supported: state predicates under ~, /\\, \\/, =>, <=>, [], <>, ~>, "
-                               f"bounded \\A and \\E, and the action forms [][A]_v, []<><<A>>_v, WF_v(A), "
-                               f"SF_v(A) as conjuncts)", e.loc)
+        if isinstance(e, A.Binary) and e.op in ("<=>", "\\equiv") or isinstance(e, A.Case):
+            # TLC's astToLive has no case for these either (EC.TLC_LIVE_CANNOT_HANDLE_FORMULA).
+            raise TlaError("temporal", f"TLC cannot handle the temporal formula {_what(e)} (of temporal "
+                           f"formulas) in property {name}", e.loc)
+        raise UnsupportedError(f"the temporal formula in property {name} is not supported: {_what(e)} over "
+                               f"temporal formulas is not checked (supported: state predicates, [A]_v, "
+                               f"<<A>>_v, WF_v(A) and SF_v(A) under ~, /\\, \\/, =>, ~>, [], <>, IF and "
+                               f"bounded \\A / \\E)", e.loc)
 
     # ------------------------------------------------------------ compilation
     def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:
@@ -384,3 +404,12 @@ class TemporalCompiler:
     def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:
         p = self.pred(e, scope, binds)
         return p.code(None, None, p.base.copy())
+
+
+def _what(e: A.Expr) -> str:
+    """How an error names the construct at e."""
+    if isinstance(e, A.UnboundedQuant):
+        return f"temporal quantification {e.kind}"
+    if isinstance(e, (A.Binary, A.Unary)):
+        return e.op
+    return {A.Case: "CASE", A.Let: "LET"}.get(type(e), "this construct")
