@@ -123,6 +123,8 @@ class TemporalCompiler:
             for f in dataclasses.fields(e):
                 v = getattr(e, f.name)
                 items = v if isinstance(v, list) else [v]
+                # CASE keeps its arms as (guard, value) pairs.
+                items = [y for x in items for y in (x if isinstance(x, tuple) else (x,))]
                 for x in items:
                     if isinstance(x, A.Expr) and self.is_temporal(x, scope):
                         return True

@@ -1,5 +1,5 @@
 ---- MODULE NotStable ----
-(* ~<>[]P: the fair toggle leaves 0 again and again; without WF it can stutter there. *)
+(* ~<>[]P without fairness: the toggle can stutter at 0 for ever. *)
 EXTENDS Naturals
 VARIABLE x
 Init == x = 0
