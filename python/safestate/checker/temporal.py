@@ -17,8 +17,12 @@
     ``<><>F`` is ``<>F``, ``<>[]<>P`` is ``[]<>P`` and ``[]<>[]P`` is ``<>[]P``,
     and ``P => []Q`` / ``P => <>Q`` (P on the initial state) are checked too,
 
-  where P and Q are state predicates.  Any other temporal formula is refused with
-  an "unsupported" error at its position, never guessed at.
+  where P and Q are state predicates;
+  - any other formula ("tableau"): translated as TLC's `Liveness.astToLive` into
+    `ltl.Formula` over state and step predicates and checked with the tableau of its
+    negation (`tableau_search.py`).  What TLC refuses is refused in its words; what
+    we do not translate (\\AA, \\EE, -+->, LET, raw actions) is an "unsupported"
+    error at its position, never guessed at.
 """
 
 from __future__ import annotations
