@@ -215,3 +215,69 @@ def test_tableau_expected_results_are_tlcs(name: str) -> None:
         assert getattr(tlc, f) == want[f], f
     assert (tlc.lasso is None) == ("lasso" not in want)
     assert tlc.violated_properties == want.get("violated_properties")
+
+
+def _random_property(r: random.Random, depth: int) -> str:
+    """A random temporal formula over x and y (TLA+ text)."""
+    if depth == 0 or r.random() < 0.2:
+        return r.choice([f"x = {r.randrange(4)}", f"x # {r.randrange(4)}", "y = 1", "y = 0", f"x < {r.randrange(1, 4)}"])
+    op = r.choice(["[]", "<>", "[]", "<>", "/\\", "\\/", "=>", "~>", "~"])
+    if op in ("[]", "<>", "~"):
+        return f"{op}({_random_property(r, depth - 1)})"
+    return f"({_random_property(r, depth - 1)}) {op} ({_random_property(r, depth - 1)})"
+
+
+def _random_tableau_spec(seed: int) -> tuple[str, str]:
+    """x in 0..3 moved by random actions, a bit y, random WF/SF, and a random
+    general property (nested temporal operators, disjunctions, implications)."""
+    r = random.Random(seed)
+    names, acts = [], []
+    for i in range(r.randint(2, 4)):
+        moves = " \\/ ".join(f"(x = {r.randrange(4)} /\\ x' = {r.randrange(4)})" for _ in range(r.randint(1, 3)))
+        acts.append(f"A{i} == ({moves}) /\\ y' = {'1 - y' if r.random() < 0.3 else 'y'}")
+        names.append(f"A{i}")
+    fair = [f"{'WF' if c < 0.3 else 'SF'}_vars({n})" for n in names if (c := r.random()) < 0.5]
+    step = r.choice(["", "", " \\/ []<><<A0>>_vars", " /\\ <>[][x' >= x]_vars"])
+    nxt = " \\/ ".join(names)
+    spec = " /\\ ".join(["Init", "[][Next]_vars", *fair])
+    tla = "\n".join([f"---- MODULE T{seed} ----", "EXTENDS Naturals", "VARIABLES x, y", "vars == <<x, y>>",
+                     "Init == x = 0 /\\ y \\in {0, 1}", *acts, f"Next == {nxt}", f"Spec == {spec}",
+                     f"Prop == ({_random_property(r, 3)}){step}", "===="])
+    return tla + "\n", "SPECIFICATION Spec\nPROPERTY Prop\nCHECK_DEADLOCK FALSE\n"
+
+
+def _check_random(tla_dir, seed: int):  # noqa: ANN001, ANN202
+    tla, cfg = _random_tableau_spec(seed)
+    path = tla_dir(f"T{seed}", tla, cfg)
+    try:
+        model = load_model(str(path))
+    except TlaError as e:
+        return path, None, e
+    return path, model, explore_states(model)
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_tableau_counterexamples_of_random_specs_are_fair_violating_behaviours(tla_dir, seed: int) -> None:
+    _, model, r = _check_random(tla_dir, seed)
+    if model is None:  # TLC's refusal of a step outside <>[]A / []<>A
+        assert r.kind == "temporal", r
+        return
+    assert r.result != "error", r.error  # also a safety or initial-state violation of a []P or P conjunct
+    if r.result == "liveness failure":
+        states, _, _ = fair_lasso(model, r)
+        ob = next(o for o in model.liveness if o.name == r.violated)
+        assert violated_on(ob, states, r.loop, r.loop_step is None)
+
+
+@pytest.mark.skipif(not os.path.isfile(os.environ.get("TLA2TOOLS_JAR", "")), reason="TLA2TOOLS_JAR not set")
+@pytest.mark.parametrize("seed", range(30))
+def test_tableau_verdicts_on_random_specs_equal_tlcs(tla_dir, seed: int) -> None:
+    from safestate.checker.tlc import run_tlc
+    path, model, r = _check_random(tla_dir, seed)
+    tlc = run_tlc(os.environ["TLA2TOOLS_JAR"], str(path), str(path.with_suffix(".cfg")))
+    if model is None:
+        assert tlc.exit_code == exit_codes.BY_KIND[r.kind]
+        return
+    for f in FIELDS:
+        assert getattr(r, f) == getattr(tlc, f), f
+    assert (r.loop is None) == (tlc.lasso is None)
