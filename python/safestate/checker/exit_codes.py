@@ -36,6 +36,8 @@ BY_RESULT = {
     "deadlock failure": VIOLATION_DEADLOCK,
     # TLC exits with VIOLATION_LIVENESS for every kind of PROPERTY violation.
     "liveness failure": VIOLATION_LIVENESS,
+    # A temporal property's finite counterexample, where TLC stops its search (12).
+    "temporal safety failure": VIOLATION_SAFETY,
     "action property failure": VIOLATION_LIVENESS,
     "init property failure": VIOLATION_LIVENESS,
 }

@@ -396,8 +396,8 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
     shortest counterexample (the first in .cfg order among equals)."""
     from .tableau_search import tableau_counterexample  # it builds on LivenessChecker
     checker = LivenessChecker(graph, states, initial, fairness, check_memory)
-    first = [o for o in obligations if o.kind in TABLEAU_KINDS and (o.kind != "tableau" or o.tlc_tableau)]
-    for group in (first, [o for o in obligations if o not in first]):
+    for group in ([o for o in obligations if o.kind in TABLEAU_KINDS],
+                  [o for o in obligations if o.kind not in TABLEAU_KINDS]):
         best: tuple[Obligation, Lasso] | None = None
         for ob in group:
             check_memory()

@@ -82,12 +82,10 @@ class Obligation:
     q: Pred | None = None
     # For "wf", "sf" and "infinitely_step": <<A>>_v, a step the tail never takes.
     forbid: Pred | None = None
-    # For "tableau": the property over the state and step predicates `atoms`, and
-    # whether TLC needs a tableau for it (its negation is not made of <>[]A and []<>A
-    # conjuncts only), which decides the order TLC checks properties in.
+    # For "tableau" (and "stays", "init_always", see `tableau_safety.py`): the
+    # property over the state and step predicates `atoms`.
     formula: ltl.Formula | None = None
     atoms: list[Pred] = dataclasses.field(default_factory=list)
-    tlc_tableau: bool = True
 
 
 # The fixed forms over state predicates only (the tableau checks them too).
@@ -242,6 +240,11 @@ class TemporalCompiler:
             ob = None  # e.g. a step formula where the fixed form has a state predicate: <>[][A]_v
         if ob is None or (self.force_tableau and ob.kind in STATE_LIVENESS_KINDS):
             return self._general(name, e, scope, binds)
+        if ob.kind in ("stays", "init_always"):
+            # Its tableau has an accepting node: TLC may stop its search at a finite
+            # counterexample (`tableau_safety.py`).
+            general = self._general(name, e, scope, binds)
+            ob.formula, ob.atoms = general.formula, general.atoms
         return ob
 
     def _fixed_shape(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation | None:
@@ -299,9 +302,8 @@ class TemporalCompiler:
                 if not ltl.without_tableau(c) and ltl.has_action(c):
                     raise TlaError("temporal", "Temporal formulas containing actions must be of forms <>[]A or "
                                    "[]<>A.", e.loc)
-        needs_tableau = conjuncts is None or any(not ltl.without_tableau(c) for d in conjuncts for c in d)
         true = self.pred(A.Bool(e.loc, True), scope, {})  # p is not read for a tableau obligation
-        return Obligation(name, "tableau", true, formula=formula, atoms=atoms, tlc_tableau=needs_tableau)
+        return Obligation(name, "tableau", true, formula=formula, atoms=atoms)
 
     def _ltl(self, name: str, e: A.Expr, scope: Scope, binds: dict, atoms: list[Pred]) -> ltl.Formula:
         def atom(pred: Pred, action: bool = False) -> ltl.Atom:

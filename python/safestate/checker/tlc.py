@@ -60,8 +60,9 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     elif viol:
         result = "safety failure"
     elif temporal or action or initial:
-        result = ("liveness failure" if temporal else "action property failure" if action
-                  else "init property failure")
+        # TLC exits with 12 where it stops at a finite counterexample of a temporal property.
+        result = (("temporal safety failure" if exit_code == 12 else "liveness failure") if temporal
+                  else "action property failure" if action else "init property failure")
         viol = temporal or action or initial
     elif "Error: Deadlock reached." in out:
         result = "deadlock failure"
