@@ -19,7 +19,7 @@ from typing import Any
 from ..errors import UsageError, check_writable_file, closed_stdout_exit, one_line
 from ..tla.errors import TlaError
 from . import exit_codes
-from .explore import CheckResult, print_progress
+from .explore import CheckResult, explore_states, print_progress
 from .itf import trace_to_itf
 from .model import Model, default_config_path, load_model
 
@@ -113,9 +113,13 @@ def _run(args: argparse.Namespace, start: float) -> int:
     workers = _workers(args.workers)
     model = load_model(args.model, args.config)
     progress = None if args.json else print_progress
-    from .native.engine_choice import check
-    result = check(model, args.engine, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
-                   progress=progress)
+    if args.engine == "python":
+        result = explore_states(model, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
+                                progress=progress)
+    else:
+        from .native.engine_choice import check
+        result = check(model, args.engine, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
+                       progress=progress)
     itf = _itf(model, result) if result.trace else None
     if args.itf:
         if itf is None:
