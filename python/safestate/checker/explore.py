@@ -84,7 +84,7 @@ class CheckResult:
 
 
 class _Found(Exception):
-    """Ends the replay of a state's successors in `Explorer._step_params`."""
+    """Ends the replay of a state's successors in `step_params`."""
 
 
 class _Stop(Exception):
@@ -203,11 +203,8 @@ class Explorer:
         steps = [Step(self.states[path[0]], "Init", {})]
         for a, b in zip(path, path[1:]):
             want, leaf = self.states[b], self.leaf[b]
-            steps.append(Step(want, self.m.leaves[leaf].name, self._step_params(self.states[a], leaf, want)))
+            steps.append(Step(want, self.m.leaves[leaf].name, step_params(self.m, self.states[a], leaf, want)))
         return steps
-
-    def _step_params(self, state: tuple, leaf: int, want: tuple) -> dict:
-        return step_params(self.m, state, leaf, want)
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
