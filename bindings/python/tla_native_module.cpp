@@ -15,13 +15,16 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -51,21 +54,45 @@ inline uint64_t mix(uint64_t h, uint64_t x) {
 
 struct Val {
     Kind kind;
-    uint32_t off, len;
+    uint32_t off, len;  // off: a string's index in Store::names
     int64_t aux;  // rank of a string / model value in TLC's order
     uint64_t hash;
+    const uint32_t* data;  // the items of a sequence, function or set
+};
+
+// The values by id, in blocks that never move: worker threads read values while
+// another thread appends (under Store's lock), so no read may race a reallocation.
+class ValTable {
+public:
+    const Val& operator[](size_t i) const { return blocks_[i >> kBits][i & (kBlock - 1)]; }
+    size_t size() const { return n_; }
+    void push_back(const Val& v) {
+        if ((n_ & (kBlock - 1)) == 0) {
+            if ((n_ >> kBits) >= kBlocks) fail("too many distinct values for the native engine", 0);
+            blocks_[n_ >> kBits].reset(new Val[kBlock]);
+        }
+        blocks_[n_ >> kBits][n_ & (kBlock - 1)] = v;
+        ++n_;
+    }
+
+private:
+    static constexpr size_t kBits = 16, kBlock = size_t(1) << kBits, kBlocks = size_t(1) << 15;
+    std::unique_ptr<std::unique_ptr<Val[]>[]> blocks_{new std::unique_ptr<Val[]>[kBlocks]};
+    size_t n_ = 0;
 };
 
 // ------------------------------------------------------------------ the value store
 class Store {
 public:
-    std::vector<Val> vals;
-    std::vector<uint32_t> pool;
+    ValTable vals;
     std::vector<std::string> names;  // string / model value text, by aux index
+    // Set while worker threads search: interning then takes the lock (one table, one
+    // lock; reads of interned values need none, their storage never moves).
+    bool concurrent = false;
 
     Store() {
-        vals.push_back({K_BOOL, 0, 0, 0, 11});
-        vals.push_back({K_BOOL, 0, 0, 1, 13});
+        vals.push_back({K_BOOL, 0, 0, 0, 11, nullptr});
+        vals.push_back({K_BOOL, 0, 0, 1, 13, nullptr});
         table_.assign(1024, kUnset);
     }
 
@@ -77,15 +104,17 @@ public:
     }
     Kind kind(uint32_t id) const { return is_int(id) ? K_INT : vals[id].kind; }
     uint32_t len(uint32_t id) const { return vals[id].len; }
-    const uint32_t* items(uint32_t id) const { return pool.data() + vals[id].off; }
+    const uint32_t* items(uint32_t id) const { return vals[id].data; }
 
     uint32_t mk_str(Kind k, const std::string& s, int64_t rank) {
+        std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
+        if (concurrent) lock.lock();
         auto key = std::make_pair(int(k), s);
         auto it = strings_.find(key);
         if (it != strings_.end()) return it->second;
         uint32_t id = uint32_t(vals.size());
         names.push_back(s);
-        vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s))});
+        vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s)), nullptr});
         strings_[key] = id;
         return id;
     }
@@ -95,19 +124,21 @@ public:
         uint64_t h = mix(k, n);
         for (uint32_t i = 0; i < (k == K_FUN ? 2 * n : n); ++i) h = mix(h, it[i]);
         uint32_t cnt = k == K_FUN ? 2 * n : n;
+        std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
+        if (concurrent) lock.lock();
         size_t mask = table_.size() - 1;
         size_t pos = h & mask;
         while (table_[pos] != kUnset) {
             const Val& v = vals[table_[pos]];
             if (v.hash == h && v.kind == k && v.len == n &&
-                std::equal(it, it + cnt, pool.begin() + v.off))
+                std::equal(it, it + cnt, v.data))
                 return table_[pos];
             pos = (pos + 1) & mask;
         }
         uint32_t id = uint32_t(vals.size());
-        uint32_t off = uint32_t(pool.size());
-        pool.insert(pool.end(), it, it + cnt);
-        vals.push_back({k, off, n, 0, h});
+        uint32_t* data = alloc(cnt);
+        std::copy(it, it + cnt, data);
+        vals.push_back({k, 0, n, 0, h, data});
         table_[pos] = id;
         if (++count_ * 2 > table_.size()) grow();
         return id;
@@ -180,9 +211,25 @@ public:
         }
         return false;
     }
-    size_t bytes() const { return vals.size() * sizeof(Val) + pool.size() * 4 + table_.size() * 4; }
+    size_t bytes() const { return vals.size() * sizeof(Val) + pooled_ * 4 + table_.size() * 4; }
 
 private:
+    std::mutex mu_;
+    std::vector<std::unique_ptr<uint32_t[]>> chunks_;  // the items of all values; never moved
+    uint32_t* free_ = nullptr;
+    size_t left_ = 0, pooled_ = 0;
+    uint32_t* alloc(size_t n) {
+        if (n > left_) {
+            left_ = std::max<size_t>(n, size_t(1) << 18);
+            chunks_.emplace_back(new uint32_t[left_]);
+            free_ = chunks_.back().get();
+        }
+        uint32_t* p = free_;
+        free_ += n;
+        left_ -= n;
+        pooled_ += n;
+        return p;
+    }
     std::vector<uint32_t> table_;
     size_t count_ = 0;
     std::map<std::pair<int, std::string>, uint32_t> strings_;
@@ -236,9 +283,36 @@ struct Ctx {
 class Engine;
 using Emit = void (Engine::*)(Ctx&, int leaf);
 
+// The new states of one level of a search with several workers, sharded by hash (a
+// lock per shard).  Where two workers find the same state, the one with the smaller
+// sort key (parent's position in the level, rank among its successors) is kept: the
+// one worker's search finds it first, so its parent and action are the ones recorded.
+struct Fresh {
+    static constexpr size_t kShards = 64;
+    struct Shard {
+        std::mutex mu;
+        std::vector<uint32_t> states, view_keys, table;
+        std::vector<uint64_t> keys;
+        std::vector<int32_t> leaves;
+    };
+    std::unique_ptr<Shard[]> shards{new Shard[kShards]};
+    size_t lo = 0, hi = 0;
+    std::atomic<size_t> next_parent{0};
+    std::atomic<bool> stop{false};  // a violation, deadlock, error: the level is searched again by one worker
+    void clear() {
+        for (size_t i = 0; i < kShards; ++i) {
+            Shard& sh = shards[i];
+            sh.states.clear(); sh.view_keys.clear(); sh.keys.clear(); sh.leaves.clear();
+            sh.table.assign(64, kUnset);
+        }
+        stop = false;
+    }
+};
+
 class Engine {
 public:
-    Store st;
+    std::shared_ptr<Store> store = std::make_shared<Store>();
+    Store& st = *store;
     int nvars = 0;
     std::vector<uint32_t> slots;
     std::vector<std::unique_ptr<Node>> nodes;
@@ -653,7 +727,10 @@ public:
     int emit_kind = 0;  // 0: init, 1: next
     void exec(Node* n, Ctx& c) {
         switch (n->op) {
-            case A_EMIT: on_emit(c, int(n->ints[0])); return;
+            case A_EMIT:
+                if (fresh_) offer(c, int(n->ints[0]));
+                else on_emit(c, int(n->ints[0]));
+                return;
             case A_FALSE: return;
             case A_GUARD:
                 if (boolean(n->kids[0], c, "action conjunct")) exec(n->k, c);
@@ -841,6 +918,17 @@ public:
         if (lvl > max_level()) level_start.push_back(uint32_t(nstates() - 1));
         if (nstates() % 20000 == 0) periodic();
     }
+    // The seen-set's index of a state (or view), -1 if it has none (read-only).
+    int64_t find(const uint32_t* x) const {
+        if (seen.empty()) return -1;
+        size_t mask = seen.size() - 1;
+        size_t pos = key_hash(x) & mask;
+        while (seen[pos] != kUnset) {
+            if (std::equal(x, x + key_len(), key_of(seen[pos]))) return seen[pos];
+            pos = (pos + 1) & mask;
+        }
+        return -1;
+    }
     size_t rss_mb() const {
         std::ifstream f("/proc/self/statm");
         size_t pages = 0, rss = 0;
@@ -856,6 +944,7 @@ public:
         auto now = std::chrono::steady_clock::now();
         if (!progress.is_none() && now - last_progress >= std::chrono::seconds(5)) {
             last_progress = now;
+            py::gil_scoped_acquire gil;
             progress(max_level(), generated, nstates(), nstates() - head);
         }
     }
@@ -916,8 +1005,12 @@ public:
                 emit_kind = 0;
                 Ctx c{nullptr, t.data(), nullptr};
                 exec(init, c);
-                if (!progress.is_none()) progress(-1, generated, nstates(), 0);  // initial states done
+                if (!progress.is_none()) {
+                    py::gil_scoped_acquire gil;
+                    progress(-1, generated, nstates(), 0);  // initial states done
+                }
                 emit_kind = 1;
+                if (workers > 1) search_levels();
                 while (head < nstates()) {
                     while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
                     std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
@@ -941,6 +1034,154 @@ public:
         }
     }
 
+    // ------------------------------------------------------------ several workers
+    // Level by level: the workers expand the current level's states (parents handed out
+    // in chunks) into Fresh; at the barrier the new states are sorted by key and stored
+    // as the one worker would store them.  A level where a worker meets a violation,
+    // deadlock or evaluation error is searched again by the one-worker loop (run()),
+    // which stops where the one worker stops, with its counts and trace.
+    int workers = 1;
+
+    void search_levels() {
+        std::vector<std::unique_ptr<Engine>> team;
+        for (int w = 0; w < workers; ++w) team.emplace_back(new Engine(*this, w));
+        Fresh fresh;
+        st.concurrent = true;
+        while (head < nstates()) {
+            while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
+            fresh.clear();
+            fresh.lo = head;
+            fresh.hi = nstates();
+            fresh.next_parent = head;
+            std::vector<std::thread> threads;
+            for (int w = 1; w < workers; ++w) threads.emplace_back(&Engine::work, team[size_t(w)].get(), &fresh);
+            team[0]->work(&fresh);
+            for (auto& th : threads) th.join();
+            if (fresh.stop) break;  // run() searches this level again with one worker
+            for (auto& w : team) { generated += w->generated; w->generated = 0; }
+            store_level(fresh);
+        }
+        st.concurrent = false;
+    }
+
+    // A worker: a view of the searching engine with its own scratch (slots, buffers).
+    Engine(Engine& m, int) : store(m.store), nvars(m.nvars), slots(m.slots) {
+        init = m.init;
+        next = m.next;
+        invariants = m.invariants;
+        constraints = m.constraints;
+        action_constraints = m.action_constraints;
+        check_deadlock = m.check_deadlock;
+        view = m.view;
+        emit_kind = 1;
+        master_ = &m;
+    }
+    Engine() = default;
+
+    void work(Fresh* f) {
+        constexpr size_t kChunk = 16;
+        std::vector<uint32_t> t(size_t(nvars), kUnset);
+        fresh_ = f;
+        const Engine& m = *master_;
+        try {
+            try {
+                while (!f->stop.load(std::memory_order_relaxed)) {
+                    size_t p0 = f->next_parent.fetch_add(kChunk);
+                    if (p0 >= f->hi) break;
+                    for (size_t p = p0; p < std::min(p0 + kChunk, f->hi); ++p) {
+                        Ctx nc{m.arena.data() + p * size_t(nvars), t.data(), nullptr};
+                        parent_ = p - f->lo;
+                        rank_ = 0;
+                        before = generated;
+                        exec(next, nc);
+                        if (generated == before && check_deadlock) throw Stop{};
+                    }
+                }
+            } catch (const EvalFailure&) {
+                f->stop = true;
+            }
+        } catch (const Stop&) {
+            f->stop = true;
+        }
+        fresh_ = nullptr;
+    }
+
+    // A successor found by a worker: new unless seen (in an earlier level, or earlier
+    // in this one by the one worker's order); a new state's invariants are checked.
+    void offer(Ctx& c, int lf) {
+        ++generated;
+        uint64_t key = (uint64_t(parent_) << 32) | rank_++;
+        for (int i = 0; i < nvars; ++i)
+            if (c.t[i] == kUnset) fail("successor state is not completely specified", 0);
+        Ctx sc{c.t, nullptr, nullptr};
+        bool in_model = holds_all(constraints, sc, nullptr);
+        if (in_model && !action_constraints.empty()) {
+            Ctx ac{c.s, c.t, nullptr};
+            in_model = holds_all(action_constraints, ac, nullptr);
+        }
+        if (in_model) {
+            uint32_t vk = view ? eval(view, sc) : 0;
+            const uint32_t* x = view ? &vk : c.t;
+            if (master_->find(x) >= 0 || !keep(x, c.t, vk, key, lf)) return;
+        }
+        if (!holds_all(invariants, sc, nullptr)) throw Stop{};
+    }
+
+    // Stores the state in its shard of Fresh; false if the shard has it with a smaller key.
+    bool keep(const uint32_t* x, const uint32_t* state, uint32_t vk, uint64_t key, int lf) {
+        uint64_t h = master_->key_hash(x);
+        Fresh::Shard& sh = fresh_->shards[(h >> 40) % Fresh::kShards];
+        std::lock_guard<std::mutex> lock(sh.mu);
+        size_t mask = sh.table.size() - 1, pos = h & mask;
+        int kl = key_len();
+        auto key_at = [&](uint32_t i) { return view ? &sh.view_keys[i] : &sh.states[size_t(i) * size_t(nvars)]; };
+        while (sh.table[pos] != kUnset) {
+            uint32_t i = sh.table[pos];
+            if (std::equal(x, x + kl, key_at(i))) {
+                if (sh.keys[i] < key) return false;
+                sh.keys[i] = key;
+                sh.leaves[i] = lf;
+                std::copy(state, state + nvars, sh.states.begin() + ptrdiff_t(i) * nvars);
+                return true;
+            }
+            pos = (pos + 1) & mask;
+        }
+        uint32_t i = uint32_t(sh.keys.size());
+        sh.table[pos] = i;
+        sh.keys.push_back(key);
+        sh.leaves.push_back(lf);
+        sh.states.insert(sh.states.end(), state, state + nvars);
+        if (view) sh.view_keys.push_back(vk);
+        if ((i + 1) * 2 > sh.table.size()) {
+            sh.table.assign(sh.table.size() * 2, kUnset);
+            mask = sh.table.size() - 1;
+            for (uint32_t j = 0; j <= i; ++j) {
+                const uint32_t* y = key_at(j);
+                size_t q = master_->key_hash(y) & mask;
+                while (sh.table[q] != kUnset) q = (q + 1) & mask;
+                sh.table[q] = j;
+            }
+        }
+        return true;
+    }
+
+    // The barrier: the level's new states, in the one worker's order.
+    void store_level(Fresh& f) {
+        std::vector<std::pair<uint64_t, uint64_t>> order;  // (key, shard << 32 | index)
+        for (size_t s = 0; s < Fresh::kShards; ++s)
+            for (size_t i = 0; i < f.shards[s].keys.size(); ++i) order.emplace_back(f.shards[s].keys[i], (s << 32) | i);
+        std::sort(order.begin(), order.end());
+        for (auto& o : order) {
+            Fresh::Shard& sh = f.shards[o.second >> 32];
+            size_t i = o.second & 0xFFFFFFFFu;
+            const uint32_t* x = &sh.states[i * size_t(nvars)];
+            if (view) view_key = sh.view_keys[i];
+            find_or_insert(view ? &view_key : x);
+            add(x, int32_t(f.lo + (o.first >> 32)), sh.leaves[i], cur_level + 1);
+        }
+        head = f.hi;
+    }
+
     py::object state(size_t i) const {
         std::vector<uint32_t> out(arena.begin() + i * size_t(nvars), arena.begin() + (i + 1) * size_t(nvars));
         return py::cast(out);
@@ -957,6 +1198,10 @@ public:
 private:
     std::vector<uint32_t> buf_;
     std::vector<py::object> keep_;
+    Fresh* fresh_ = nullptr;  // set in a worker during a level
+    const Engine* master_ = nullptr;
+    size_t parent_ = 0;
+    uint32_t rank_ = 0;
 };
 
 }  // namespace
@@ -997,7 +1242,8 @@ PYBIND11_MODULE(_tla_native, m) {
             e.progress = progress;
         })
         .def("set_view", [](Engine& e, py::handle v) { e.view = e.build(v); })
-        .def("run", &Engine::run)
+        .def("run", &Engine::run, py::call_guard<py::gil_scoped_release>())
+        .def_readwrite("workers", &Engine::workers)
         .def("state", &Engine::state)
         .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
         .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })

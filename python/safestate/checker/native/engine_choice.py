@@ -54,10 +54,8 @@ def check(model: Model, engine: str, workers: int = 1, graph: bool = False, max_
             raise UnsupportedError(f"{why}: not supported by the native engine")
         _note(f"{why}; using the Python engine")
         return explore_states(model, workers=workers, graph=graph, max_memory_mb=max_memory_mb, progress=progress)
-    if workers > 1:
-        _note("the native engine uses one worker")
     from .search import explore_native
-    result, error = explore_native(model, max_memory_mb, progress, run)
+    result, error = explore_native(model, max_memory_mb, progress, run, workers)
     if result is None:
         _note(f"the native engine stopped at an evaluation error ({error}); checking again with the Python "
               f"engine for TLC's report")

@@ -79,14 +79,16 @@ def native_unsupported(model: Model) -> UnsupportedError | None:
 
 def explore_native(model: Model, max_memory_mb: int | None = None,
                    progress: Callable[[str], None] | None = None,
-                   run: NativeRun | None = None) -> tuple[CheckResult | None, str]:
-    """Search with the C++ core (`run`: the model already translated).  Returns
+                   run: NativeRun | None = None, workers: int = 1) -> tuple[CheckResult | None, str]:
+    """Search with the C++ core (`run`: the model already translated) with `workers`
+    threads, whose result is the one worker's (counts, depth, trace).  Returns
     (result, "") or (None, why) after an evaluation error, which the Python engine
     then reports exactly."""
     start = time.monotonic()
     run = run or NativeRun(model)
     eng = run.engine
     eng.set_slots(run.nslots)
+    eng.workers = workers
     limit = max_memory_mb or default_memory_limit_mb()
 
     def report(level: int, generated: int, distinct: int, left: int) -> None:
