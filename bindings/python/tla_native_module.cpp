@@ -25,6 +25,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <time.h>
 #include <unordered_map>
 #include <vector>
 
@@ -43,6 +44,12 @@ struct EvalFailure {
     std::string message;
     int loc;
 };
+
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+}
 
 [[noreturn]] void fail(const std::string& msg, int loc) { throw EvalFailure{msg, loc}; }
 
@@ -1041,11 +1048,17 @@ public:
     // deadlock or evaluation error is searched again by the one-worker loop (run()),
     // which stops where the one worker stops, with its counts and trace.
     int workers = 1;
+    // CPU seconds: each worker's (in levels), and the levels' slowest worker's, summed
+    // (the search's critical path, without the serial part: what wall time would be on idle cores).
+    std::vector<double> worker_cpu;
+    double critical_cpu = 0;
+    double level_cpu_ = 0;
 
     void search_levels() {
         std::vector<std::unique_ptr<Engine>> team;
         for (int w = 0; w < workers; ++w) team.emplace_back(new Engine(*this, w));
         Fresh fresh;
+        worker_cpu.assign(size_t(workers), 0.0);
         st.concurrent = true;
         while (head < nstates()) {
             while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
@@ -1057,6 +1070,12 @@ public:
             for (int w = 1; w < workers; ++w) threads.emplace_back(&Engine::work, team[size_t(w)].get(), &fresh);
             team[0]->work(&fresh);
             for (auto& th : threads) th.join();
+            double slowest = 0;
+            for (size_t w = 0; w < team.size(); ++w) {
+                worker_cpu[w] += team[w]->level_cpu_;
+                slowest = std::max(slowest, team[w]->level_cpu_);
+            }
+            critical_cpu += slowest;
             if (fresh.stop) break;  // run() searches this level again with one worker
             for (auto& w : team) { generated += w->generated; w->generated = 0; }
             store_level(fresh);
@@ -1082,6 +1101,7 @@ public:
         constexpr size_t kChunk = 16;
         std::vector<uint32_t> t(size_t(nvars), kUnset);
         fresh_ = f;
+        double cpu0 = thread_cpu_seconds();
         const Engine& m = *master_;
         try {
             try {
@@ -1104,6 +1124,7 @@ public:
             f->stop = true;
         }
         fresh_ = nullptr;
+        level_cpu_ = thread_cpu_seconds() - cpu0;
     }
 
     // A successor found by a worker: new unless seen (in an earlier level, or earlier
@@ -1244,6 +1265,8 @@ PYBIND11_MODULE(_tla_native, m) {
         .def("set_view", [](Engine& e, py::handle v) { e.view = e.build(v); })
         .def("run", &Engine::run, py::call_guard<py::gil_scoped_release>())
         .def_readwrite("workers", &Engine::workers)
+        .def_readonly("worker_cpu", &Engine::worker_cpu)
+        .def_readonly("critical_cpu", &Engine::critical_cpu)
         .def("state", &Engine::state)
         .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
         .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })

@@ -71,15 +71,57 @@ def test_native_engine_gives_the_python_engines_result_or_refuses(folder: Path, 
 ])
 def test_native_engine_gives_the_python_engines_result_on_bench_specs(spec: str, cfg: str, distinct: int | None,
                                                                       tmp_path: Path) -> None:
-    text = (BENCH / f"{spec}.cfg").read_text()
-    body = text[text.index("CONSTANTS"):text.index("SPECIFICATION")]
-    (tmp_path / f"{spec}.tla").write_text((BENCH / f"{spec}.tla").read_text())
-    (tmp_path / f"{spec}.cfg").write_text(text.replace(body, f"CONSTANTS\n    {cfg}\n"))
-    native, _ = explore_native(load_model(str(tmp_path / f"{spec}.tla")))
-    python = explore_states(load_model(str(tmp_path / f"{spec}.tla")))
+    tla = _bench_spec(spec, cfg, tmp_path)
+    native, _ = explore_native(load_model(tla))
+    python = explore_states(load_model(tla))
     assert native is not None and _outcome(native) == _outcome(python)
     if distinct is not None:  # every combination of counter values is reachable
         assert native.distinct_states == distinct
+
+
+ACCEPTED_CASES = [(folder, name) for folder, names in ACCEPTED.items() for name in names]
+
+
+@pytest.mark.parametrize("folder,name", ACCEPTED_CASES, ids=[f"{f.name}/{n}" for f, n in ACCEPTED_CASES])
+def test_native_engine_with_two_workers_gives_the_one_workers_result(folder: Path, name: str) -> None:
+    # Issue 10: several workers report what one worker reports — verdict, counts, depth,
+    # states left, violated invariant and the same (shortest, first-found) trace.
+    tla = str(folder / f"{name}.tla")
+    one, error_one = explore_native(load_model(tla), workers=1)
+    two, error_two = explore_native(load_model(tla), workers=2)
+    assert one is not None and two is not None, (error_one, error_two)
+    assert _outcome(two) == _outcome(one)
+    assert two.parallel is not None and two.parallel["workers"] == 2
+
+
+def _bench_spec(spec: str, cfg: str, tmp_path: Path, invariant: str | None = None) -> str:
+    """A bench spec with smaller constants (and optionally another invariant)."""
+    text = (BENCH / f"{spec}.cfg").read_text()
+    body = text[text.index("CONSTANTS"):text.index("SPECIFICATION")]
+    tla = (BENCH / f"{spec}.tla").read_text()
+    if invariant is not None:
+        tla = tla.replace("\n====", f"\nSmall == {invariant}\n====")
+        text = text.replace(body, body + "INVARIANT Small\n")
+    (tmp_path / f"{spec}.tla").write_text(tla)
+    (tmp_path / f"{spec}.cfg").write_text(text.replace(body, f"CONSTANTS\n    {cfg}\n"))
+    return str(tmp_path / f"{spec}.tla")
+
+
+@pytest.mark.parametrize("spec,cfg,invariant", [
+    ("Counters", "A = 5\n    B = 4\n    C = 3\n    D = 7", None),
+    # Wide levels where the violating state is reached from many parents: the trace and
+    # the counts must be the one worker's, not whichever thread got there first.
+    ("Counters", "A = 5\n    B = 4\n    C = 3\n    D = 7", "a + b + c + d < 9"),
+    ("QueueMutex", "N = 3\n    MaxTicket = 3\n    MaxEntries = 2", None),
+])
+def test_native_engine_with_two_workers_gives_the_one_workers_result_on_wide_levels(
+        spec: str, cfg: str, invariant: str | None, tmp_path: Path) -> None:
+    tla = _bench_spec(spec, cfg, tmp_path, invariant)
+    one, _ = explore_native(load_model(tla), workers=1)
+    two, _ = explore_native(load_model(tla), workers=2)
+    assert one is not None and two is not None
+    assert _outcome(two) == _outcome(one)
+    assert one.result == ("success" if invariant is None else "safety failure")
 
 
 def test_native_engine_refuses_an_unsupported_construct_with_its_position(tmp_path: Path) -> None:
@@ -105,6 +147,13 @@ def test_native_engine_leaves_an_evaluation_error_to_the_python_engine() -> None
     assert native.returncode == python.returncode != 0
     strip = lambda out: {k: v for k, v in json.loads(out).items() if k != "seconds"}  # noqa: E731
     assert strip(native.stdout) == strip(python.stdout)
+
+
+def test_native_engine_with_two_workers_stops_at_the_one_workers_evaluation_error() -> None:
+    spec = str(ERRORS / "HeadOfEmpty.tla")
+    one = explore_native(load_model(spec), workers=1)
+    two = explore_native(load_model(spec), workers=2)
+    assert one[0] is None and one == two
 
 
 def test_native_engine_cli_reports_what_the_python_engine_reports() -> None:

@@ -104,11 +104,25 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
         eng.set_view(run.view)
     eng.configure(run.init, run.next, run.invariants, run.constraints, run.action_constraints,
                   model.check_deadlock, limit, report)
+    cpu_start = time.process_time()
     eng.run()
     result = _result(run, limit)
     if result is not None:
         result.seconds = time.monotonic() - start
+        if workers > 1:
+            result.parallel = _cpu_report(workers, list(eng.worker_cpu), eng.critical_cpu,
+                                          time.process_time() - cpu_start)
     return result, eng.error
+
+
+def _cpu_report(workers: int, worker_cpu: list[float], critical_cpu: float, run_cpu: float) -> dict:
+    """`--json`'s "parallel", as the Python engine's (parallel.py): the threads' CPU in
+    the levels they searched together, the rest (initial states, barriers, a level
+    searched again by one worker) as the coordinator's."""
+    coordinator = run_cpu - sum(worker_cpu)
+    return {"workers": workers, "worker_cpu_seconds": [round(c, 3) for c in worker_cpu],
+            "coordinator_cpu_seconds": round(coordinator, 3),
+            "critical_path_cpu_seconds": round(coordinator + critical_cpu, 3)}
 
 
 def _result(run: NativeRun, limit_mb: int) -> CheckResult | None:
