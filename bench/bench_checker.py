@@ -16,7 +16,7 @@ Informational only: never pass/fail.
 Default specs: bench/specs/*.tla and the flagship model with its CI .cfg.
 
 With `--engines python,native` (default) each of our runs is made with each engine
-(`safestate check --engine E`); the native engine runs with one worker only.
+(`safestate check --engine E`).
 
 usage: bench/bench_checker.py [--workers 1,2] [--engines python,native] [--quick] [SPEC.tla[:CFG] ...]
 """
@@ -136,8 +136,6 @@ def main() -> int:
         for w in counts:
             t = run_theirs(jar, tla, cfg, w) if jar else None
             for engine in engines:
-                if engine == "native" and w > 1:
-                    continue  # the native core has one worker
                 r = run_ours(tla, cfg, w, engine)
                 ratios = []
                 if t is not None and t.rate:

@@ -852,8 +852,13 @@ public:
     std::vector<uint32_t> arena;  // nvars ids per state
     std::vector<int32_t> parent, leaf;
     std::vector<uint32_t> level_start;  // index of the first state of each level (1-based levels)
-    std::vector<uint32_t> seen;
-    size_t seen_count = 0;
+    // The seen-set, in shards by hash (Fresh's shards): at a level's barrier each worker
+    // adds the new states of its own shards.
+    struct SeenShard {
+        std::vector<uint32_t> table;
+        size_t count = 0;
+    };
+    std::vector<SeenShard> seen = std::vector<SeenShard>(Fresh::kShards);
     uint64_t generated = 0;
     size_t head = 0;
     Node* init = nullptr;
@@ -892,30 +897,44 @@ public:
         for (int i = 0; i < key_len(); ++i) h = mix(h, x[i]);
         return h;
     }
+    static size_t shard_of(uint64_t h) { return (h >> 40) % Fresh::kShards; }
     // Index of the state, or -1 after adding it to the seen-set (then the caller stores it).
     int64_t find_or_insert(const uint32_t* x) {
-        if ((seen_count + 1) * 2 > seen.size()) grow_seen();
-        size_t mask = seen.size() - 1;
-        size_t pos = key_hash(x) & mask;
-        while (seen[pos] != kUnset) {
-            const uint32_t* y = key_of(seen[pos]);
-            if (std::equal(x, x + key_len(), y)) return seen[pos];
+        uint64_t h = key_hash(x);
+        int64_t found = find(x, h);
+        if (found < 0) insert(h, uint32_t(nstates()));
+        return found;
+    }
+    // The seen-set's index of a state (or view), -1 if it has none (read-only).
+    int64_t find(const uint32_t* x, uint64_t h) const {
+        const SeenShard& sh = seen[shard_of(h)];
+        if (sh.table.empty()) return -1;
+        size_t mask = sh.table.size() - 1;
+        size_t pos = h & mask;
+        while (sh.table[pos] != kUnset) {
+            if (std::equal(x, x + key_len(), key_of(sh.table[pos]))) return sh.table[pos];
             pos = (pos + 1) & mask;
         }
-        seen[pos] = uint32_t(nstates());
-        ++seen_count;
         return -1;
     }
-    void grow_seen() {
-        std::vector<uint32_t> old(std::max<size_t>(seen.size() * 2, 1024), kUnset);
-        old.swap(seen);
-        size_t mask = seen.size() - 1;
-        for (uint32_t id : old) {
-            if (id == kUnset) continue;
-            size_t pos = key_hash(key_of(id)) & mask;
-            while (seen[pos] != kUnset) pos = (pos + 1) & mask;
-            seen[pos] = id;
+    // Adds a state known to be new (its key's hash h) to its shard.
+    void insert(uint64_t h, uint32_t idx) {
+        SeenShard& sh = seen[shard_of(h)];
+        if ((sh.count + 1) * 2 > sh.table.size()) {
+            std::vector<uint32_t> old(std::max<size_t>(sh.table.size() * 2, 256), kUnset);
+            old.swap(sh.table);
+            size_t mask = sh.table.size() - 1;
+            for (uint32_t id : old) {
+                if (id == kUnset) continue;
+                size_t pos = key_hash(key_of(id)) & mask;
+                while (sh.table[pos] != kUnset) pos = (pos + 1) & mask;
+                sh.table[pos] = id;
+            }
         }
+        size_t mask = sh.table.size() - 1, pos = h & mask;
+        while (sh.table[pos] != kUnset) pos = (pos + 1) & mask;
+        sh.table[pos] = idx;
+        ++sh.count;
     }
     void add(const uint32_t* x, int32_t par, int32_t lf, int lvl) {
         arena.insert(arena.end(), x, x + nvars);
@@ -924,17 +943,6 @@ public:
         leaf.push_back(lf);
         if (lvl > max_level()) level_start.push_back(uint32_t(nstates() - 1));
         if (nstates() % 20000 == 0) periodic();
-    }
-    // The seen-set's index of a state (or view), -1 if it has none (read-only).
-    int64_t find(const uint32_t* x) const {
-        if (seen.empty()) return -1;
-        size_t mask = seen.size() - 1;
-        size_t pos = key_hash(x) & mask;
-        while (seen[pos] != kUnset) {
-            if (std::equal(x, x + key_len(), key_of(seen[pos]))) return seen[pos];
-            pos = (pos + 1) & mask;
-        }
-        return -1;
     }
     size_t rss_mb() const {
         std::ifstream f("/proc/self/statm");
@@ -1078,7 +1086,7 @@ public:
             critical_cpu += slowest;
             if (fresh.stop) break;  // run() searches this level again with one worker
             for (auto& w : team) { generated += w->generated; w->generated = 0; }
-            store_level(fresh);
+            store_level(fresh, team);
         }
         st.concurrent = false;
     }
@@ -1143,15 +1151,15 @@ public:
         if (in_model) {
             uint32_t vk = view ? eval(view, sc) : 0;
             const uint32_t* x = view ? &vk : c.t;
-            if (master_->find(x) >= 0 || !keep(x, c.t, vk, key, lf)) return;
+            uint64_t h = master_->key_hash(x);
+            if (master_->find(x, h) >= 0 || !keep(x, h, c.t, vk, key, lf)) return;
         }
         if (!holds_all(invariants, sc, nullptr)) throw Stop{};
     }
 
     // Stores the state in its shard of Fresh; false if the shard has it with a smaller key.
-    bool keep(const uint32_t* x, const uint32_t* state, uint32_t vk, uint64_t key, int lf) {
-        uint64_t h = master_->key_hash(x);
-        Fresh::Shard& sh = fresh_->shards[(h >> 40) % Fresh::kShards];
+    bool keep(const uint32_t* x, uint64_t h, const uint32_t* state, uint32_t vk, uint64_t key, int lf) {
+        Fresh::Shard& sh = fresh_->shards[shard_of(h)];
         std::lock_guard<std::mutex> lock(sh.mu);
         size_t mask = sh.table.size() - 1, pos = h & mask;
         int kl = key_len();
@@ -1186,8 +1194,9 @@ public:
         return true;
     }
 
-    // The barrier: the level's new states, in the one worker's order.
-    void store_level(Fresh& f) {
+    // The barrier: the level's new states, in the one worker's order, stored; then each
+    // worker adds those of its shards to the seen-set.
+    void store_level(Fresh& f, std::vector<std::unique_ptr<Engine>>& team) {
         std::vector<std::pair<uint64_t, uint64_t>> order;  // (key, shard << 32 | index)
         for (size_t s = 0; s < Fresh::kShards; ++s)
             for (size_t i = 0; i < f.shards[s].keys.size(); ++i) order.emplace_back(f.shards[s].keys[i], (s << 32) | i);
@@ -1197,10 +1206,18 @@ public:
             size_t i = o.second & 0xFFFFFFFFu;
             const uint32_t* x = &sh.states[i * size_t(nvars)];
             if (view) view_key = sh.view_keys[i];
-            find_or_insert(view ? &view_key : x);
+            sh.keys[i] = nstates();  // now the state's index
             add(x, int32_t(f.lo + (o.first >> 32)), sh.leaves[i], cur_level + 1);
         }
         head = f.hi;
+        auto index = [this, &f](size_t w) {
+            for (size_t s = w; s < Fresh::kShards; s += size_t(workers))
+                for (uint64_t idx : f.shards[s].keys) insert(key_hash(key_of(uint32_t(idx))), uint32_t(idx));
+        };
+        std::vector<std::thread> threads;
+        for (size_t w = 1; w < team.size(); ++w) threads.emplace_back(index, w);
+        index(0);
+        for (auto& th : threads) th.join();
     }
 
     py::object state(size_t i) const {
@@ -1224,6 +1241,13 @@ private:
     size_t parent_ = 0;
     uint32_t rank_ = 0;
 };
+
+
+size_t seen_bytes(const Engine& e) {
+    size_t n = 0;
+    for (auto& sh : e.seen) n += sh.table.capacity() * 4;
+    return n;
+}
 
 }  // namespace
 
@@ -1284,6 +1308,6 @@ PYBIND11_MODULE(_tla_native, m) {
         .def_readonly("error_loc", &Engine::error_loc)
         .def_property_readonly("bytes", [](Engine& e) {
             return e.st.bytes() + e.arena.capacity() * 4 + e.parent.capacity() * 4 + e.leaf.capacity() * 4 +
-                   e.seen.capacity() * 4 + e.view_keys.capacity() * 4;
+                   seen_bytes(e) + e.view_keys.capacity() * 4;
         });
 }
