@@ -1197,10 +1197,20 @@ public:
     // The barrier: the level's new states, in the one worker's order, stored; then each
     // worker adds those of its shards to the seen-set.
     void store_level(Fresh& f, std::vector<std::unique_ptr<Engine>>& team) {
-        std::vector<std::pair<uint64_t, uint64_t>> order;  // (key, shard << 32 | index)
+        // Sorted by key: bucketed by parent (counting sort), each parent's few by rank.
+        size_t nparents = f.hi - f.lo, total = 0;
+        std::vector<uint32_t> start(nparents + 1, 0);
         for (size_t s = 0; s < Fresh::kShards; ++s)
-            for (size_t i = 0; i < f.shards[s].keys.size(); ++i) order.emplace_back(f.shards[s].keys[i], (s << 32) | i);
-        std::sort(order.begin(), order.end());
+            for (uint64_t key : f.shards[s].keys) ++start[(key >> 32) + 1], ++total;
+        for (size_t p = 0; p < nparents; ++p) start[p + 1] += start[p];
+        std::vector<std::pair<uint64_t, uint64_t>> order(total);  // (key, shard << 32 | index)
+        for (size_t s = 0; s < Fresh::kShards; ++s)
+            for (size_t i = 0; i < f.shards[s].keys.size(); ++i) {
+                uint64_t key = f.shards[s].keys[i];
+                order[start[key >> 32]++] = {key, (uint64_t(s) << 32) | i};
+            }
+        for (size_t p = 0, b = 0; p < nparents; b = start[p++])
+            if (start[p] - b > 1) std::sort(order.begin() + ptrdiff_t(b), order.begin() + start[p]);
         for (auto& o : order) {
             Fresh::Shard& sh = f.shards[o.second >> 32];
             size_t i = o.second & 0xFFFFFFFFu;
@@ -1210,14 +1220,19 @@ public:
             add(x, int32_t(f.lo + (o.first >> 32)), sh.leaves[i], cur_level + 1);
         }
         head = f.hi;
-        auto index = [this, &f](size_t w) {
+        std::vector<double> cpu(team.size(), 0.0);
+        auto index = [this, &f, &cpu](size_t w) {
+            double cpu0 = thread_cpu_seconds();
             for (size_t s = w; s < Fresh::kShards; s += size_t(workers))
                 for (uint64_t idx : f.shards[s].keys) insert(key_hash(key_of(uint32_t(idx))), uint32_t(idx));
+            cpu[w] = thread_cpu_seconds() - cpu0;
         };
         std::vector<std::thread> threads;
         for (size_t w = 1; w < team.size(); ++w) threads.emplace_back(index, w);
         index(0);
         for (auto& th : threads) th.join();
+        for (size_t w = 0; w < cpu.size(); ++w) worker_cpu[w] += cpu[w];
+        critical_cpu += *std::max_element(cpu.begin(), cpu.end());
     }
 
     py::object state(size_t i) const {
