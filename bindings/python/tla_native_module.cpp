@@ -4,8 +4,10 @@
 //
 // Values are interned (hash-consed) and named by 32-bit ids; small integers are tagged
 // inline.  A state is an array of ids in one arena that is also the breadth-first queue;
-// the seen-set is an open-addressing table of state indices over that arena (exact: the
-// id arrays are compared on a hash hit).  Init, Next, invariants and constraints arrive
+// the seen-set is open-addressing tables (shards by hash) of state indices over that
+// arena (exact: the id arrays are compared on a hash hit).  With several workers the
+// search is level by level in threads (Engine::search_levels), with the one worker's
+// results.  Init, Next, invariants and constraints arrive
 // from Python (python/safestate/checker/native/translate.py) as a tree of tuples
 // (op, loc, ints, value id, kids, continuation) built in the same order as the Python
 // action compiler's closures, so the successors come in TLC's order.  Any evaluation
