@@ -131,9 +131,14 @@ class Gen:
             return f"{self.e_rec(d - 1)}.g"
         if k == 10:
             v = self.name("t")
-            return (f"(\\E {v} \\in SUBSET {self.e_set(d - 1)} : "
+            return (f"(\\E {v} \\in SUBSET {self.operand(self.e_set(d - 1))} : "
                     f"Cardinality({v}) = {self.r.randint(0, 2)})")
         return f"({self.e_fun(d - 1)} = {self.e_fun(d - 1)})"
+
+    def operand(self, s: str) -> str:
+        """A set expression as the operand of SUBSET or \\X: as written (grammars 1-3;
+        see `Gen3.operand` for grammar 4)."""
+        return s
 
     def e_str(self, d: int) -> str:
         leaves = STRINGS + self.vars_of(STR)
@@ -237,13 +242,14 @@ class Gen:
         return self.expr(ty, d)
 
 
-GRAMMARS = (1, 2, 3)
+GRAMMARS = (1, 2, 3, 4)
 
 
 def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     """Spec number `index` of the run seeded with `seed` (reproducible on its own).
     Grammar 2 adds branching assignments (``x' = a \\/ x' = b``), \\E over strings
-    and \\E with two binders; grammar 3 the constructs listed in `grammar3.py`.
+    and \\E with two binders; grammar 3 the constructs listed in `grammar3.py`;
+    grammar 4 is grammar 3 with the operands of SUBSET and \\X parenthesised.
     Specs of a lower grammar are unchanged by a higher one."""
     from .grammar3 import PSET, RECURSIVE_SUM, TYPES3, Gen3
     rng = random.Random(f"{seed}:{index}")
