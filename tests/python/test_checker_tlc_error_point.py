@@ -12,7 +12,7 @@ from safestate.difftest.ours import summary_of
 
 EXPECTED = load_expected(CORPUS)
 SPECS = ["FairEnabledJavaError", "FairEnabledJavaErrorSafety", "PropertyPredicateError",
-         "ActionConstraintError", "ComparisonNonInteger"]
+         "ActionConstraintError", "ComparisonNonInteger", "IntervalNonInteger"]
 
 
 @pytest.mark.parametrize("name", SPECS)

@@ -1250,8 +1250,17 @@ class Compiler:
             if fast is not None:
                 return fast
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(env.scope.lookup(".."), BuiltinSym):
-            lo, hi = self.expr(e.lhs, env), self.expr(e.rhs, env)
-            return lambda s, t, L, v: type(v) is int and lo(s, t, L) <= v <= hi(s, t, L)
+            lo = self._interval_bound(e.lhs, self.expr(e.lhs, env), env)
+            hi = self._interval_bound(e.rhs, self.expr(e.rhs, env), env)
+            loc = e.loc
+
+            def in_interval(s: Any, t: Any, L: list, v: Value) -> bool:
+                a, b = lo(s, t, L), hi(s, t, L)
+                if type(a) is not int or type(b) is not int:
+                    first = type(a) is not int
+                    raise non_integer_error("..", a if first else b, first).with_loc(loc)
+                return type(v) is int and a <= v <= b
+            return in_interval
         if isinstance(e, A.FnSet):
             dom = self.expr(e.domain, env)
             rng = self.membership(e.range, env)
