@@ -128,11 +128,11 @@ class Explorer:
         self.edge_src = array("i")
         self.edge_dst = array("i")
         # With liveness: states generated and distinct after each expansion, for TLC's
-        # counts at an error its per-state liveness check meets (`liveness_error_point`).
+        # counts at an error its per-state liveness check meets (`_at_tlc_liveness_error`).
         self.generated_after = array("q")
+        self.distinct_after = array("q")
         # The successor whose CONSTRAINT or ACTION_CONSTRAINT failed to evaluate.
         self.failed_successor: Step | None = None
-        self.distinct_after = array("q")
 
     # ---------------------------------------------------------------- bookkeeping
     def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
