@@ -475,7 +475,19 @@ def _infinite(v: Value) -> bool:
     return isinstance(v, LazySet) and not v.finite
 
 
+def _empty_enumerated(v: Value) -> bool:
+    """An empty set that TLC holds as a SetEnumValue or an IntervalValue (its
+    `Reducible` sets)."""
+    return (type(v) is frozenset and not v) or (type(v) is IntervalSet and v.size() == 0)
+
+
 def cup(a: Value, b: Value) -> Value:
+    # TLC returns the other operand itself for `{} \cup S` (and for `S \cup {}` when S is
+    # not a SetEnumValue/IntervalValue), so `{} \cup 0..2` stays `0..2` in a trace.
+    if is_set(b) and _empty_enumerated(a):
+        return b
+    if is_set(a) and _empty_enumerated(b) and type(a) not in (frozenset, IntervalSet):
+        return a
     if _infinite(a) or _infinite(b):
         _need_sets(a, b, "\\cup")
         return FilteredSet(lambda v: member(v, a) or member(v, b), f"{fmt(a)} \\cup {fmt(b)}")
