@@ -12,7 +12,8 @@ from safestate.difftest.ours import summary_of
 
 EXPECTED = load_expected(CORPUS)
 SPECS = ["FairEnabledJavaError", "FairEnabledJavaErrorSafety", "PropertyPredicateError",
-         "ActionConstraintError", "ComparisonNonInteger", "IntervalNonInteger"]
+         "ActionConstraintError", "ComparisonNonInteger", "IntervalNonInteger",
+         "PropertyAssert"]
 
 
 @pytest.mark.parametrize("name", SPECS)

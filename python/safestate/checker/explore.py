@@ -474,7 +474,7 @@ def _at_tlc_liveness_error(model: Model, explorer: Explorer, result: CheckResult
     one stops its search there, not after it, with exit code 255 (an Assert keeps 14):
     `result` gets the counts, depth and trace of that moment."""
     err = result.error
-    if err is None or err.kind not in ("eval", "module eval") or not explorer.distinct_after:
+    if err is None or err.kind not in ("eval", "module eval", "assert") or not explorer.distinct_after:
         return
     preds = [f.enabled for f in model.fairness]
     for ob in model.liveness:
