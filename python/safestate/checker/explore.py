@@ -127,8 +127,10 @@ class Explorer:
         self.live_edges = bool(model.liveness)
         self.edge_src = array("i")
         self.edge_dst = array("i")
-        # With liveness: states generated and distinct after each expansion, for TLC's
-        # counts at an error its per-state liveness check meets (`_at_tlc_liveness_error`).
+        # With liveness, once state i is expanded: the states generated and distinct (TLC's
+        # counts where it stops at a temporal property's finite counterexample,
+        # `tableau_safety.py`, or at an error its per-state liveness check meets,
+        # `_at_tlc_liveness_error`).
         self.generated_after = array("q")
         self.distinct_after = array("q")
         # The successor whose CONSTRAINT or ACTION_CONSTRAINT failed to evaluate.
@@ -326,6 +328,9 @@ class Explorer:
         m = self.m
         while self.head < len(self.states):
             self.expand(self.head)
+            if self.live_edges:
+                self.generated_after.append(self.generated)
+                self.distinct_after.append(len(self.states))
             self.head += 1
 
     def expand(self, i: int) -> None:
@@ -402,9 +407,6 @@ class Explorer:
             raise
         if self.generated == before and m.check_deadlock:
             self._finish("deadlock failure", None, i)
-        if self.live_edges:
-            self.generated_after.append(self.generated)
-            self.distinct_after.append(len(self.states))
 
     def _fairness_fails(self, cur: tuple) -> bool:
         """Whether TLC's liveness check fails on `cur` too: TLC 1.8.0 evaluates the
