@@ -5,7 +5,8 @@ xdist's `loadfile` keeps every test of a file on one worker (module and session 
 are built once) but hands the files out by their number of tests, so a long file with few
 tests (the model mutants: one model check each) started last and ran alone at the end.
 This scheduler keeps the file as the unit, except for the tests named in SPREAD
-(independent tests without a shared module fixture: each is a unit of its own), and always
+(independent tests without a shared module fixture: each is a unit of its own: the model
+mutants, their BMC runs and the models' full checks), and always
 hands a worker the unit with the largest measured cost (`test_costs.json`, CPU seconds
 per test, written by `scripts/test_costs.py --write` from a run with
 SAFESTATE_TEST_COSTS set; a test not listed costs DEFAULT_SECONDS).  The order changes nothing a test sees: only which
@@ -27,7 +28,9 @@ DEFAULT_SECONDS = 0.5
 # Test functions whose parametrized cases are independent (own tmp_path, no module fixture):
 # each case may run on either worker.
 SPREAD = (
-    "tests/python/test_model_mutants.py::test_mutant_is_killed_by_check_alone[",
+    "tests/python/test_model_mutants.py::test_mutant_is_killed_by_check_alone[",  # a model check each
+    "tests/python/test_prove_mutants.py::test_bmc_agrees_with_tlc[",  # a BMC run each
+    "tests/python/test_models.py::test_model_passes_every_invariant_with_tlc_counts[",  # a whole model each
 )
 
 
