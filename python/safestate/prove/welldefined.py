@@ -19,7 +19,7 @@ from typing import Any
 import z3
 
 from .engines.result import Result
-from .obligations import Obligation
+from .obligations import Obligation, conjunction
 from .system import System
 
 
@@ -88,7 +88,7 @@ def _failing(sys: System, s: z3.Solver, tagged: list[tuple[Obligation, str]]) ->
     open_ = list(tagged)
     while open_:
         s.push()
-        s.add(z3.Not(z3.And([o.cond for o, _ in open_])))
+        s.add(z3.Not(conjunction([o.cond for o, _ in open_])))
         r = s.check()
         m = s.model() if r == z3.sat else None
         s.pop()
@@ -140,11 +140,11 @@ def undefined_at(sys: System, s: z3.Solver, parts: Parts, k: int) -> Undefined |
     here: list[z3.BoolRef] = []  # one substitution per part, not per obligation (the press has ~10^5)
     predicates = [o.cond for obls in parts.predicates.values() for o in obls]
     if predicates:
-        here.append(sys.at(z3.And(predicates), k))
+        here.append(sys.at(conjunction(predicates), k))
     if parts.trans:
-        here.append(sys.trans_at(k, z3.And([o.cond for o in parts.trans])))
+        here.append(sys.trans_at(k, conjunction([o.cond for o in parts.trans])))
     if k == 0 and parts.init:
-        here.append(sys.init_at(0, z3.And([o.cond for o in parts.init])))
+        here.append(sys.init_at(0, conjunction([o.cond for o in parts.init])))
     if not here:
         return None
     s.push()
