@@ -126,3 +126,20 @@ def test_bmc_reports_tail_and_choose_in_next(capsys: pytest.CaptureFixture[str])
         assert code == 13 and report is not None, err
         r = by_invariant(report)["TypeOK"]
         assert r["status"] == "ill-defined" and site in r["undefined"] and r["k"] == steps
+
+
+def test_init_without_a_state_makes_every_proof_vacuous(capsys: pytest.CaptureFixture[str]) -> None:
+    code, report, err = prove(capsys, spec("WdVacuousInit.tla"))
+    assert report is not None, err
+    r = by_invariant(report)["Positive"]
+    assert r["status"] == "vacuous" and r["vacuity"] == ["Init has no state satisfying the ASSUMEs"]
+    assert code == 1
+
+
+def test_strengthening_that_excludes_init_fails_the_proof(capsys: pytest.CaptureFixture[str]) -> None:
+    """The base case meets it first: the result names the strengthening, never 'proved'."""
+    code, report, err = prove(capsys, spec("WdStrengthen.tla"), "--proofs", spec("WdStrengthen.toml"))
+    assert report is not None, err
+    r = by_invariant(report)["NonNegative"]
+    assert r["status"] == "unknown" and "strengthening Wrong" in r["note"] and "not an invariant" in r["note"]
+    assert code == 1
