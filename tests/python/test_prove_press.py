@@ -1,9 +1,8 @@
 """The hydraulic press on the state-chain engine (SCH-01..SCH-03, SCH-05, INV-PRESS): its
 11 properties proved for every reachable state by one joint 1-induction with the plan's
 strengthening (proofs/HydraulicPress.toml), every well-definedness obligation of the chain
-engine holding and no proof vacuous. The translation carries ~480,000 obligations (every
-call-log and function application under its path conditions); it used to take minutes
-and kept the press out of the test run (docs/prove.md, "Cost")."""
+engine holding and no proof vacuous. The translation carries ~490,000 obligations (every
+call-log and function application under its path conditions; docs/prove.md, "Cost")."""
 
 from __future__ import annotations
 
@@ -16,7 +15,11 @@ from prove_specs.helpers import MODELS, ROOT, by_invariant, prove  # noqa: I001 
 MODEL = os.path.join(MODELS, "HydraulicPress.tla")
 PLAN = os.path.join(ROOT, "proofs", "HydraulicPress.toml")
 
-pytestmark = pytest.mark.skipif(not os.path.exists(MODEL), reason="models/HydraulicPress.tla not written yet")
+# ~100 s CPU (README): too long for the default test run; the evidence package's pytest
+# step and `SAFESTATE_SLOW_PROOFS=1 pytest tests/python/test_prove_press.py` run it.
+pytestmark = [pytest.mark.skipif(not os.path.exists(MODEL), reason="models/HydraulicPress.tla not written yet"),
+              pytest.mark.skipif(not os.environ.get("SAFESTATE_SLOW_PROOFS"),
+                                 reason="the press's proofs take ~2 min CPU: set SAFESTATE_SLOW_PROOFS=1")]
 
 
 @pytest.mark.req("SCH-01", "SCH-02", "SCH-03", "SCH-05", "INV-PRESS")

@@ -29,7 +29,7 @@ from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoad
                            build_root_scope, load_module)
 from ..tla.values import ModelValue
 from .builtins import powerset
-from .obligations import Obligation, distinct
+from .obligations import Obligation, conjunction, distinct
 from .sets import EnumSet, PredSet, SetV
 from .translate import Ctx, Translator
 from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, is_z3, leaves
@@ -164,29 +164,15 @@ class System:
             n: _set_value(v, model, self.strings) for n, v in self.params.items() if isinstance(v, EnumSet)}
 
 
-def _quantified(*formulas: z3.ExprRef) -> bool:
-    """Does one of `formulas` contain a quantifier?  (Walks the DAG through the C API:
-    z3py's wrappers are slow; one walk for all, since thousands of well-definedness
-    obligations share their path conditions.)"""
-    from z3 import z3core as C
+def _quantified(*formulas: z3.BoolRef) -> bool:
+    """Does one of `formulas` contain a quantifier?  Asked of z3's own probe, inside z3:
+    a walk of the DAG from Python (even through the C API) cost seconds on the press,
+    whose ~500,000 well-definedness obligations are asked about at once."""
     if not formulas:
         return False
-    ctx = formulas[0].ctx.ref()
-    seen: set[int] = set()
-    stack = [f.as_ast() for f in formulas]
-    while stack:
-        a = stack.pop()
-        i = C.Z3_get_ast_id(ctx, a)
-        if i in seen:
-            continue
-        seen.add(i)
-        k = C.Z3_get_ast_kind(ctx, a)
-        if k == z3.Z3_QUANTIFIER_AST:
-            return True
-        if k == z3.Z3_APP_AST:
-            app = C.Z3_to_app(ctx, a)
-            stack.extend(C.Z3_get_app_arg(ctx, app, j) for j in range(C.Z3_get_app_num_args(ctx, app)))
-    return False
+    g = z3.Goal(ctx=formulas[0].ctx)
+    g.add(conjunction(list(formulas)))
+    return z3.Probe("has-quantifiers", formulas[0].ctx)(g) > 0
 
 
 def _set_value(s: SetV, model: z3.ModelRef, strings: Strings) -> frozenset:
