@@ -30,6 +30,18 @@ echo "== demo scenario (the hydraulic press accident: flat reference and chain p
 echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
 "$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 
+echo "== model check: the flagship with the native engine (must give TLC's counts, models/expected.json)"
+.venv/bin/python - <<'PY'
+import json, subprocess, sys
+want = json.load(open("models/expected.json"))["SystemStateManager"]
+out = subprocess.run([".venv/bin/safestate", "check", "models/SystemStateManager.tla", "--engine", "native", "--json"],
+                     capture_output=True, text=True)
+got = json.loads(out.stdout)
+keys = ("result", "distinct_states", "states_generated", "depth")
+print({k: got[k] for k in keys}, f"{got['seconds']} s")
+sys.exit(0 if all(got[k] == want[k] for k in keys) else 1)
+PY
+
 if [ -n "${SAFESTATE_CPP_MUTATION:-}" ]; then
   echo "== C++ mutation score (universalmutator, stratified sample of $SAFESTATE_CPP_MUTATION mutants; slow)"
   .venv/bin/python conform/cpp_mutants/score.py build/cpp-mutation --sample "$SAFESTATE_CPP_MUTATION" \

@@ -84,11 +84,28 @@ class CheckResult:
 
 
 class _Found(Exception):
-    """Ends the replay of a state's successors in `Explorer._step_params`."""
+    """Ends the replay of a state's successors in `step_params`."""
 
 
 class _Stop(Exception):
     """Ends the search: a violation, a deadlock or an error was recorded."""
+
+
+def step_params(m: Model, state: tuple, leaf: int, want: tuple) -> dict:
+    """The parameters of the step `state` -> `want` by action `leaf`: the successors
+    are generated again up to that step only, so an action after it that fails to
+    evaluate (TLC never got there) cannot turn a violation into an error."""
+    found: list[dict] = []
+
+    def match(st: tuple, lf: int, L: list) -> None:
+        if lf == leaf and st == want:
+            found.append(m.leaf_params(lf, L))
+            raise _Found()
+    try:
+        m.run_next(state, match)
+    except _Found:
+        return found[0]
+    return {}
 
 
 def default_memory_limit_mb() -> int:
@@ -127,6 +144,9 @@ class Explorer:
         self.live_edges = bool(model.liveness)
         self.edge_src = array("i")
         self.edge_dst = array("i")
+        # States generated once state i is expanded (TLC's count where it stops a search
+        # at a temporal property's finite counterexample, `tableau_safety.py`).
+        self.generated_after = array("q")
 
     # ---------------------------------------------------------------- bookkeeping
     def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
@@ -183,25 +203,8 @@ class Explorer:
         steps = [Step(self.states[path[0]], "Init", {})]
         for a, b in zip(path, path[1:]):
             want, leaf = self.states[b], self.leaf[b]
-            steps.append(Step(want, self.m.leaves[leaf].name, self._step_params(self.states[a], leaf, want)))
+            steps.append(Step(want, self.m.leaves[leaf].name, step_params(self.m, self.states[a], leaf, want)))
         return steps
-
-    def _step_params(self, state: tuple, leaf: int, want: tuple) -> dict:
-        """The parameters of the step `state` -> `want` by action `leaf`: the successors
-        are generated again up to that step only, so an action after it that fails to
-        evaluate (TLC never got there) cannot turn a violation into an error."""
-        m = self.m
-        found: list[dict] = []
-
-        def match(st: tuple, lf: int, L: list) -> None:
-            if lf == leaf and st == want:
-                found.append(m.leaf_params(lf, L))
-                raise _Found()
-        try:
-            m.run_next(state, match)
-        except _Found:
-            return found[0]
-        return {}
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
@@ -320,6 +323,8 @@ class Explorer:
         m = self.m
         while self.head < len(self.states):
             self.expand(self.head)
+            if self.live_edges:
+                self.generated_after.append(self.generated)
             self.head += 1
 
     def expand(self, i: int) -> None:
