@@ -27,8 +27,10 @@ MUTANTS_DIR = REPO / "conform" / "cpp_mutants"
 # jog_speed_zero_accepted needs the two-step probes (a zero-speed JOG_START, then a cycle)
 # and, being a transition-table guard, also checks that a mutant module loaded after the
 # real binding runs its own table (see mutate.py: hidden visibility).
+# discrepancy_checked_after_selector needs two groups disagreeing from the same cycle on
+# (the combined-disagreement probes): both faults mature in one scan.
 SUBSET = ("estop_1oo2_as_xor", "t1_limit_inclusive", "tcp_speed_in_m_per_s", "selector_several_contacts_first_wins",
-          "jog_speed_zero_accepted")
+          "jog_speed_zero_accepted", "discrepancy_checked_after_selector")
 
 
 
@@ -81,6 +83,10 @@ def test_flagship_alphabet_has_every_channel_pair_contact_pattern_and_threshold_
                  "at the zero threshold", "just above the zero threshold", "NaN"):
         assert any(must in x for x in labels), must
     # the queue is empty: a JOG_START at each bound of its argument check, then a cycle
+    # two groups disagreeing from one cycle on, held D+1 cycles: every pair of the four
+    for pair in ("estop and gate", "estop and enable", "estop and selector", "gate and enable",
+                 "gate and selector", "enable and selector"):
+        assert f"{pair} disagreeing from one cycle on, held 3 cycles" in labels, pair
     for must in ("JOG_START speed 0", "JOG_START axis 0", "JOG_START direction 0", "JOG_START exactly at the T1 limit"):
         assert any(x.startswith(f"submit {must}") for x in labels), must
 
