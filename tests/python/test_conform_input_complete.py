@@ -116,3 +116,29 @@ def test_every_cpp_mutant_still_applies_to_the_sources():
     assert len(mutants) >= 15
     for m in mutants:
         assert mutants_build.apply(m) != (REPO / m.file).read_text(encoding="utf-8")
+
+
+def test_cpp_mutation_score_end_to_end_on_two_universalmutator_mutants(mutant_build, tmp_path):
+    """score.py as the main job runs it, on 2 of universalmutator's mutants of
+    src/arm_kinematics.cpp (seed 1: a declaration commented out, which must be filtered as
+    stillborn by the compile-only pass, and a DH-matrix entry `-st * ca` -> `-st + ca`,
+    which the kinematics GoogleTest must kill).  Shares build/cpp_mutants with the subset
+    above (same file: one xdist worker), so only the mutated unit and one test are built."""
+    import json
+    import subprocess
+    import sys
+
+    out = tmp_path / "score.json"
+    r = subprocess.run([sys.executable, str(MUTANTS_DIR / "score.py"), str(REPO / "build" / "cpp_mutants"),
+                        "--files", "src/arm_kinematics.cpp", "--sample", "2", "--seed", "1", "--passes", "gtest",
+                        "--gtest-tests", "test_arm_kinematics", "--out", str(out)],
+                       capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr[-2000:]
+    d = json.loads(out.read_text(encoding="utf-8"))
+    assert d["sampled"] == 2 and d["generated"] > 100 and d["targets"] == ["src/arm_kinematics.cpp"]
+    by_status = {m["status"]: m for m in d["mutants"]}
+    assert by_status["stillborn"]["stillborn_at"] == "compile-only", d["mutants"]
+    assert by_status["killed"]["killed_by"].startswith("GoogleTest: test_arm_kinematics"), d["mutants"]
+    assert (d["stillborn"], d["evaluated"], d["killed"], d["score_percent"]) == (1, 1, 1, 100.0)
+    assert d["confidence_95_percent"][1] == 100.0 and d["survivors"] == []
+    assert "C++ mutation score: 100.0% (1/1 killed" in r.stdout
