@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "safestate/jog_setpoint.hpp"
 #include "ssm_test_support.hpp"
 
 namespace {
@@ -258,6 +259,18 @@ TEST(RSM09_Manual, JogArgumentsAreValidated) {
                           Command::jog_start(1, 2, 10), Command::jog_start(1, 1, 0), Command::jog_start(1, -1, -5)}) {
     EXPECT_EQ(r.command(c), CommandResult::rejected(RejectReason::InvalidArgument));
     EXPECT_EQ(r.state(), StateId::ManualIdle);
+  }
+}
+
+// The jog setpoint (axis, direction, speed) is a value: two setpoints are equal exactly
+// when all three fields are, and != is its negation.
+TEST(RSM09_Manual, JogSetpointsAreEqualExactlyWhenAxisDirectionAndSpeedAre) {
+  const JogSetpoint a{2, -1, 100};
+  EXPECT_TRUE(a == (JogSetpoint{2, -1, 100}));
+  EXPECT_FALSE(a != (JogSetpoint{2, -1, 100}));
+  for (const JogSetpoint& b : {JogSetpoint{3, -1, 100}, JogSetpoint{2, 1, 100}, JogSetpoint{2, -1, 101}}) {
+    EXPECT_FALSE(a == b);
+    EXPECT_TRUE(a != b);
   }
 }
 
