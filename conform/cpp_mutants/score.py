@@ -248,6 +248,35 @@ def rejustify(path: Path) -> int:
     return 0
 
 
+def summary(rows: list[dict], every: list[Mutant], files: list[Path], sample: list[Mutant],
+            passes: tuple[str, ...], a: argparse.Namespace, t0: float) -> dict:
+    """The score.json document for the mutants evaluated so far."""
+    valid = [r for r in rows if r["status"] != "stillborn"]
+    killed = sum(1 for r in valid if r["status"] == "killed")
+    per_file: dict[str, int] = defaultdict(int)
+    for m in every:
+        per_file[m.file] += 1
+    result = {
+        "tool": "universalmutator " + _version(), "targets": [str(f.relative_to(REPO)) for f in files] if a.files
+        else list(TARGETS), "generated": len(every),
+        "generated_per_file": dict(sorted(per_file.items())), "sample_requested": a.sample, "seed": a.seed,
+        "passes": list(passes), "sampled": len(rows), "stillborn": len(rows) - len(valid), "evaluated": len(valid),
+        "killed": killed, "input_complete_stride": a.stride,
+        "score_percent": round(100 * killed / len(valid), 1) if valid else None,
+        "confidence_95_percent": wilson(killed, len(valid)),
+        "killed_by_gtest": sum(1 for r in valid if (r.get("killed_by") or "").startswith("GoogleTest")),
+        "killed_by_conformance": sum(1 for r in valid if (r.get("killed_by") or "").startswith("conformance")),
+        "survived_equivalent": sum(1 for r in valid if r.get("note", "").startswith("equivalent")),
+        "budget_seconds": a.budget, "seconds": round(time.monotonic() - t0, 1),
+        "stopped_by_budget": len(rows) < len(sample),
+        "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "commit": subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True, text=True).stdout.strip(),
+        "survivors": [r for r in valid if r["status"] == "survived"],
+        "mutants": rows,
+    }
+    return result
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build", type=Path, help="the mutants' CMake tree (with --rejustify: the score.json)")
@@ -299,7 +328,10 @@ def main() -> int:
         subprocess.run(["cmake", "-S", str(build / "src"), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
                         f"-DPython_EXECUTABLE={py}", f"-Dpybind11_DIR={pybind}"], check=True, stdout=subprocess.DEVNULL)
     justified = equivalents()
-    rows = []
+    rows: list[dict] = []
+    out = a.out or build / "score.json"
+    out.parent.mkdir(parents=True, exist_ok=True)
+
     for m in sample:
         if time.monotonic() - t0 > a.budget:
             break
@@ -313,33 +345,13 @@ def main() -> int:
         row["seconds"] = round(time.monotonic() - t1, 1)
         rows.append(row)
         print(json.dumps(row), file=sys.stderr, flush=True)
-    valid = [r for r in rows if r["status"] != "stillborn"]
-    killed = sum(1 for r in valid if r["status"] == "killed")
-    per_file: dict[str, int] = defaultdict(int)
-    for m in every:
-        per_file[m.file] += 1
-    result = {
-        "tool": "universalmutator " + _version(), "targets": [str(f.relative_to(REPO)) for f in files] if a.files
-        else list(TARGETS), "generated": len(every),
-        "generated_per_file": dict(sorted(per_file.items())), "sample_requested": a.sample, "seed": a.seed,
-        "passes": list(passes), "sampled": len(rows), "stillborn": len(rows) - len(valid), "evaluated": len(valid),
-        "killed": killed, "input_complete_stride": a.stride,
-        "score_percent": round(100 * killed / len(valid), 1) if valid else None,
-        "confidence_95_percent": wilson(killed, len(valid)),
-        "killed_by_gtest": sum(1 for r in valid if (r.get("killed_by") or "").startswith("GoogleTest")),
-        "killed_by_conformance": sum(1 for r in valid if (r.get("killed_by") or "").startswith("conformance")),
-        "survived_equivalent": sum(1 for r in valid if r.get("note", "").startswith("equivalent")),
-        "budget_seconds": a.budget, "seconds": round(time.monotonic() - t0, 1),
-        "stopped_by_budget": len(rows) < len(sample),
-        "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
-        "commit": subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True, text=True).stdout.strip(),
-        "survivors": [r for r in valid if r["status"] == "survived"],
-        "mutants": rows,
-    }
-    out = a.out or build / "score.json"
-    out.parent.mkdir(parents=True, exist_ok=True)
+        # after every mutant: an interrupted run leaves a readable partial result
+        result = summary(rows, every, files, sample, passes, a, t0)
+        out.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
+    result = summary(rows, every, files, sample, passes, a, t0)
+    valid, killed = result["evaluated"], result["killed"]
     out.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
-    print(f"C++ mutation score: {result['score_percent']}% ({killed}/{len(valid)} killed; {len(rows)} sampled of "
+    print(f"C++ mutation score: {result['score_percent']}% ({killed}/{valid} killed; {len(rows)} sampled of "
           f"{len(every)} generated, {result['stillborn']} stillborn; 95% interval {result['confidence_95_percent']}) "
           f"-> {out}")
     return 0
