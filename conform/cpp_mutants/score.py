@@ -270,7 +270,7 @@ def summary(rows: list[dict], every: list[Mutant], files: list[Path], sample: li
         "budget_seconds": a.budget, "seconds": round(time.monotonic() - t0, 1),
         "stopped_by_budget": len(rows) < len(sample),
         "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
-        "commit": subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True, text=True).stdout.strip(),
+        "commit": a.commit,
         "survivors": [r for r in valid if r["status"] == "survived"],
         "mutants": rows,
     }
@@ -304,6 +304,9 @@ def main() -> int:
         return 2
     build = a.build.resolve()
     t0 = time.monotonic()
+    # the sources measured: the commit when the run starts (and whether the tree differed)
+    a.commit = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=REPO, capture_output=True,
+                              text=True).stdout.strip()
     if a.files:
         files = [REPO / f for f in a.files]
         missing = [f for f in files if not f.is_file()]
