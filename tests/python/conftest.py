@@ -26,6 +26,33 @@ def load_expected(folder: Path) -> dict:
     return json.loads(path.read_text()) if path.exists() else {}
 
 
+def fair_lasso(model, r) -> tuple[list[tuple], list[tuple], list[tuple[tuple, tuple]]]:  # noqa: ANN001
+    """Asserts that the liveness counterexample of result `r` is a behaviour of `model`
+    (initial state, steps, the step back into the loop) and fair under its WF/SF;
+    returns its states, the loop's states and the loop's steps (none if it stutters)."""
+    assert r.trace is not None and r.loop is not None
+    states = [s.state for s in r.trace]
+    assert states[0] in model.initial_states()
+    for a, b in zip(states, states[1:]):
+        assert b in [t.state for t in model.successors(a)]
+    cycle = states[r.loop:]
+    if r.loop_step is None:
+        steps: list[tuple[tuple, tuple]] = []
+        assert r.loop == len(states) - 1
+    else:
+        assert r.loop_step.state == states[r.loop]
+        assert states[r.loop] in [t.state for t in model.successors(states[-1])]
+        steps = list(zip(cycle, cycle[1:])) + [(states[-1], states[r.loop])]
+    for f in model.fairness:
+        taken = any(f.taken(s, t) for s, t in steps)
+        enabled = [f.enabled(s) for s in cycle]
+        if f.kind == "WF":
+            assert taken or not all(enabled), f"unfair: WF at {f.loc} enabled on the whole cycle, never taken"
+        else:
+            assert taken or not any(enabled), f"unfair: SF at {f.loc} enabled on the cycle, never taken"
+    return states, cycle, steps
+
+
 def run_safestate(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
     """Run the `safestate` CLI in a subprocess (as a user would)."""
     env = dict(os.environ)

@@ -143,6 +143,7 @@ def _itf(model: Model, result: CheckResult) -> dict:
     assert result.trace is not None
     desc = {"safety failure": f"invariant {result.violated} violated", "deadlock failure": "deadlock",
             "liveness failure": f"temporal property {result.violated} violated (a lasso)",
+            "temporal safety failure": f"temporal property {result.violated} violated by every continuation",
             "action property failure": f"action property {result.violated} violated",
             "init property failure": f"property {result.violated} violated by the initial state"}.get(
         result.result, "behaviour up to an evaluation error")
@@ -174,7 +175,8 @@ def _summary(model: Model, r: CheckResult, itf: dict | None, seconds: float) -> 
 def _property_summary(model: Model, r: CheckResult) -> dict[str, Any]:
     """The PROPERTY result: satisfied, violated (with the lasso's shape) or not
     checked (the safety search stopped first)."""
-    violated = r.result in ("liveness failure", "action property failure", "init property failure")
+    violated = r.result in ("liveness failure", "temporal safety failure", "action property failure",
+                            "init property failure")
     if violated:
         verdict = "violated"
     elif r.result == "success":

@@ -23,6 +23,7 @@ BY_KIND = {
     "unsupported": ERROR_CONFIG_PARSE,
     "eval": FAILURE_SPEC_EVAL,
     "module eval": ERROR,        # a standard module's error while computing successors (Head(<<>>))
+    "temporal": ERROR,           # a property TLC's liveness checker refuses (EC.TLC_LIVE_*), as TLC
     "invariant eval": FAILURE_SAFETY_EVAL,
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,
@@ -35,6 +36,8 @@ BY_RESULT = {
     "deadlock failure": VIOLATION_DEADLOCK,
     # TLC exits with VIOLATION_LIVENESS for every kind of PROPERTY violation.
     "liveness failure": VIOLATION_LIVENESS,
+    # A temporal property's finite counterexample, where TLC stops its search (12).
+    "temporal safety failure": VIOLATION_SAFETY,
     "action property failure": VIOLATION_LIVENESS,
     "init property failure": VIOLATION_LIVENESS,
 }

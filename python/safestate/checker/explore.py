@@ -127,6 +127,9 @@ class Explorer:
         self.live_edges = bool(model.liveness)
         self.edge_src = array("i")
         self.edge_dst = array("i")
+        # States generated once state i is expanded (TLC's count where it stops a search
+        # at a temporal property's finite counterexample, `tableau_safety.py`).
+        self.generated_after = array("q")
 
     # ---------------------------------------------------------------- bookkeeping
     def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
@@ -320,6 +323,8 @@ class Explorer:
         m = self.m
         while self.head < len(self.states):
             self.expand(self.head)
+            if self.live_edges:
+                self.generated_after.append(self.generated)
             self.head += 1
 
     def expand(self, i: int) -> None:

@@ -146,7 +146,7 @@ class LivenessChecker:
         comps = strongly_connected(tail, self.tail_succ, in_tail.__getitem__, n)
         self.check_memory()
         for comp in comps:
-            found = self._fair_part(comp, visit)
+            found = self._fair_part(comp, [] if visit is None else [visit])
             if found is None:
                 continue
             part, needs = found
@@ -251,12 +251,18 @@ class LivenessChecker:
         path.reverse()
         return path
 
-    def _fair_part(self, comp: list[int], visit: bytearray | None) -> tuple[list[int], list] | None:
-        """A fair sub-component of `comp` that visits `visit` states, with the steps
-        and states a fair cycle in it must pass through; None if there is none."""
+    def has_self_loop(self, v: int) -> bool:
+        """Can the behaviour stay in v forever?  In the state graph every state stutters."""
+        return True
+
+    def _fair_part(self, comp: list[int], visits: list[bytearray]) -> tuple[list[int], list] | None:
+        """A fair sub-component of `comp` that visits a state of each of `visits`, with
+        the steps and states a fair cycle in it must pass through; None if there is none."""
         work = [comp]
         while work:
             part = work.pop()
+            if len(part) == 1 and not self.has_self_loop(part[0]):
+                continue  # no cycle
             inside = set(part)
             taken = [self.taken_in(fi, part, inside) for fi in range(len(self.fairness))]
             bad = {v for fi, f in enumerate(self.fairness) if f.kind == "SF" and taken[fi] is None
@@ -280,12 +286,14 @@ class LivenessChecker:
                     needs.append(("step", fi))
             if not fair:
                 continue
-            if visit is not None:
-                targets = [v for v in part if visit[v]]
+            for visit in visits:
+                targets = {v for v in part if visit[v]}
                 if not targets:
-                    continue
+                    fair = False
+                    break
                 needs.append(("state", targets))
-            return part, needs
+            if fair:
+                return part, needs
         return None
 
     def _cycle(self, entry: int, part: list[int], needs: list) -> list[int]:
@@ -303,7 +311,9 @@ class LivenessChecker:
                 cur = w
             cycle.extend(path)
         if not cycle:
-            return []
+            if self.has_self_loop(entry):
+                return []
+            cycle = self._bfs_path(entry, {entry}, inside, leave=True)  # the shortest way round
         full = cycle + self._bfs_path(cur, {entry}, inside)
         return full[:-1]  # it ends with `entry`, where the lasso loops back to
 
@@ -346,23 +356,27 @@ class LivenessChecker:
             level = nxt
         raise TlaError("internal", "liveness: a need of a fair component is unreachable inside it")
 
-    def _bfs_path(self, src: int, goals: set[int], inside: set[int]) -> list[int]:
-        """Shortest path inside the component from src to a state of `goals`, without src."""
-        if src in goals:
+    def _bfs_path(self, src: int, goals: set[int], inside: set[int], leave: bool = False) -> list[int]:
+        """Shortest path inside the component from src to a state of `goals`, without src
+        (with at least one step when `leave`)."""
+        if src in goals and not leave:
             return []
         prev = {src: -1}
         dq = deque([src])
         while dq:
             v = dq.popleft()
             for w in self.tail_succ(v):
-                if w in inside and w not in prev:
+                if w not in inside:
+                    continue
+                if w in goals:
+                    path = [w]
+                    while v != src:
+                        path.append(v)
+                        v = prev[v]
+                    path.reverse()
+                    return path
+                if w not in prev:
                     prev[w] = v
-                    if w in goals:
-                        path = [w]
-                        while prev[path[-1]] != src:
-                            path.append(prev[path[-1]])
-                        path.reverse()
-                        return path
                     dq.append(w)
         raise TlaError("internal", "liveness: no path inside a strongly connected component")
 
@@ -371,7 +385,7 @@ class LivenessChecker:
 # []<>A / <>[]A).  TLC's Liveness.processLiveness gathers them in the orders of
 # solution it checks before the ones without a tableau; within one, the search finds
 # the counterexample nearest the initial states first (e.g. stuttering there).
-TABLEAU_KINDS = ("eventually", "leadsto", "stays", "init_always", "init_eventually")
+TABLEAU_KINDS = ("eventually", "leadsto", "stays", "init_always", "init_eventually", "tableau")
 
 
 def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], fairness: list[Fairness],
@@ -380,13 +394,15 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
     """A liveness obligation with a fair counterexample, chosen as TLC does: the
     properties checked with a tableau first, then the others; in each group the
     shortest counterexample (the first in .cfg order among equals)."""
+    from .tableau_search import tableau_counterexample  # it builds on LivenessChecker
     checker = LivenessChecker(graph, states, initial, fairness, check_memory)
     for group in ([o for o in obligations if o.kind in TABLEAU_KINDS],
                   [o for o in obligations if o.kind not in TABLEAU_KINDS]):
         best: tuple[Obligation, Lasso] | None = None
         for ob in group:
             check_memory()
-            lasso = checker.counterexample(ob)
+            lasso = (tableau_counterexample(graph, states, initial, fairness, ob, check_memory)
+                     if ob.kind == "tableau" else checker.counterexample(ob))
             if lasso is not None and (best is None or len(lasso.nodes) < len(best[1].nodes)):
                 best = (ob, lasso)
         if best is not None:
@@ -398,6 +414,9 @@ def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) 
     """Does the lasso (`states`, then back to states[loop], or stuttering in the last
     state) violate the liveness obligation?  TLC names every property its
     counterexample violates."""
+    if ob.kind == "tableau":
+        from .tableau_search import violated_on_lasso
+        return violated_on_lasso(ob, states, loop)
     cycle = states[loop:]
     steps = [] if stutters else list(zip(cycle, cycle[1:] + cycle[:1]))
     p, q = ob.p, ob.q

@@ -7,6 +7,8 @@ from typing import TYPE_CHECKING
 
 from ..tla.errors import TlaError
 from .liveness import Lasso, StateGraph, find_violation, violated_on
+from .tableau_safety import SafetyStop, first_stop
+from .temporal import Obligation
 
 if TYPE_CHECKING:
     from .explore import CheckResult, Explorer
@@ -27,6 +29,11 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
         check_memory()
         graph = StateGraph(len(explorer.states), explorer.edge_src, explorer.edge_dst)
         check_memory()
+        stop = first_stop(model.liveness, bool(model.fairness), explorer.states, explorer.initial,
+                          lambda v: list(graph.succ(v)), len(explorer.generated_after))
+        if stop is not None:
+            _stop_at(model, explorer, result, stop)
+            return
         found = find_violation(graph, explorer.states, explorer.initial, model.fairness, model.liveness,
                                check_memory)
     except TlaError as e:
@@ -37,7 +44,16 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
         return
     ob, lasso = found
     result.result = "liveness failure"
-    result.violated = ob.name
+    _name_violated(model, explorer, result, ob, lasso)
+    steps = lasso_steps(model, explorer, lasso)
+    result.loop = lasso.loop
+    if not lasso.stuttering:
+        result.loop_step = steps.pop()
+    result.trace = steps
+
+
+def _name_violated(model: Model, explorer: Explorer, result: CheckResult, ob: Obligation, lasso: Lasso) -> None:
+    """TLC's message names every property the counterexample violates, in .cfg order."""
     lasso_states = [explorer.states[v] for v in lasso.nodes]
     names: list[str] = []
     for other in model.liveness:
@@ -45,12 +61,28 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
                                                                     lasso.stuttering)):
             names.append(other.name)
     result.violated_properties = names
-    result.violated = names[0]  # TLC's message names them in .cfg order
-    steps = lasso_steps(model, explorer, lasso)
-    result.loop = lasso.loop
-    if not lasso.stuttering:
-        result.loop_step = steps.pop()
-    result.trace = steps
+    result.violated = names[0]
+
+
+def _stop_at(model: Model, explorer: Explorer, result: CheckResult, stop: SafetyStop) -> None:
+    """The result where TLC stops its search at a finite counterexample: the counts
+    after expanding state `stop.expanded`, the behaviour (its last state stuttering for
+    ever, for naming the violated properties)."""
+    k = stop.expanded
+    distinct = max(explorer.initial, default=-1) + 1
+    for src, dst in zip(explorer.edge_src, explorer.edge_dst):
+        if src > k:
+            break
+        distinct = max(distinct, dst + 1)
+    result.result = "temporal safety failure"
+    result.distinct_states = distinct
+    result.states_generated = explorer.generated_after[k]
+    result.depth = max(explorer.level[:distinct])
+    result.left_on_queue = distinct - k - 1
+    lasso = Lasso(stop.states, len(stop.states) - 1, True)
+    _name_violated(model, explorer, result, stop.obligation, lasso)
+    result.loop = None
+    result.trace = lasso_steps(model, explorer, lasso)
 
 
 def lasso_steps(model: Model, explorer: Explorer, lasso: Lasso) -> list:

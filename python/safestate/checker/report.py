@@ -35,8 +35,8 @@ def _step_label(model: Model, step: Step) -> str:
 
 def write_lasso(out: TextIO, model: Model, r: CheckResult) -> None:
     """A liveness counterexample in TLC's words: the states, then "Back to state N"
-    or "Stuttering"."""
-    assert r.trace is not None and r.loop is not None
+    or "Stuttering" (nothing after a finite counterexample: "temporal safety failure")."""
+    assert r.trace is not None
     names = r.violated_properties or [r.violated]
     if len(names) == 1:
         print(f"Error: Temporal property {names[0]} was violated.", file=out)
@@ -45,6 +45,8 @@ def write_lasso(out: TextIO, model: Model, r: CheckResult) -> None:
         print(f"Error: Temporal properties {listed} were violated.", file=out)
     print(file=out)
     write_trace(out, model, r.trace, "Error: The following behavior constitutes a counter-example:\n")
+    if r.loop is None:
+        return  # a finite counterexample: TLC prints the states only
     if r.loop_step is None:
         print(f"State {len(r.trace) + 1}: Stuttering", file=out)
     else:
@@ -82,7 +84,7 @@ def write_result(out: TextIO, model: Model, r: CheckResult) -> None:
         print(f"Error: Action property {r.violated} is violated.", file=out)
         if r.trace:
             write_trace(out, model, r.trace)
-    elif r.result == "liveness failure":
+    elif r.result in ("liveness failure", "temporal safety failure"):
         write_lasso(out, model, r)
     elif r.result == "deadlock failure":
         print("Error: Deadlock reached.", file=out)

@@ -17,8 +17,12 @@
     ``<><>F`` is ``<>F``, ``<>[]<>P`` is ``[]<>P`` and ``[]<>[]P`` is ``<>[]P``,
     and ``P => []Q`` / ``P => <>Q`` (P on the initial state) are checked too,
 
-  where P and Q are state predicates.  Any other temporal formula is refused with
-  an "unsupported" error at its position, never guessed at.
+  where P and Q are state predicates;
+  - any other formula ("tableau"): translated as TLC's `Liveness.astToLive` into
+    `ltl.Formula` over state and step predicates and checked with the tableau of its
+    negation (`tableau_search.py`).  What TLC refuses is refused in its words; what
+    we do not translate (\\AA, \\EE, -+->, LET, raw actions) is an "unsupported"
+    error at its position, never guessed at.
 """
 
 from __future__ import annotations
@@ -34,6 +38,7 @@ from ..tla.env import Env, Frame, SlotLocal
 from ..tla.errors import Loc, TlaError, UnsupportedError
 from ..tla.modules import DefSym, InstanceSym, Scope
 from ..tla.values import Value, as_set
+from . import ltl
 
 
 @dataclass
@@ -77,17 +82,24 @@ class Obligation:
     q: Pred | None = None
     # For "wf", "sf" and "infinitely_step": <<A>>_v, a step the tail never takes.
     forbid: Pred | None = None
+    # For "tableau" (and "stays", "init_always", see `tableau_safety.py`): the
+    # property over the state and step predicates `atoms`.
+    formula: ltl.Formula | None = None
+    atoms: list[Pred] = dataclasses.field(default_factory=list)
 
 
-LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually",
-                  "infinitely_step", "wf", "sf")
+# The fixed forms over state predicates only (the tableau checks them too).
+STATE_LIVENESS_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually")
+LIVENESS_KINDS = (*STATE_LIVENESS_KINDS, "infinitely_step", "wf", "sf", "tableau")
 
 
 class TemporalCompiler:
     """Expands temporal formulas into `Fairness` and `Obligation` instances."""
 
-    def __init__(self, model: Any) -> None:
+    def __init__(self, model: Any, force_tableau: bool = False) -> None:
         self.model = model
+        # Check the fixed forms over state predicates with the tableau too (to compare).
+        self.force_tableau = force_tableau
         self.compiler = model.compiler
         self._temporal_defs: dict[int, bool] = {}
 
@@ -113,6 +125,8 @@ class TemporalCompiler:
             for f in dataclasses.fields(e):
                 v = getattr(e, f.name)
                 items = v if isinstance(v, list) else [v]
+                # CASE keeps its arms as (guard, value) pairs.
+                items = [y for x in items for y in (x if isinstance(x, tuple) else (x,))]
                 for x in items:
                     if isinstance(x, A.Expr) and self.is_temporal(x, scope):
                         return True
@@ -149,31 +163,45 @@ class TemporalCompiler:
             for item in e.items:
                 self._expand(item, scope, binds, leaf)
             return
-        if isinstance(e, (A.Name, A.Apply, A.Prefixed)) and e.name not in binds:
-            sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
-            if isinstance(sym, DefSym) and self.is_temporal(e, scope):
-                if isinstance(e, A.Prefixed) and any(step.args for step in e.path):
-                    raise UnsupportedError("a temporal formula of a parameterised instance (M(p)!Op) is not "
-                                           "supported", e.loc)
-                args = e.args if isinstance(e, (A.Apply, A.Prefixed)) else []
-                if len(args) != len(sym.defn.params):
-                    raise TlaError("semantic", f"{e.name} expects {len(sym.defn.params)} arguments", e.loc)
-                values = {p.name: self._constant(a, scope, binds) for p, a in zip(sym.defn.params, args)}
-                self._expand(sym.defn.body, sym.scope, values, leaf)
-                return
+        defn = self._temporal_definition(e, scope, binds)
+        if defn is not None:
+            self._expand(*defn, leaf)
+            return
         if isinstance(e, A.Quant) and e.kind == "\\A" and self.is_temporal(e.body, scope):
-            names: list[str] = []
-            sets: list[list[Value]] = []
-            for b in e.bounds:
-                if b.tuple:
-                    raise UnsupportedError("a tuple binder <<..>> \\in S over a temporal formula", b.set.loc)
-                for n in b.names:
-                    names.append(n)
-                    sets.append(list(as_set(self._constant(b.set, scope, binds))))
-            for combo in itertools.product(*sets):
-                self._expand(e.body, scope, {**binds, **dict(zip(names, combo))}, leaf)
+            for combo in self._bindings(e, scope, binds):
+                self._expand(e.body, scope, combo, leaf)
             return
         leaf(e, scope, binds)
+
+    def _temporal_definition(self, e: A.Expr, scope: Scope,
+                             binds: dict[str, Value]) -> tuple[A.Expr, Scope, dict[str, Value]] | None:
+        """The body, scope and argument values of the temporal definition `e` applies
+        (None when `e` is not one)."""
+        if not isinstance(e, (A.Name, A.Apply, A.Prefixed)) or e.name in binds:
+            return None
+        sym = self._instance_def(e, scope) if isinstance(e, A.Prefixed) else scope.lookup(e.name)
+        if not isinstance(sym, DefSym) or not self.is_temporal(e, scope):
+            return None
+        if isinstance(e, A.Prefixed) and any(step.args for step in e.path):
+            raise UnsupportedError("a temporal formula of a parameterised instance (M(p)!Op) is not "
+                                   "supported", e.loc)
+        args = e.args if isinstance(e, (A.Apply, A.Prefixed)) else []
+        if len(args) != len(sym.defn.params):
+            raise TlaError("semantic", f"{e.name} expects {len(sym.defn.params)} arguments", e.loc)
+        values = {p.name: self._constant(a, scope, binds) for p, a in zip(sym.defn.params, args)}
+        return sym.defn.body, sym.scope, values
+
+    def _bindings(self, e: A.Quant, scope: Scope, binds: dict[str, Value]) -> list[dict[str, Value]]:
+        """`binds` extended by each combination of values of the quantifier's bounds."""
+        names: list[str] = []
+        sets: list[list[Value]] = []
+        for b in e.bounds:
+            if b.tuple:
+                raise UnsupportedError("a tuple binder <<..>> \\in S over a temporal formula", b.set.loc)
+            for n in b.names:
+                names.append(n)
+                sets.append(list(as_set(self._constant(b.set, scope, binds))))
+        return [{**binds, **dict(zip(names, combo))} for combo in itertools.product(*sets)]
 
     # ------------------------------------------------------------ leaves
     def _fair(self, e: A.Expr, scope: Scope, binds: dict) -> Fairness:
@@ -206,7 +234,22 @@ class TemporalCompiler:
     def _obligation(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
         if not self.is_temporal(e, scope):
             return Obligation(name, "init", self._state(e, scope, binds))
-        e = self._normal(e, scope)
+        try:
+            ob = self._fixed_shape(name, self._normal(e, scope), scope, binds)
+        except UnsupportedError:
+            ob = None  # e.g. a step formula where the fixed form has a state predicate: <>[][A]_v
+        if ob is None or (self.force_tableau and ob.kind in STATE_LIVENESS_KINDS):
+            return self._general(name, e, scope, binds)
+        if ob.kind in ("stays", "init_always"):
+            # Its tableau has an accepting node: TLC may stop its search at a finite
+            # counterexample (`tableau_safety.py`).
+            general = self._general(name, e, scope, binds)
+            ob.formula, ob.atoms = general.formula, general.atoms
+        return ob
+
+    def _fixed_shape(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation | None:
+        """The obligation of a conjunct of one of the fixed forms (each with its own
+        search in `liveness.py`), or None."""
         if (isinstance(e, A.Unary) and e.op == "[]" and isinstance(e.arg, A.Binary) and e.arg.op == "=>"
                 and not self.is_temporal(e.arg.lhs, scope) and isinstance(e.arg.rhs, A.Unary)
                 and e.arg.rhs.op == "[]" and not self.is_temporal(e.arg.rhs.arg, scope)):
@@ -244,11 +287,73 @@ class TemporalCompiler:
             if not self.is_temporal(e.lhs, scope) and not self.is_temporal(e.rhs, scope):
                 return Obligation(name, "leadsto", self._live(e.lhs, scope, binds),
                                   self._live(e.rhs, scope, binds))
-        raise UnsupportedError(f"the temporal formula in property {name} is not supported: only []P, <>P, "
-                               f"P ~> Q, []<>P, <>[]P, [](P => <>Q), [](P => []Q), P => []Q, P => <>Q (P, Q state "
-                               f"predicates), "
-                               f"[][A]_v, []<><<A>>_v, WF_v(A), SF_v(A), conjunctions and \\A over them are "
-                               f"checked", e.loc)
+        return None
+
+    # ------------------------------------------------------------ general formulas
+    def _general(self, name: str, e: A.Expr, scope: Scope, binds: dict) -> Obligation:
+        """Any formula of state predicates, ~, /\\, \\/, =>, ~>, [], <>, IF, bounded \\A /
+        \\E, WF/SF and the steps [A]_v, <<A>>_v: checked with the tableau of its negation
+        (`tableau.py`), after the checks of TLC's `Liveness.processLiveness`."""
+        atoms: list[Pred] = []
+        formula = self._ltl(name, e, scope, binds, atoms)
+        conjuncts = ltl.disjuncts(ltl.negate(formula))
+        if conjuncts is not None:
+            for c in (c for d in conjuncts for c in d):
+                if not ltl.without_tableau(c) and ltl.has_action(c):
+                    raise TlaError("temporal", "Temporal formulas containing actions must be of forms <>[]A or "
+                                   "[]<>A.", e.loc)
+        true = self.pred(A.Bool(e.loc, True), scope, {})  # p is not read for a tableau obligation
+        return Obligation(name, "tableau", true, formula=formula, atoms=atoms)
+
+    def _ltl(self, name: str, e: A.Expr, scope: Scope, binds: dict, atoms: list[Pred]) -> ltl.Formula:
+        def atom(pred: Pred, action: bool = False) -> ltl.Atom:
+            atoms.append(pred)
+            return ltl.Atom(len(atoms) - 1, action=action)
+
+        def sub(x: A.Expr, sc: Scope = scope, bs: dict = binds) -> ltl.Formula:
+            return self._ltl(name, x, sc, bs, atoms)
+        if isinstance(e, A.StepAction):
+            return atom(self.pred(e, scope, binds), action=True)
+        if isinstance(e, A.Fairness):
+            # As TLC: WF_v(A) is []<>(~ENABLED <<A>>_v \/ <<A>>_v), SF_v(A) is
+            # <>[]~ENABLED <<A>>_v \/ []<><<A>>_v.
+            fair = self._fair(e, scope, binds)
+            disabled, taken = ltl.negate(atom(fair.enabled)), atom(fair.taken, action=True)
+            if e.kind == "WF":
+                return ltl.Always(ltl.Eventually(ltl.Or((disabled, taken))))
+            return ltl.Or((ltl.Eventually(ltl.Always(disabled)), ltl.Always(ltl.Eventually(taken))))
+        if not self.is_temporal(e, scope):
+            return atom(self._live(e, scope, binds))
+        if isinstance(e, (A.And, A.Or)):
+            items = tuple(sub(x) for x in e.items)
+            return ltl.And(items) if isinstance(e, A.And) else ltl.Or(items)
+        if isinstance(e, A.Unary) and e.op in ("[]", "<>"):
+            arg = sub(e.arg)
+            return ltl.Always(arg) if e.op == "[]" else ltl.Eventually(arg)
+        if isinstance(e, A.Unary) and e.op in ("~", "\\lnot", "\\neg"):
+            return ltl.negate(sub(e.arg))
+        if isinstance(e, A.Binary) and e.op in ("=>", "~>"):
+            lhs, rhs = sub(e.lhs), sub(e.rhs)
+            if e.op == "=>":
+                return ltl.Or((ltl.negate(lhs), rhs))
+            return ltl.Always(ltl.Or((ltl.negate(lhs), ltl.Eventually(rhs))))
+        if isinstance(e, A.If):
+            cond = sub(e.cond)
+            return ltl.Or((ltl.And((cond, sub(e.then))), ltl.And((ltl.negate(cond), sub(e.other)))))
+        defn = self._temporal_definition(e, scope, binds)
+        if defn is not None:
+            return sub(*defn)
+        if isinstance(e, A.Quant) and e.kind in ("\\A", "\\E"):
+            items = tuple(sub(e.body, scope, combo) for combo in self._bindings(e, scope, binds))
+            return ltl.And(items) if e.kind == "\\A" else ltl.Or(items)
+        if isinstance(e, A.Binary) and e.op in ("<=>", "\\equiv") or isinstance(e, A.Case):
+            # TLC's astToLive has no case for these either (EC.TLC_LIVE_CANNOT_HANDLE_FORMULA).
+            raise TlaError("temporal", f"TLC cannot handle the temporal formula {_what(e)} (of temporal "
+                           f"formulas) in property {name}", e.loc)
+        raise UnsupportedError(f"the temporal formula in property {name} is not supported: {_what(e)} over "
+                               f"temporal formulas is not checked (supported: state predicates, [A]_v, "
+                               f"<<A>>_v, WF_v(A) and SF_v(A) under ~, /\\, \\/, =>, ~>, [], <>, IF and "
+                               f"bounded \\A / \\E)", e.loc)
 
     # ------------------------------------------------------------ compilation
     def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:
@@ -307,3 +412,12 @@ class TemporalCompiler:
     def _constant(self, e: A.Expr, scope: Scope, binds: dict) -> Value:
         p = self.pred(e, scope, binds)
         return p.code(None, None, p.base.copy())
+
+
+def _what(e: A.Expr) -> str:
+    """How an error names the construct at e."""
+    if isinstance(e, A.UnboundedQuant):
+        return f"temporal quantification {e.kind}"
+    if isinstance(e, (A.Binary, A.Unary)):
+        return e.op
+    return {A.Case: "CASE", A.Let: "LET"}.get(type(e), "this construct")

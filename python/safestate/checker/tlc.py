@@ -52,7 +52,9 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     stats = re.findall(r"^(\d+) states generated, (\d+) distinct states found", out, re.M)
     depth = re.findall(r"^The depth of the complete state graph search is (\d+)", out, re.M)
     viol = re.search(r"^Error: Invariant (\S+) is violated", out, re.M)
-    temporal = re.search(r"^Error: Temporal propert(?:y|ies) (\w+)", out, re.M)
+    # "Temporal properties were violated." names none: TLC's own check of its lasso found
+    # no violated property (docs/tla-subset.md).
+    temporal = re.search(r"^Error: Temporal propert(?:y|ies) ((?!were violated)\w+|(?=were violated))", out, re.M)
     action = re.search(r"^Error: Action property (\S+) is violated", out, re.M)
     initial = re.search(r"^Error: Property (\S+) is violated by the initial state", out, re.M)
     if "Model checking completed. No error has been found." in out:
@@ -60,8 +62,9 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     elif viol:
         result = "safety failure"
     elif temporal or action or initial:
-        result = ("liveness failure" if temporal else "action property failure" if action
-                  else "init property failure")
+        # TLC exits with 12 where it stops at a finite counterexample of a temporal property.
+        result = (("temporal safety failure" if exit_code == 12 else "liveness failure") if temporal
+                  else "action property failure" if action else "init property failure")
         viol = temporal or action or initial
     elif "Error: Deadlock reached." in out:
         result = "deadlock failure"
@@ -69,7 +72,7 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
         result = "error"
     return TlcSummary(result,
                       int(stats[-1][1]) if stats else None, int(stats[-1][0]) if stats else None,
-                      int(depth[-1]) if depth else None, viol.group(1) if viol else None, exit_code,
+                      int(depth[-1]) if depth else None, (viol.group(1) or None) if viol else None, exit_code,
                       _lasso(out) if temporal else None, _temporal_names(out) if temporal else None,
                       None if temporal else _trace(out))
 

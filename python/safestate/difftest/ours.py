@@ -43,7 +43,7 @@ def summary_of(tla_path: str, cfg_path: str) -> dict:
     # after the initial states; a liveness lasso is compared by verdict only (see
     # docs/tla-subset.md: the lassos may differ).
     trace = None
-    if r.trace and not initial and r.result not in ("liveness failure", "success"):
+    if r.trace and not initial and r.result not in ("liveness failure", "temporal safety failure", "success"):
         trace = [model.format_state(step.state) for step in r.trace]
     return {"result": r.result, "distinct_states": None if initial else r.distinct_states,
             "states_generated": None if initial else r.states_generated, "depth": None if initial else r.depth,
