@@ -5,7 +5,8 @@
 # against its model (safestate conform), model mutants and tests -- run by
 # `safestate evidence`, which ends the job with the evidence package (build/evidence)
 # and prints its path and gap count.  SAFESTATE_CPP_MUTATION=N first measures the
-# C++ mutation score on a stratified sample of N mutants (slow).
+# C++ mutation score on a stratified sample of N mutants (slow; SAFESTATE_CPP_MUTATION_BUDGET
+# seconds, SAFESTATE_CPP_MUTATION_STRIDE K: the input-complete pass on every K-th state).
 # Exits non-zero as soon as one step fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -45,7 +46,7 @@ PY
 if [ -n "${SAFESTATE_CPP_MUTATION:-}" ]; then
   echo "== C++ mutation score (universalmutator, stratified sample of $SAFESTATE_CPP_MUTATION mutants; slow)"
   .venv/bin/python conform/cpp_mutants/score.py build/cpp-mutation --sample "$SAFESTATE_CPP_MUTATION" \
-    --budget "${SAFESTATE_CPP_MUTATION_BUDGET:-3600}"
+    --budget "${SAFESTATE_CPP_MUTATION_BUDGET:-3600}" --stride "${SAFESTATE_CPP_MUTATION_STRIDE:-1}"
 fi
 
 # The evidence chain of every system of the registry, and the package that shows it:
