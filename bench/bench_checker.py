@@ -10,7 +10,8 @@ distinct states, wall and CPU seconds, distinct states per CPU second, peak RSS
 per distinct state, and the ratios: ours/TLC at the same worker count, and each
 run's rate over its own single-worker rate (the parallel speed-up, by wall time, and
 the load-independent one: the single worker's CPU over the parallel run's critical
-path, the slowest worker's CPU per BFS phase summed, as `--json` reports it).
+path, the slowest worker's CPU per BFS phase summed, as `--json` reports it, plus the
+run's CPU outside the search: start, loading, translation).
 Informational only: never pass/fail.
 
 Default specs: bench/specs/*.tla and the flagship model with its CI .cfg.
@@ -51,7 +52,8 @@ class Run:
     peak_kib: int | None  # None for TLC: the JVM's heap is not the state store's size
     result: str
     # Ours with several workers: CPU s of the slowest worker per BFS phase, summed, plus
-    # the coordinator's (the wall time the search would take on idle cores).
+    # the coordinator's and the process's outside the search (the wall time the run
+    # would take on idle cores).
     critical_cpu: float | None = None
 
     @property
@@ -76,9 +78,15 @@ def run_ours(tla: Path, cfg: Path, workers: int, engine: str = "python") -> Run:
         summary = json.loads(text)
     except json.JSONDecodeError:
         return Run(None, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, "no JSON output")
-    parallel = summary.get("parallel") or {}
-    return Run(summary.get("distinct_states"), wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss,
-               summary.get("result", "error"), parallel.get("critical_path_cpu_seconds"))
+    cpu = usage.ru_utime + usage.ru_stime
+    parallel = summary.get("parallel")
+    critical = None
+    if parallel:
+        # The run's CPU outside the search (start, loading, translation, report) is on the
+        # critical path too, so the ratio compares like with like against one.cpu.
+        search = sum(parallel["worker_cpu_seconds"]) + parallel["coordinator_cpu_seconds"]
+        critical = cpu - search + parallel["critical_path_cpu_seconds"]
+    return Run(summary.get("distinct_states"), wall, cpu, usage.ru_maxrss, summary.get("result", "error"), critical)
 
 
 def run_theirs(jar: str, tla: Path, cfg: Path, workers: int) -> Run:
