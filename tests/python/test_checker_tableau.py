@@ -47,6 +47,8 @@ def test_tableau_property_verdict_counts_exit_code_and_lasso_match_tlc(name: str
     for f in FIELDS:
         assert getattr(r, f) == want[f], f"{f}: ours {getattr(r, f)!r}, TLC {want[f]!r}"
     assert exit_codes.BY_RESULT[r.result] == want["exit_code"]
+    if "left_on_queue" in want:  # where TLC stopped its search
+        assert r.left_on_queue == want["left_on_queue"]
     if "lasso" in want:
         assert r.violated_properties == want["violated_properties"]
         states, _, _ = fair_lasso(model, r)
@@ -69,6 +71,8 @@ def test_tableau_corpus_covers_the_required_cases() -> None:
     assert len(EXPECTED) >= 15
     assert results.count("liveness failure") >= 5 and results.count("success") >= 5
     assert "temporal safety failure" in results and "error" in results
+    # an early stop before, and at the same expanded state as, an invariant violation
+    assert {"StopBeforeInvariant", "StopWithInvariant"} <= set(EXPECTED)
     assert any(w.get("lasso", {}).get("stuttering") for w in EXPECTED.values())
     assert any(w.get("lasso", {}).get("stuttering") is False for w in EXPECTED.values())
     specs = {n: (TABLEAU / f"{n}.tla").read_text() for n in EXPECTED}
@@ -223,6 +227,8 @@ def test_tableau_expected_results_are_tlcs(name: str) -> None:
         return
     for f in FIELDS:
         assert getattr(tlc, f) == want[f], f
+    if "left_on_queue" in want:
+        assert tlc.left_on_queue == want["left_on_queue"]
     assert (tlc.lasso is None) == ("lasso" not in want)
     assert tlc.violated_properties == want.get("violated_properties")
 
