@@ -46,6 +46,7 @@ from dataclasses import dataclass
 from typing import Callable, Iterable
 
 from ..tla.errors import TlaError
+from . import ltl
 from .scc import strongly_connected
 from .temporal import Fairness, Obligation
 
@@ -391,13 +392,12 @@ TABLEAU_KINDS = ("eventually", "leadsto", "stays", "init_always", "init_eventual
 def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], fairness: list[Fairness],
                    obligations: list[Obligation],
                    check_memory: Callable[[], None]) -> tuple[Obligation, Lasso] | None:
-    """A liveness obligation with a fair counterexample, chosen as TLC does: the
-    properties checked with a tableau first, then the others; in each group the
+    """A liveness obligation with a fair counterexample, chosen as TLC does: its
+    groups (`tlc_check_order`) in order, the first with a violation; in it the
     shortest counterexample (the first in .cfg order among equals)."""
     from .tableau_search import tableau_counterexample  # it builds on LivenessChecker
     checker = LivenessChecker(graph, states, initial, fairness, check_memory)
-    for group in ([o for o in obligations if o.kind in TABLEAU_KINDS],
-                  [o for o in obligations if o.kind not in TABLEAU_KINDS]):
+    for group in tlc_check_order(obligations):
         best: tuple[Obligation, Lasso] | None = None
         for ob in group:
             check_memory()
@@ -408,6 +408,34 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
         if best is not None:
             return best
     return None
+
+
+def tlc_check_order(obligations: list[Obligation]) -> list[list[Obligation]]:
+    """TLC's `OrderOfSolution`s in the order it checks them (`Liveness.processLiveness`):
+    the negated properties' DNF disjuncts in .cfg order, lumped by their tableau formula;
+    those without one (only ``<>[]A`` / ``[]<>A`` conjuncts: `[]<>P`, `<>[]P`, WF/SF
+    forms) share one group, at the place of the first.  A group's search finds the
+    counterexample nearest the initial states.  A general formula is placed by the
+    first disjunct of its negation."""
+    groups: list[list[Obligation]] = []
+    shared: list[Obligation] | None = None
+    for ob in obligations:
+        if _needs_tableau(ob):
+            groups.append([ob])
+            continue
+        if shared is None:
+            shared = []
+            groups.append(shared)
+        shared.append(ob)
+    return groups
+
+
+def _needs_tableau(ob: Obligation) -> bool:
+    if ob.kind != "tableau":
+        return ob.kind in TABLEAU_KINDS
+    assert ob.formula is not None
+    conjunctions = ltl.disjuncts(ltl.negate(ob.formula))
+    return not conjunctions or not all(ltl.without_tableau(c) for c in conjunctions[0])
 
 
 def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) -> bool:
