@@ -412,15 +412,25 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
 
 def tlc_check_order(obligations: list[Obligation]) -> list[list[Obligation]]:
     """TLC's `OrderOfSolution`s in the order it checks them (`Liveness.processLiveness`):
-    the negated properties' DNF disjuncts in .cfg order, lumped by their tableau formula;
-    those without one (only ``<>[]A`` / ``[]<>A`` conjuncts: `[]<>P`, `<>[]P`, WF/SF
-    forms) share one group, at the place of the first.  A group's search finds the
-    counterexample nearest the initial states.  A general formula is placed by the
-    first disjunct of its negation."""
+    the negated properties' DNF disjuncts in .cfg order, except that a disjunct that is
+    just ``[]<>A`` goes last (`LNDisj.toDNF` merges those into one at the end), lumped
+    by their tableau formula; those without one (only ``<>[]A`` / ``[]<>A`` conjuncts)
+    share one group, at the place of the first.  A group's search finds the
+    counterexample nearest the initial states.  An obligation is placed by the first of
+    its disjuncts in that order."""
+    ordered: list[tuple[Obligation, bool]] = []  # (obligation, its disjunct needs a tableau)
+    last: list[tuple[Obligation, bool]] = []
+    for ob in obligations:
+        for needs_tableau, only_ae in _disjunct_kinds(ob):
+            (last if only_ae else ordered).append((ob, needs_tableau))
     groups: list[list[Obligation]] = []
     shared: list[Obligation] | None = None
-    for ob in obligations:
-        if _needs_tableau(ob):
+    placed: set[int] = set()
+    for ob, needs_tableau in ordered + last:
+        if id(ob) in placed:
+            continue
+        placed.add(id(ob))
+        if needs_tableau:
             groups.append([ob])
             continue
         if shared is None:
@@ -430,12 +440,16 @@ def tlc_check_order(obligations: list[Obligation]) -> list[list[Obligation]]:
     return groups
 
 
-def _needs_tableau(ob: Obligation) -> bool:
+def _disjunct_kinds(ob: Obligation) -> list[tuple[bool, bool]]:
+    """For each DNF disjunct of the obligation's negation: does it need a tableau, is
+    it just ``[]<>A``?"""
     if ob.kind != "tableau":
-        return ob.kind in TABLEAU_KINDS
+        # <>[]P is negated to []<>~P; the other forms without a tableau are not []<>A.
+        return [(ob.kind in TABLEAU_KINDS, ob.kind == "stable")]
     assert ob.formula is not None
-    conjunctions = ltl.disjuncts(ltl.negate(ob.formula))
-    return not conjunctions or not all(ltl.without_tableau(c) for c in conjunctions[0])
+    conjunctions = ltl.disjuncts(ltl.negate(ob.formula)) or [[ob.formula]]
+    return [(not all(ltl.without_tableau(c) for c in d),
+             len(d) == 1 and isinstance(d[0], ltl.Always) and ltl.without_tableau(d[0])) for d in conjunctions]
 
 
 def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) -> bool:
