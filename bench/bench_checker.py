@@ -15,7 +15,10 @@ Informational only: never pass/fail.
 
 Default specs: bench/specs/*.tla and the flagship model with its CI .cfg.
 
-usage: bench/bench_checker.py [--workers 1,2] [--quick] [SPEC.tla[:CFG] ...]
+With `--engines python,native` (default) each of our runs is made with each engine
+(`safestate check --engine E`); the native engine runs with one worker only.
+
+usage: bench/bench_checker.py [--workers 1,2] [--engines python,native] [--quick] [SPEC.tla[:CFG] ...]
 """
 
 from __future__ import annotations
@@ -57,9 +60,9 @@ class Run:
         return (self.distinct or 0) / self.cpu if self.cpu else 0.0
 
 
-def run_ours(tla: Path, cfg: Path, workers: int) -> Run:
+def run_ours(tla: Path, cfg: Path, workers: int, engine: str = "python") -> Run:
     cmd = [sys.executable, "-c", "import sys; from safestate.cli import main; sys.exit(main())",
-           "check", str(tla), "--config", str(cfg), "--workers", str(workers), "--json"]
+           "check", str(tla), "--config", str(cfg), "--workers", str(workers), "--engine", engine, "--json"]
     env = dict(os.environ, PYTHONPATH=str(REPO / "python"), PYTHONHASHSEED="0")
     start = time.monotonic()
     with tempfile.TemporaryFile() as out:
@@ -108,9 +111,9 @@ def spec_list(args: argparse.Namespace) -> list[tuple[Path, Path]]:
     return out + [FLAGSHIP]
 
 
-def fmt_run(who: str, name: str, workers: int, r: Run) -> str:
+def fmt_run(who: str, name: str, workers: int, r: Run, engine: str = "-") -> str:
     per_state = f"{r.peak_kib * 1024 / r.distinct:>8.0f}" if r.peak_kib and r.distinct else f"{'-':>8}"
-    line = (f"{name:18} {who:5} {workers:>2} {r.distinct if r.distinct is not None else '-':>10} "
+    line = (f"{name:18} {who:5} {engine:7} {workers:>2} {r.distinct if r.distinct is not None else '-':>10} "
             f"{r.wall:>8.2f} {r.cpu:>8.2f} {r.rate:>10.0f} {per_state}")
     return line
 
@@ -118,37 +121,45 @@ def fmt_run(who: str, name: str, workers: int, r: Run) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--workers", default="1,2", help="comma-separated worker counts (default 1,2)")
+    ap.add_argument("--engines", default="python,native", help="our engines to run (default python,native)")
     ap.add_argument("--quick", action="store_true", help="shrink the bench specs' constants 4x")
     ap.add_argument("specs", nargs="*", help="SPEC.tla or SPEC.tla:CFG (default: bench/specs/*.tla, flagship)")
     args = ap.parse_args()
     counts = [int(w) for w in args.workers.split(",")]
+    engines = args.engines.split(",")
     jar = tlc_jar()
-    print(f"{'spec':18} {'who':5} {'w':>2} {'distinct':>10} {'wall s':>8} {'CPU s':>8} {'dist/CPUs':>10} "
+    print(f"{'spec':18} {'who':5} {'engine':7} {'w':>2} {'distinct':>10} {'wall s':>8} {'CPU s':>8} {'dist/CPUs':>10} "
           f"{'B/state':>8}  ratios")
     for tla, cfg in spec_list(args):
-        ours1: Run | None = None
+        ours1: dict[str, Run] = {}
         tlc1: Run | None = None
         for w in counts:
-            r = run_ours(tla, cfg, w)
             t = run_theirs(jar, tla, cfg, w) if jar else None
-            ratios = []
-            if t is not None and t.rate:
-                ratios.append(f"ours/TLC {r.rate / t.rate:.2f}x")
-                if t.distinct != r.distinct:
-                    ratios.append(f"DISTINCT DIFFERS (TLC {t.distinct})")
-            if w == counts[0]:
-                ours1, tlc1 = r, t
-            elif ours1 is not None and r.wall:
-                ratios.append(f"ours {w}w/{counts[0]}w wall speed-up {ours1.wall / r.wall:.2f}x")
-                if r.critical_cpu:
-                    # Load-independent: the single worker's CPU over this run's critical path.
-                    ratios.append(f"critical path {r.critical_cpu:.2f} CPU s, speed-up on idle cores "
-                                  f"{ours1.cpu / r.critical_cpu:.2f}x")
-            note = "" if r.result == "success" else f"  ({r.result})"
-            print(fmt_run("ours", tla.stem, w, r) + "  " + ", ".join(ratios) + note, flush=True)
+            for engine in engines:
+                if engine == "native" and w > 1:
+                    continue  # the native core has one worker
+                r = run_ours(tla, cfg, w, engine)
+                ratios = []
+                if t is not None and t.rate:
+                    ratios.append(f"ours/TLC {r.rate / t.rate:.2f}x")
+                    if t.distinct != r.distinct:
+                        ratios.append(f"DISTINCT DIFFERS (TLC {t.distinct})")
+                if w == counts[0]:
+                    ours1[engine] = r
+                elif engine in ours1 and r.wall:
+                    one = ours1[engine]
+                    ratios.append(f"ours {w}w/{counts[0]}w wall speed-up {one.wall / r.wall:.2f}x")
+                    if r.critical_cpu:
+                        # Load-independent: the single worker's CPU over this run's critical path.
+                        ratios.append(f"critical path {r.critical_cpu:.2f} CPU s, speed-up on idle cores "
+                                      f"{one.cpu / r.critical_cpu:.2f}x")
+                note = "" if r.result == "success" else f"  ({r.result})"
+                print(fmt_run("ours", tla.stem, w, r, engine) + "  " + ", ".join(ratios) + note, flush=True)
             if t is not None:
                 extra = ""
-                if tlc1 is not None and t is not tlc1 and t.wall:
+                if w == counts[0]:
+                    tlc1 = t
+                elif tlc1 is not None and t.wall:
                     extra = f"  TLC {w}w/{counts[0]}w wall speed-up {tlc1.wall / t.wall:.2f}x"
                 print(fmt_run("TLC", tla.stem, w, t) + extra, flush=True)
     if not jar:

@@ -5,7 +5,8 @@
 # against its model (safestate conform), model mutants and tests -- run by
 # `safestate evidence`, which ends the job with the evidence package (build/evidence)
 # and prints its path and gap count.  SAFESTATE_CPP_MUTATION=N first measures the
-# C++ mutation score on a stratified sample of N mutants (slow).
+# C++ mutation score on a stratified sample of N mutants (slow; SAFESTATE_CPP_MUTATION_BUDGET
+# seconds, SAFESTATE_CPP_MUTATION_STRIDE K: the input-complete pass on every K-th state).
 # Exits non-zero as soon as one step fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,10 +31,22 @@ echo "== demo scenario (the hydraulic press accident: flat reference and chain p
 echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
 "$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
 
+echo "== model check: the flagship with the native engine (must give TLC's counts, models/expected.json)"
+.venv/bin/python - <<'PY'
+import json, subprocess, sys
+want = json.load(open("models/expected.json"))["SystemStateManager"]
+out = subprocess.run([".venv/bin/safestate", "check", "models/SystemStateManager.tla", "--engine", "native", "--json"],
+                     capture_output=True, text=True)
+got = json.loads(out.stdout)
+keys = ("result", "distinct_states", "states_generated", "depth")
+print({k: got[k] for k in keys}, f"{got['seconds']} s")
+sys.exit(0 if all(got[k] == want[k] for k in keys) else 1)
+PY
+
 if [ -n "${SAFESTATE_CPP_MUTATION:-}" ]; then
   echo "== C++ mutation score (universalmutator, stratified sample of $SAFESTATE_CPP_MUTATION mutants; slow)"
   .venv/bin/python conform/cpp_mutants/score.py build/cpp-mutation --sample "$SAFESTATE_CPP_MUTATION" \
-    --budget "${SAFESTATE_CPP_MUTATION_BUDGET:-3600}"
+    --budget "${SAFESTATE_CPP_MUTATION_BUDGET:-3600}" --stride "${SAFESTATE_CPP_MUTATION_STRIDE:-1}"
 fi
 
 # The evidence chain of every system of the registry, and the package that shows it:

@@ -11,7 +11,7 @@ log() { printf '[setup] %s\n' "$*"; }
 
 # 1. Debian packages.
 need_pkgs=()
-for pkg in cmake ninja-build g++ libeigen3-dev libgtest-dev googletest valgrind python3-venv graphviz libmodbus-dev libboost-dev nlohmann-json3-dev chromium chromium-driver; do
+for pkg in cmake ninja-build g++ libeigen3-dev libgtest-dev googletest valgrind python3-venv graphviz libmodbus-dev libboost-dev nlohmann-json3-dev chromium chromium-driver ccache; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need_pkgs+=("$pkg")
 done
 if ((${#need_pkgs[@]})); then
@@ -25,6 +25,9 @@ if ((${#need_pkgs[@]})); then
     exit 1
   fi
 fi
+
+# shellcheck source=scripts/build_env.sh
+. scripts/build_env.sh  # ccache, when installed
 
 # 2. Python venv and the package (editable, with the compiled binding).
 PY=${PYTHON:-python3}

@@ -5,6 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# shellcheck source=scripts/build_env.sh
+. scripts/build_env.sh  # ccache for the C++ builds the tests start (wrong variant, C++ mutants)
 echo "== lint and types (ruff, mypy)"
 .venv/bin/ruff check
 .venv/bin/mypy

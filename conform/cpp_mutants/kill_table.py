@@ -3,7 +3,7 @@ catches -- the trace replay of every reachable transition of the CI cfg, and the
 input-complete pass -- and which GoogleTest catches.
 
     .venv/bin/python conform/cpp_mutants/kill_table.py BUILD_DIR [--no-gtest]
-        [--only ID ...] [--json FILE]
+        [--only ID ...] [--json FILE] [--gtest-only]
 
 Builds every mutant (mutate.py, one CMake tree), then per mutant runs the input-complete
 pass (stopping at the first mismatch), the trace replay of every transition (likewise;
@@ -104,11 +104,18 @@ def main() -> int:
     ap.add_argument("--json", type=Path)
     ap.add_argument("--always-replay", action="store_true",
                     help="run the trace replay also on mutants the input-complete pass killed")
+    ap.add_argument("--gtest-only", action="store_true",
+                    help="the GoogleTest column only (no conformance pass: seconds per mutant)")
     ap.add_argument("-j", "--jobs", type=int, default=1)
     a = ap.parse_args()
     mutants = [m for m in load() if not a.only or m.id in a.only]
     build = a.build.resolve()
     build_all(build, mutants, gtest=not a.no_gtest, jobs=a.jobs)
+    if a.gtest_only:
+        for m in mutants:
+            killed, failed = gtest_kills(build, m)
+            print(f"| `{m.id}` | {'yes: ' + ', '.join(failed) if killed else 'no'} |", flush=True)
+        return 0
     rows = measure(build, mutants, not a.no_gtest, log=lambda s: print(s, file=sys.stderr, flush=True),
                    always_replay=a.always_replay)
     if a.json:

@@ -26,6 +26,7 @@ interface, docs/adding-a-system.md walks through writing one).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable
 from types import ModuleType
@@ -49,6 +50,15 @@ SELECTOR_CONTACTS = ("selector_auto", "selector_t1", "selector_t2")
 GROUPS: dict[str, tuple[str, ...]] = {
     "estop": ("estop_a", "estop_b"), "gate": ("gate_a", "gate_b"),
     "enable": ("enable_a", "enable_b"), "selector": ("selector",),
+}
+
+# One disagreeing (or, for the selector, invalid) reading per held group: (model record
+# fields, ScanInputs fields); the combined-disagreement probes hold two of them at once.
+DISAGREEING: dict[str, tuple[dict[str, Any], dict[str, Any]]] = {
+    "estop": ({"estop_a": True, "estop_b": False}, {"estop_closed_a": True, "estop_closed_b": False}),
+    "gate": ({"gate_a": True, "gate_b": False}, {"safeguard_closed_a": True, "safeguard_closed_b": False}),
+    "enable": ({"enable_a": "MIDDLE", "enable_b": "RELEASED"}, {"enabling_a": "MIDDLE", "enabling_b": "RELEASED"}),
+    "selector": ({"selector": "INVALID"}, {"selector_auto": False, "selector_t1": False, "selector_t2": False}),
 }
 
 
@@ -96,6 +106,8 @@ class SystemStateManagerAdapter(Adapter):
         self.speeds = speed_vectors(core, self.cfg)
         self.jog_probes = jog_probes(int(self.constants["T1SpeedLimit"]))
         self._raw_cache: dict[Value, dict[str, Any]] = {}
+        self.discrepancy_cycles = int(self.constants["DiscrepancyCycles"])
+        self._combined_seen: set[tuple[Value, Value]] = set()
 
     # ------------------------------------------------------------ C++ calls
     def new_sut(self) -> Any:
@@ -168,6 +180,7 @@ class SystemStateManagerAdapter(Adapter):
         for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok", "operator_link_ok"):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
+        probes += self._combined_disagreement_probes(state, cur, base)
         if not state[self.index["queue"]]:
             hold = Event.of(CYCLE, {"in": FnValue(cur)})
             for label, cmd in self.jog_probes:
@@ -175,6 +188,28 @@ class SystemStateManagerAdapter(Adapter):
                 probes.append(Probe(hold, [self.plan_call(submit), base], f"submit {label}, then hold the inputs",
                                     (submit,)))
         return probes
+
+    def _combined_disagreement_probes(self, state: tuple, cur: dict[str, Value],
+                                      base: dict[str, Any]) -> list[Probe]:
+        """Two held groups disagreeing from the same cycle on, held D+1 cycles: both faults
+        mature in one scan, so the C++ must report the model's (design §2) priority
+        (`DiscrepancyFault`).  The one-group-per-cycle alphabet above never reaches this.
+        Bounded: offered once per (control state, session mode), from the first probed
+        state there whose mismatch counters are all 0, so it adds a few dozen probes."""
+        key = (state[self.index["state"]], state[self.index["session_mode"]])
+        counters = ("estop_mismatch", "safeguard_mismatch", "enabling_mismatch", "selector_invalid")
+        if key in self._combined_seen or any(state[self.index[c]] for c in counters):
+            return []
+        self._combined_seen.add(key)
+        out = []
+        for g1, g2 in itertools.combinations(DISAGREEING, 2):
+            rec = dict(cur, **DISAGREEING[g1][0], **DISAGREEING[g2][0])
+            raw = dict(base, **DISAGREEING[g1][1], **DISAGREEING[g2][1])
+            ev = Event.of(CYCLE, {"in": FnValue(rec)})
+            out.append(Probe(ev, [raw] * (self.discrepancy_cycles + 1),
+                             f"{g1} and {g2} disagreeing from one cycle on, held {self.discrepancy_cycles + 1} cycles",
+                             (ev,) * self.discrepancy_cycles))
+        return out
 
     def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
         """Run each probe on a fresh C++ manager brought to the state by `prefix`."""

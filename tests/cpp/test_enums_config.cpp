@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "safestate/command_kind.hpp"
@@ -18,6 +20,7 @@
 #include "safestate/resume_target.hpp"
 #include "safestate/selector_reading.hpp"
 #include "safestate/speed_level.hpp"
+#include "safestate/status_record.hpp"
 #include "safestate/state_id.hpp"
 #include "safestate/stop_category.hpp"
 #include "safestate/submit_result.hpp"
@@ -65,6 +68,47 @@ TEST(RSM16_StatusNames, CommandResultIsNoneAcceptedOrTheReason) {
   EXPECT_EQ(to_string(CommandResult::none()), "NONE");
   EXPECT_EQ(to_string(CommandResult::accepted()), "ACCEPTED");
   EXPECT_EQ(to_string(CommandResult::rejected(RejectReason::QueueFull)), "QUEUE_FULL");
+}
+
+// The status record (RSM-16) compares by every field: tests and the binding use == to
+// say "nothing changed", so a field left out of it would hide a change.
+template <typename E>
+E next_value(E e) {
+  return static_cast<E>(static_cast<std::underlying_type_t<E>>(e) + 1);
+}
+
+TEST(RSM16_StatusNames, StatusRecordsDifferingInAnyOneFieldAreUnequal) {
+  using Change = void (*)(StatusRecord&);
+  const Change changes[] = {
+      [](StatusRecord& r) { r.state = next_value(r.state); },
+      [](StatusRecord& r) { r.selector = next_value(r.selector); },
+      [](StatusRecord& r) { r.session_mode = next_value(r.session_mode); },
+      [](StatusRecord& r) { r.stop_category = next_value(r.stop_category); },
+      [](StatusRecord& r) { r.fault_code = next_value(r.fault_code); },
+      [](StatusRecord& r) { r.last_reject_reason = next_value(r.last_reject_reason); },
+      [](StatusRecord& r) { r.command_result = CommandResult::accepted(); },
+      [](StatusRecord& r) { ++r.estop_mismatch; },
+      [](StatusRecord& r) { ++r.safeguard_mismatch; },
+      [](StatusRecord& r) { ++r.enabling_mismatch; },
+      [](StatusRecord& r) { ++r.selector_invalid; },
+      [](StatusRecord& r) { ++r.state_cycles; },
+      [](StatusRecord& r) { r.t2_confirmed = !r.t2_confirmed; },
+      [](StatusRecord& r) { r.resume_to = next_value(r.resume_to); },
+      [](StatusRecord& r) { ++r.jog_axis; },
+      [](StatusRecord& r) { ++r.jog_direction; },
+      [](StatusRecord& r) { ++r.jog_speed_mm_s; },
+      [](StatusRecord& r) { ++r.queue_length; },
+      [](StatusRecord& r) { ++r.stale_commands; },
+      [](StatusRecord& r) { r.estop_tested_a = !r.estop_tested_a; },
+      [](StatusRecord& r) { r.estop_tested_b = !r.estop_tested_b; },
+  };
+  const StatusRecord base{};
+  EXPECT_TRUE(base == StatusRecord{});
+  for (std::size_t i = 0; i < std::size(changes); ++i) {
+    StatusRecord other{};
+    changes[i](other);
+    EXPECT_FALSE(base == other) << "field " << i << " of StatusRecord is not compared";
+  }
 }
 
 TEST(RSM02_OperatingModes, SelectorMatchesSessionOnlyForTheSameValidMode) {

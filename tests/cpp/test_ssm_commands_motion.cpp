@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <thread>
 #include <vector>
 
+#include "safestate/jog_setpoint.hpp"
 #include "ssm_test_support.hpp"
 
 namespace {
@@ -260,6 +262,18 @@ TEST(RSM09_Manual, JogArgumentsAreValidated) {
   }
 }
 
+// The jog setpoint (axis, direction, speed) is a value: two setpoints are equal exactly
+// when all three fields are, and != is its negation.
+TEST(RSM09_Manual, JogSetpointsAreEqualExactlyWhenAxisDirectionAndSpeedAre) {
+  const JogSetpoint a{2, -1, 100};
+  EXPECT_TRUE(a == (JogSetpoint{2, -1, 100}));
+  EXPECT_FALSE(a != (JogSetpoint{2, -1, 100}));
+  for (const JogSetpoint& b : {JogSetpoint{3, -1, 100}, JogSetpoint{2, 1, 100}, JogSetpoint{2, -1, 101}}) {
+    EXPECT_FALSE(a == b);
+    EXPECT_TRUE(a != b);
+  }
+}
+
 TEST(RSM09_Manual, ReleasingTheEnablingDeviceStopsCat1) {
   Rig r;
   r.to_jogging(SelectorReading::T1);
@@ -330,6 +344,35 @@ TEST(RSM10_T1Speed, UnreadableJointVelocityIsTreatedAsOverspeed) {
   const SpeedMonitor mon{Config{}};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(mon.classify(kPose, JointVector{nan, 0, 0, 0, 0, 0}), SpeedLevel::OverT1);
+}
+
+// A joint turning backwards moves as much as one turning forwards (the zero-speed test
+// compares the magnitude; without it every negative velocity reads as standstill).
+TEST(RSM10_T1Speed, AJointTurningBackwardsIsNotAtRest) {
+  const SpeedMonitor mon{Config{}};
+  EXPECT_EQ(mon.classify(kPose, JointVector{-kSlow[0], 0, 0, 0, 0, 0}), SpeedLevel::Moving);
+  EXPECT_EQ(mon.classify(kPose, JointVector{0, 0, 0, 0, 0, -0.5}), SpeedLevel::Moving);
+  EXPECT_EQ(mon.classify(kPose, JointVector{-kFast[0], 0, 0, 0, 0, 0}), SpeedLevel::OverT1);
+}
+
+// RSM-10: the T1 limit is a maximum, 250 mm/s itself is allowed; only above it is an
+// overspeed. The joint-1 rate whose TCP speed is the limit exactly is found by nudging
+// the last bits of limit / (speed per rad/s).
+TEST(RSM10_T1Speed, ExactlyTheT1LimitIsNotAnOverspeed) {
+  const Config config{};
+  const SpeedMonitor mon{config};
+  const double limit = static_cast<double>(config.t1_speed_limit_mm_s);
+  double w = limit / mon.tcp_speed_mm_s(kPose, JointVector{1.0, 0, 0, 0, 0, 0});
+  for (int i = 0; i < 64; ++i) {
+    const double got = mon.tcp_speed_mm_s(kPose, JointVector{w, 0, 0, 0, 0, 0});
+    if (got == limit) {
+      break;
+    }
+    w = std::nextafter(w, got < limit ? limit : 0.0);
+  }
+  ASSERT_EQ(mon.tcp_speed_mm_s(kPose, JointVector{w, 0, 0, 0, 0, 0}), limit);
+  EXPECT_EQ(mon.classify(kPose, JointVector{w, 0, 0, 0, 0, 0}), SpeedLevel::Moving);
+  EXPECT_EQ(mon.classify(kPose, JointVector{w * (1 + 1e-9), 0, 0, 0, 0, 0}), SpeedLevel::OverT1);
 }
 
 TEST(RSM10_T1Speed, CommandedJogSpeedIsClampedTo250InT1) {

@@ -12,6 +12,8 @@ from pathlib import Path
 
 import pytest
 
+from cost_record import pytest_runtest_protocol  # noqa: F401 - SAFESTATE_TEST_COSTS=FILE records each test's cost
+
 REPO = Path(__file__).resolve().parents[2]
 PYTHON_DIR = REPO / "python"
 if str(PYTHON_DIR) not in sys.path:
@@ -92,6 +94,16 @@ def tla_dir(tmp_path: Path):
             (tmp_path / f"{name}.cfg").write_text(cfg)
         return tmp_path / f"{name}.tla"
     return write
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config: pytest.Config, log):  # type: ignore[no-untyped-def]
+    """`--dist loadfile` (the test command) schedules the longest work first and spreads
+    the independent model-mutant checks over the workers (cost_schedule.py)."""
+    if config.getvalue("dist") != "loadfile":
+        return None
+    from cost_schedule import CostOrderedFileScheduling
+    return CostOrderedFileScheduling(config, log)
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:

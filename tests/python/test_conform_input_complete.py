@@ -27,8 +27,10 @@ MUTANTS_DIR = REPO / "conform" / "cpp_mutants"
 # jog_speed_zero_accepted needs the two-step probes (a zero-speed JOG_START, then a cycle)
 # and, being a transition-table guard, also checks that a mutant module loaded after the
 # real binding runs its own table (see mutate.py: hidden visibility).
+# discrepancy_checked_after_selector needs two groups disagreeing from the same cycle on
+# (the combined-disagreement probes): both faults mature in one scan.
 SUBSET = ("estop_1oo2_as_xor", "t1_limit_inclusive", "tcp_speed_in_m_per_s", "selector_several_contacts_first_wins",
-          "jog_speed_zero_accepted")
+          "jog_speed_zero_accepted", "discrepancy_checked_after_selector")
 
 
 
@@ -81,6 +83,10 @@ def test_flagship_alphabet_has_every_channel_pair_contact_pattern_and_threshold_
                  "at the zero threshold", "just above the zero threshold", "NaN"):
         assert any(must in x for x in labels), must
     # the queue is empty: a JOG_START at each bound of its argument check, then a cycle
+    # two groups disagreeing from one cycle on, held D+1 cycles: every pair of the four
+    for pair in ("estop and gate", "estop and enable", "estop and selector", "gate and enable",
+                 "gate and selector", "enable and selector"):
+        assert f"{pair} disagreeing from one cycle on, held 3 cycles" in labels, pair
     for must in ("JOG_START speed 0", "JOG_START axis 0", "JOG_START direction 0", "JOG_START exactly at the T1 limit"):
         assert any(x.startswith(f"submit {must}") for x in labels), must
 
@@ -110,3 +116,29 @@ def test_every_cpp_mutant_still_applies_to_the_sources():
     assert len(mutants) >= 15
     for m in mutants:
         assert mutants_build.apply(m) != (REPO / m.file).read_text(encoding="utf-8")
+
+
+def test_cpp_mutation_score_end_to_end_on_two_universalmutator_mutants(mutant_build, tmp_path):
+    """score.py as the main job runs it, on 2 of universalmutator's mutants of
+    src/arm_kinematics.cpp (seed 1: a declaration commented out, which must be filtered as
+    stillborn by the compile-only pass, and a DH-matrix entry `-st * ca` -> `-st + ca`,
+    which the kinematics GoogleTest must kill).  Shares build/cpp_mutants with the subset
+    above (same file: one xdist worker), so only the mutated unit and one test are built."""
+    import json
+    import subprocess
+    import sys
+
+    out = tmp_path / "score.json"
+    r = subprocess.run([sys.executable, str(MUTANTS_DIR / "score.py"), str(REPO / "build" / "cpp_mutants"),
+                        "--files", "src/arm_kinematics.cpp", "--sample", "2", "--seed", "1", "--passes", "gtest",
+                        "--gtest-tests", "test_arm_kinematics", "--out", str(out)],
+                       capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr[-2000:]
+    d = json.loads(out.read_text(encoding="utf-8"))
+    assert d["sampled"] == 2 and d["generated"] > 100 and d["targets"] == ["src/arm_kinematics.cpp"]
+    by_status = {m["status"]: m for m in d["mutants"]}
+    assert by_status["stillborn"]["stillborn_at"] == "compile-only", d["mutants"]
+    assert by_status["killed"]["killed_by"].startswith("GoogleTest: test_arm_kinematics"), d["mutants"]
+    assert (d["stillborn"], d["evaluated"], d["killed"], d["score_percent"]) == (1, 1, 1, 100.0)
+    assert d["confidence_95_percent"][1] == 100.0 and d["survivors"] == []
+    assert "C++ mutation score: 100.0% (1/1 killed" in r.stdout

@@ -89,3 +89,57 @@ def test_spec_the_checker_rejects_is_not_provable(capsys: pytest.CaptureFixture[
     assert code == 2 and report is None
     assert "WdRejected.tla:8:17: not provable: the checker rejects the spec" in err
     assert "Traceback" not in err
+
+
+@pytest.mark.parametrize("name, line, col, kind, steps", [
+    ("WdBmcDomain", 10, 22, "domain", 2),      # f[1], f's domain {0}, on the second step
+    ("WdBmcDivision", 8, 14, "division", 1),   # 3 \div 0 on the first step
+    ("WdBmcHead", 8, 14, "sequence", 2),       # Head(<< >>) on the second step
+])
+def test_bmc_reports_an_undefined_evaluation_on_the_steps_it_explores(
+        capsys: pytest.CaptureFixture[str], name: str, line: int, col: int, kind: str, steps: int) -> None:
+    """The invariants hold on every state; only the step's evaluation is undefined, so BMC
+    finds no counterexample and must report the site (it said 'unknown' before)."""
+    code, report, err = prove(capsys, spec(f"{name}.tla"), "--engine", "bmc", "--depth", "5")
+    assert code == 13 and report is not None, err
+    for r in report["results"]:
+        assert r["status"] == "ill-defined" and r["engine"] == "bmc" and r["k"] == steps
+        assert f"{name}.tla:{line}:{col}: in Next, {kind} obligation fails" in r["undefined"]
+        assert f"on the step out of state {steps}" in r["note"]
+        assert len(r["trace"]["states"]) == steps
+
+
+def test_bmc_reports_an_invariant_undefined_only_for_that_invariant(capsys: pytest.CaptureFixture[str]) -> None:
+    code, report, err = prove(capsys, spec("WdUndefined.tla"), "--engine", "bmc", "--depth", "4")
+    assert report is not None, err
+    results = by_invariant(report)
+    assert results["TypeOK"]["status"] == "unknown"   # OutsideDomain's site is not TypeOK's
+    assert {n: results[n]["status"] for n in ("OutsideDomain", "MissingField", "SubSeqOutOfRange", "HeadOfEmpty")} \
+        == dict.fromkeys(("OutsideDomain", "MissingField", "SubSeqOutOfRange", "HeadOfEmpty"), "ill-defined")
+    assert "WdUndefined.tla:13:18: in OutsideDomain, domain obligation fails" in results["OutsideDomain"]["undefined"]
+
+
+def test_bmc_reports_tail_and_choose_in_next(capsys: pytest.CaptureFixture[str]) -> None:
+    for name, site, steps in (("WdTail", "WdTail.tla:8:17: in Next, sequence", 1),
+                              ("WdChoose", "WdChoose.tla:7:14: in Next, choose", 4)):
+        code, report, err = prove(capsys, spec(f"{name}.tla"), "--engine", "bmc", "--depth", "6")
+        assert code == 13 and report is not None, err
+        r = by_invariant(report)["TypeOK"]
+        assert r["status"] == "ill-defined" and site in r["undefined"] and r["k"] == steps
+
+
+def test_init_without_a_state_makes_every_proof_vacuous(capsys: pytest.CaptureFixture[str]) -> None:
+    code, report, err = prove(capsys, spec("WdVacuousInit.tla"))
+    assert report is not None, err
+    r = by_invariant(report)["Positive"]
+    assert r["status"] == "vacuous" and r["vacuity"] == ["Init has no state satisfying the ASSUMEs"]
+    assert code == 1
+
+
+def test_strengthening_that_excludes_init_fails_the_proof(capsys: pytest.CaptureFixture[str]) -> None:
+    """The base case meets it first: the result names the strengthening, never 'proved'."""
+    code, report, err = prove(capsys, spec("WdStrengthen.tla"), "--proofs", spec("WdStrengthen.toml"))
+    assert report is not None, err
+    r = by_invariant(report)["NonNegative"]
+    assert r["status"] == "unknown" and "strengthening Wrong" in r["note"] and "not an invariant" in r["note"]
+    assert code == 1

@@ -168,29 +168,36 @@ def parse_config_text(text: str, file: str) -> Config:
     return cfg
 
 
-def _value(toks: list[_Tok], i: int, const: str) -> tuple[Any, int]:
+def _value(toks: list[_Tok], i: int, const: str, inside: str | None = None) -> tuple[Any, int]:
+    """The value at toks[i]; `inside` is the closing bracket of the enclosing set."""
     if i >= len(toks):
         raise TlaError("config", f"missing value for constant {const}", toks[-1].loc)
     t = toks[i]
     s = t.text
-    if re.match(r"-?\d+$", s):
+    if s == "<<" or s.startswith("-"):
+        # TLC 1.8.0's cfg grammar has neither tuples nor negative numbers: it stops there
+        # (a ConfigFileException, exit 255) expecting the next statement or the set's end.
+        expected = "= or <-" if inside is None else inside
+        raise TlaError("config", f"TLC found an error in the configuration file at line {t.loc.line}\n"
+                       f"It was expecting {expected}, but did not find it. (TLC 1.8.0 reads no tuple or negative "
+                       f"number in a .cfg: define the value in the spec and write {const} <- ItsName)", t.loc)
+    if re.match(r"\d+$", s):
         return int(s), i + 1
     if s.startswith('"'):
         return re.sub(r"\\(.)", r"\1", s[1:-1]), i + 1
     if s in ("TRUE", "FALSE"):
         return s == "TRUE", i + 1
-    if s in ("{", "<<"):
-        close = "}" if s == "{" else ">>"
+    if s == "{":
         items = []
         i += 1
-        while i < len(toks) and toks[i].text != close:
-            v, i = _value(toks, i, const)
+        while i < len(toks) and toks[i].text != "}":
+            v, i = _value(toks, i, const, "}")
             items.append(v)
             if i < len(toks) and toks[i].text == ",":
                 i += 1
         if i >= len(toks):
             raise TlaError("config", f"unterminated {s} in the value of {const}", t.loc)
-        return (frozenset(items) if s == "{" else tuple(items)), i + 1
+        return frozenset(items), i + 1
     if re.match(r"[A-Za-z_][A-Za-z0-9_]*$", s) and s not in _KEYWORDS:
         return ModelValue(s), i + 1
     if s == "[":

@@ -1,5 +1,5 @@
-"""``safestate check MODEL.tla [--config CFG] [--workers N|auto] [--json] [--itf FILE]
-[--graph FILE] [--tlc] [--max-memory MB]``.
+"""``safestate check MODEL.tla [--config CFG] [--workers N|auto] [--engine python|native|auto]
+[--json] [--itf FILE] [--graph FILE] [--tlc] [--max-memory MB]``.
 
 Text output follows TLC's summary lines; ``--json`` prints one object instead.
 Exit codes are TLC's (see `exit_codes.py` and docs/tla-subset.md).  Every failure
@@ -32,6 +32,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--itf", metavar="FILE", help="write the counterexample as an ITF JSON trace")
     p.add_argument("--graph", metavar="FILE", help="write the whole reachable state graph as JSON")
     p.add_argument("--tlc", action="store_true", help="also run TLC ($TLA2TOOLS_JAR) and compare")
+    p.add_argument("--engine", choices=("python", "native", "auto"), default="python",
+                   help="python (the reference evaluator, default), native (the C++ core: a subset, "
+                   "refused with file:line:col outside it) or auto (native where it applies)")
     p.add_argument("--max-memory", type=int, metavar="MB", help="stop with an error above this resident "
                    "memory (default 70%% of RAM)")
 
@@ -110,8 +113,13 @@ def _run(args: argparse.Namespace, start: float) -> int:
     workers = _workers(args.workers)
     model = load_model(args.model, args.config)
     progress = None if args.json else print_progress
-    result = explore_states(model, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
-                            progress=progress)
+    if args.engine == "python":
+        result = explore_states(model, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
+                                progress=progress)
+    else:
+        from .native.engine_choice import check
+        result = check(model, args.engine, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
+                       progress=progress)
     itf = _itf(model, result) if result.trace else None
     if args.itf:
         if itf is None:

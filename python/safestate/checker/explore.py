@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from ..tla.enum_watch import ENUM_WATCH, MemoryLimitExceeded, rss_mb
-from ..tla.errors import EvalError, ModuleEvalError, TlaError
+from ..tla.errors import EvalError, JavaOverrideError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
 from .model import Model
 from .deep_stack import call_with_deep_stack, stack_overflow_message
@@ -84,11 +84,28 @@ class CheckResult:
 
 
 class _Found(Exception):
-    """Ends the replay of a state's successors in `Explorer._step_params`."""
+    """Ends the replay of a state's successors in `step_params`."""
 
 
 class _Stop(Exception):
     """Ends the search: a violation, a deadlock or an error was recorded."""
+
+
+def step_params(m: Model, state: tuple, leaf: int, want: tuple) -> dict:
+    """The parameters of the step `state` -> `want` by action `leaf`: the successors
+    are generated again up to that step only, so an action after it that fails to
+    evaluate (TLC never got there) cannot turn a violation into an error."""
+    found: list[dict] = []
+
+    def match(st: tuple, lf: int, L: list) -> None:
+        if lf == leaf and st == want:
+            found.append(m.leaf_params(lf, L))
+            raise _Found()
+    try:
+        m.run_next(state, match)
+    except _Found:
+        return found[0]
+    return {}
 
 
 def default_memory_limit_mb() -> int:
@@ -127,9 +144,14 @@ class Explorer:
         self.live_edges = bool(model.liveness)
         self.edge_src = array("i")
         self.edge_dst = array("i")
-        # States generated once state i is expanded (TLC's count where it stops a search
-        # at a temporal property's finite counterexample, `tableau_safety.py`).
+        # With liveness, once state i is expanded: the states generated and distinct (TLC's
+        # counts where it stops at a temporal property's finite counterexample,
+        # `tableau_safety.py`, or at an error its per-state liveness check meets,
+        # `_at_tlc_liveness_error`).
         self.generated_after = array("q")
+        self.distinct_after = array("q")
+        # The successor whose CONSTRAINT or ACTION_CONSTRAINT failed to evaluate.
+        self.failed_successor: Step | None = None
 
     # ---------------------------------------------------------------- bookkeeping
     def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
@@ -186,25 +208,8 @@ class Explorer:
         steps = [Step(self.states[path[0]], "Init", {})]
         for a, b in zip(path, path[1:]):
             want, leaf = self.states[b], self.leaf[b]
-            steps.append(Step(want, self.m.leaves[leaf].name, self._step_params(self.states[a], leaf, want)))
+            steps.append(Step(want, self.m.leaves[leaf].name, step_params(self.m, self.states[a], leaf, want)))
         return steps
-
-    def _step_params(self, state: tuple, leaf: int, want: tuple) -> dict:
-        """The parameters of the step `state` -> `want` by action `leaf`: the successors
-        are generated again up to that step only, so an action after it that fails to
-        evaluate (TLC never got there) cannot turn a violation into an error."""
-        m = self.m
-        found: list[dict] = []
-
-        def match(st: tuple, lf: int, L: list) -> None:
-            if lf == leaf and st == want:
-                found.append(m.leaf_params(lf, L))
-                raise _Found()
-        try:
-            m.run_next(state, match)
-        except _Found:
-            return found[0]
-        return {}
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
@@ -325,6 +330,7 @@ class Explorer:
             self.expand(self.head)
             if self.live_edges:
                 self.generated_after.append(self.generated)
+                self.distinct_after.append(len(self.states))
             self.head += 1
 
     def expand(self, i: int) -> None:
@@ -353,7 +359,12 @@ class Explorer:
                 runtime.level = next_level
             in_model = True
             if constrained:
-                in_model = m.in_model(st) and m.action_ok(cur, st)
+                try:
+                    in_model = m.in_model(st) and m.action_ok(cur, st)
+                except TlaError:
+                    # TLC's trace of an error in a constraint ends with this successor.
+                    self.failed_successor = Step(st, m.leaves[leaf].name, m.leaf_params(leaf, L))
+                    raise
             new = True
             idx = -1
             if in_model:
@@ -384,15 +395,33 @@ class Explorer:
         try:
             m.run_next(cur, on_succ)
         except TlaError as e:
-            if isinstance(e, ModuleEvalError):
+            if isinstance(e, ModuleEvalError) or (isinstance(e, JavaOverrideError) and self._fairness_fails(cur)):
                 e.kind = "module eval"  # TLC: the module's own error code, exit 255
             if isinstance(e, EvalError) or e.kind == "eval":
+                trace = self.trace(i)
+                if self.failed_successor is not None:
+                    trace.append(self.failed_successor)
                 self.outcome = CheckResult("error", len(self.states), self.generated, self.max_level,
-                                           len(self.states) - self.head - 1, error=e, trace=self.trace(i))
+                                           len(self.states) - self.head - 1, error=e, trace=trace)
                 raise _Stop() from None
             raise
         if self.generated == before and m.check_deadlock:
             self._finish("deadlock failure", None, i)
+
+    def _fairness_fails(self, cur: tuple) -> bool:
+        """Whether TLC's liveness check fails on `cur` too: TLC 1.8.0 evaluates the
+        fairness conditions' ENABLED on a state even after its successors failed to
+        evaluate (Worker.doNextCheckLiveness); meeting an error there again, it keeps the
+        first error's code, which for a Java exception is 255, instead of replaying the
+        error for its call stack (exit 75)."""
+        if not self.m.liveness:
+            return False
+        for fair in self.m.fairness:
+            try:
+                fair.enabled(cur)
+            except TlaError:
+                return True
+        return False
 
     def _check_action_properties(self, i: int, cur: tuple, st: tuple, added: int, leaf: int,
                                  params: Callable[[], dict]) -> None:
@@ -429,6 +458,8 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness
         call_with_deep_stack(lambda: check_liveness(model, explorer, result))
+        if result.result == "error":
+            _at_tlc_liveness_error(model, explorer, result)
     elif model.liveness:
         from .liveness_run import stop_before_safety_failure
         call_with_deep_stack(lambda: stop_before_safety_failure(model, explorer, result))
@@ -436,6 +467,40 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         _check_postcondition(model, result)
     result.seconds = time.monotonic() - start
     return result
+
+
+STATE_LEVEL_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually",
+                     "wf", "sf")
+
+
+def _at_tlc_liveness_error(model: Model, explorer: Explorer, result: CheckResult) -> None:
+    """TLC evaluates the liveness conditions of each state (its fairness conditions'
+    ENABLED, the properties' state predicates) right after expanding it, so an error in
+    one stops its search there, not after it, with exit code 255 (an Assert keeps 14):
+    `result` gets the counts, depth and trace of that moment."""
+    err = result.error
+    if err is None or err.kind not in ("eval", "module eval", "assert") or not explorer.distinct_after:
+        return
+    preds = [f.enabled for f in model.fairness]
+    for ob in model.liveness:
+        if ob.kind in STATE_LEVEL_KINDS:
+            preds += [p for p in (ob.p, ob.q) if p is not None]
+    for i in range(len(explorer.distinct_after)):
+        try:
+            for p in preds:
+                p(explorer.states[i])
+        except TlaError as e:
+            if not isinstance(e, EvalError) and e.kind != "eval":
+                raise
+            if e.kind != "assert":
+                e.kind = "module eval"
+            distinct = explorer.distinct_after[i]
+            result.result, result.error = "error", e
+            result.distinct_states, result.states_generated = distinct, explorer.generated_after[i]
+            result.depth = max(explorer.level[:distinct])
+            result.left_on_queue = distinct - i - 1
+            result.trace = explorer.trace(i)
+            return
 
 
 def _needs_one_worker(model: Model, graph: bool) -> str | None:

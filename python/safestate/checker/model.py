@@ -87,6 +87,9 @@ class Model:
     # The continuation at the end of Init/Next calls sink[0](state, leaf_index, frame).
     sink: list = field(default_factory=lambda: [None])
     next_name: str = "Next"
+    # Init and Next as expressions (for the native engine's translator).
+    init_expr: A.Expr | None = None
+    next_expr: A.Expr | None = None
 
     # ---------------------------------------------------------------- generation
     def run_init(self, callback: Callable[[tuple, int, list], None]) -> None:
@@ -473,6 +476,7 @@ def _compile_behaviour(model: Model) -> None:
         init = A.Name(cfg.init.loc, cfg.init.name)
         nxt = A.Name(cfg.next.loc, cfg.next.name)
     model.next_name = nxt.name if isinstance(nxt, A.Name) else "Next"
+    model.init_expr, model.next_expr = init, nxt
     ac = ActionCompiler(model.compiler)
     sink = model.sink
 

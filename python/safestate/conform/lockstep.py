@@ -42,67 +42,73 @@ class Counter:
         self.trace: ConcreteTrace | None = None
 
 
+class LockstepMachine(RuleBasedStateMachine):
+    """The generic lockstep machine: one rule (`any_event`) and one invariant (the C++
+    observes what the model projects).  Unbound: `make_machine` subclasses it with the
+    harness, the model's initial state and the step counter."""
+
+    harness: Harness
+    initial: tuple
+    count: Counter
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.ls = self.harness.lockstep(self.initial)
+        self.steps: list[Step] = []
+
+    def _inputs(self) -> dict[str, Any]:
+        """The model's last input record (for adapter rules that change one signal)."""
+        inputs_ix = self.harness.adapter.index.get("inputs")
+        assert inputs_ix is not None, "the model has no `inputs` variable"
+        return self.ls.state[inputs_ix].d  # type: ignore[no-any-return]
+
+    def _apply(self, event: Event, nxt: tuple) -> None:
+        mm = self.ls.step(event, nxt, check_rows=True)
+        self.count.steps += 1
+        self.steps.append(Step(event, nxt, -1))
+        if mm is not None:
+            self._fail(mm.render())
+
+    def _fail(self, text: str) -> None:
+        self.count.failure = text
+        self.count.trace = ConcreteTrace(self.initial, list(self.steps))
+        raise AssertionError(text)
+
+    def _pick(self, keep: Callable[[Event], bool], i: int) -> bool:
+        """Apply the i-th (mod n) allowed event satisfying `keep`; False if none."""
+        trs = [(e, s) for e, s in self.harness.stepper.transitions(self.ls.state) if keep(e)]
+        if not trs:
+            return False
+        event = trs[i % len(trs)][0]
+        same = [s for e, s in trs if e == event]
+        assert len(same) == 1, f"the model has {len(same)} transitions for {event}"
+        self._apply(event, same[0])
+        return True
+
+    @rule(i=st.integers(0, 255))
+    def any_event(self, i: int) -> None:
+        self._pick(lambda e: True, i)
+
+    @invariant()
+    def cpp_observes_the_model_state(self) -> None:
+        adapter = self.harness.adapter
+        bad = differing(adapter.project(self.ls.state), adapter.observe(self.ls.sut))
+        if bad:
+            self._fail(f"after step {self.ls.index}: observe() differs from the model in {', '.join(bad)}")
+
+
+def bind_machine(h: Harness, initial: tuple, count: Counter) -> type[LockstepMachine]:
+    """The generic machine bound to one harness, initial state and counter."""
+    return type("Lockstep", (LockstepMachine,), {"harness": h, "initial": initial, "count": count})
+
+
 def make_machine(h: Harness, model: Model, count: Counter) -> type[RuleBasedStateMachine]:
     """The generic lockstep machine, with the adapter's rules mixed in."""
+    base = bind_machine(h, model.initial_states()[0], count)
     rules = h.adapter.hypothesis_rules()
-    initial = model.initial_states()[0]
-    base = _base_machine(h, initial, count)
     if rules is None:
         return base
     return type("Lockstep" + type(h.adapter).__name__, (rules, base), {})
-
-
-def _base_machine(h: Harness, initial: tuple, count: Counter) -> type[RuleBasedStateMachine]:
-    stepper = h.stepper
-    inputs_ix = h.adapter.index.get("inputs")
-
-    class Machine(RuleBasedStateMachine):
-        def __init__(self) -> None:
-            super().__init__()
-            self.ls = h.lockstep(initial)
-            self.steps: list[Step] = []
-
-        def _inputs(self) -> dict[str, Any]:
-            """The model's last input record (for adapter rules that change one signal)."""
-            assert inputs_ix is not None, "the model has no `inputs` variable"
-            return self.ls.state[inputs_ix].d  # type: ignore[no-any-return]
-
-        def _apply(self, event: Event, nxt: tuple) -> None:
-            mm = self.ls.step(event, nxt, check_rows=True)
-            count.steps += 1
-            self.steps.append(Step(event, nxt, -1))
-            if mm is not None:
-                self._fail(mm.render())
-
-        def _fail(self, text: str) -> None:
-            count.failure = text
-            count.trace = ConcreteTrace(initial, list(self.steps))
-            raise AssertionError(text)
-
-        def _pick(self, keep: Callable[[Event], bool], i: int) -> bool:
-            """Apply the i-th (mod n) allowed event satisfying `keep`; False if none."""
-            trs = [(e, s) for e, s in stepper.transitions(self.ls.state) if keep(e)]
-            if not trs:
-                return False
-            event = trs[i % len(trs)][0]
-            same = [s for e, s in trs if e == event]
-            assert len(same) == 1, f"the model has {len(same)} transitions for {event}"
-            self._apply(event, same[0])
-            return True
-
-        @rule(i=st.integers(0, 255))
-        def any_event(self, i: int) -> None:
-            self._pick(lambda e: True, i)
-
-        @invariant()
-        def cpp_observes_the_model_state(self) -> None:
-            model = h.adapter.project(self.ls.state)
-            cpp = h.adapter.observe(self.ls.sut)
-            bad = differing(model, cpp)
-            if bad:
-                self._fail(f"after step {self.ls.index}: observe() differs from the model in {', '.join(bad)}")
-
-    return Machine
 
 
 def run_lockstep(h: Harness, model: Model, min_steps: int, profile: str | None = None,

@@ -37,9 +37,13 @@ def states_comparable(cfg: str) -> bool:
     return re.search(r"^\s*(SYMMETRY|VIEW)\b", cfg, re.M) is None
 
 
-def _words(state: str) -> str:
-    """A state's text without line breaks (TLC wraps long values)."""
-    return " ".join(state.split())
+def _words(state: str) -> list[str]:
+    """A state's conjuncts `/\\ v = value`, without line breaks (TLC wraps long
+    values), sorted: TLC prints the variables in the order of SANY's hash table
+    (e.g. JugPuzzle's `small` before `big`), we in declaration order; the
+    state is the same."""
+    text = " ".join(state.split())
+    return sorted(part.strip() for part in re.split(r"(?:^| )/\\ ", text) if part.strip())
 
 
 def describe(ours: dict, tlc: TlcSummary, diffs: list[str]) -> str:

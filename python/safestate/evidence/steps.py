@@ -160,4 +160,8 @@ def run_pytest(runner: Runner, root: Path, node_ids: list[str]) -> StepResult | 
             *node_ids]
     inputs = [*files_under([root / "tests" / "python"], (".py",)), *files_under([PKG], (".py",))]
     inputs = [f for f in inputs if "evidence" not in f.parts]
-    return runner.run("pytest", argv, inputs, outputs=["pytest.xml"], timeout=3600)
+    # the long proofs too (the press's: ~2 min CPU, left out of the default test run)
+    return runner.run("pytest", argv, inputs, outputs=["pytest.xml"], env={SLOW_PROOFS: "1"}, timeout=3600)
+
+
+SLOW_PROOFS = "SAFESTATE_SLOW_PROOFS"  # set: tests/python/test_prove_press.py runs

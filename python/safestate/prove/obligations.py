@@ -16,11 +16,57 @@ from dataclasses import dataclass, field
 from typing import Union
 
 import z3
+from z3 import z3core as C
+from z3.z3types import Ast
 
 from ..tla.errors import Loc
 
 
 Guard = Union[z3.BoolRef, Callable[[], z3.BoolRef]]  # a callable: built only if some obligation needs it
+
+
+class Chain:
+    """Path conditions as a shared linked chain (outermost guard first): the obligations
+    wrapped by one guard share one link, and the conjunction of a chain is built once
+    and shared by every obligation under it (rebuilding it per obligation through z3py
+    dominated the translation of the state-chain press, whose 494,048 obligations sit
+    under dozens of guards)."""
+
+    __slots__ = ("guard", "rest", "_conj")
+
+    def __init__(self, guard: z3.BoolRef, rest: "Chain | None") -> None:
+        self.guard, self.rest, self._conj = guard, rest, None
+
+    def conj(self) -> z3.BoolRef:
+        """guard /\\ (the rest's conjunction); built iteratively (chains are deep)."""
+        todo: list[Chain] = []
+        c: Chain | None = self
+        while c is not None and c._conj is None:
+            todo.append(c)
+            c = c.rest
+        for link in reversed(todo):
+            link._conj = link.guard if link.rest is None else _and2(link.guard, link.rest._conj)
+        assert self._conj is not None
+        return self._conj
+
+
+# Through the C API: z3py's And/Implies coerce and sort-check every argument, which cost
+# most of the press's translation (hundreds of thousands of obligations).
+def _and2(a: z3.BoolRef, b: z3.BoolRef) -> z3.BoolRef:
+    args = (Ast * 2)(a.as_ast(), b.as_ast())
+    return z3.BoolRef(C.Z3_mk_and(a.ctx.ref(), 2, args), a.ctx)
+
+
+def conjunction(fs: list[z3.BoolRef]) -> z3.BoolRef:
+    """z3.And(fs), for the long lists of obligation conditions."""
+    if not fs:
+        return z3.BoolVal(True)
+    args = (Ast * len(fs))(*(f.as_ast() for f in fs))
+    return z3.BoolRef(C.Z3_mk_and(fs[0].ctx.ref(), len(fs), args), fs[0].ctx)
+
+
+def _implies(a: z3.BoolRef, b: z3.BoolRef) -> z3.BoolRef:
+    return z3.BoolRef(C.Z3_mk_implies(a.ctx.ref(), a.as_ast(), b.as_ast()), a.ctx)
 
 
 @dataclass(eq=False)
@@ -29,21 +75,14 @@ class Obligation:
     loc: Loc | None
     what: str          # what must hold, in words
     site: z3.BoolRef   # the condition at the site itself
-    # the path conditions around it, as a shared chain (outermost guard, the rest) or ():
-    # not a z3 term, since wrapping every obligation at every level through z3py
-    # dominated the translation of the state-chain press
-    guards: tuple = ()
+    guards: Chain | None = None   # the path conditions around it (not a z3 term: shared, see Chain)
     _cond: z3.BoolRef | None = field(default=None, repr=False)
 
     @property
     def cond(self) -> z3.BoolRef:
         """holds in every state (and step) where the site is evaluated"""
         if self._cond is None:
-            gs, chain = [], self.guards
-            while chain:
-                gs.append(chain[0])
-                chain = chain[1]
-            self._cond = z3.Implies(z3.And(gs), self.site) if gs else self.site
+            self._cond = self.site if self.guards is None else _implies(self.guards.conj(), self.site)
         return self._cond
 
     def where(self) -> str:
@@ -99,12 +138,12 @@ class Obligations:
 
 def _under(obligations: list[Obligation], g: z3.BoolRef) -> list[Obligation]:
     """The obligations under one more guard; those sharing a chain share the new one."""
-    chains: dict[int, tuple] = {}
+    chains: dict[int, Chain] = {}
     out = []
     for o in obligations:
         chain = chains.get(id(o.guards))
         if chain is None:
-            chain = chains[id(o.guards)] = (g, o.guards)
+            chain = chains[id(o.guards)] = Chain(g, o.guards)
         out.append(Obligation(o.kind, o.loc, o.what, o.site, chain))
     return out
 

@@ -23,7 +23,7 @@ from .engines.result import Result
 from .plan import Plan, Step
 from .system import System
 from .vacuity import vacuity, vacuity_of_group
-from .welldefined import Parts, Undefined, first_on_trace, failing_under, parts_of, reach
+from .welldefined import Parts, first_on_trace, failing_under, mark_undefined, parts_of, reach
 
 DEFAULT_DEPTH = {"bmc": 20, "kind": 4, "pdr": 0}
 PDR_TIMEOUT = 120.0
@@ -53,7 +53,8 @@ def prove_all(sys: System, invariants: list[str], plan: Plan, engine: str | None
     if bmc_batch:
         k = depth if depth is not None else DEFAULT_DEPTH["bmc"]
         with_obligations = {n: sys.predicate_obligations(n) for n in bmc_batch}
-        found = bmc(sys, {n: p for n, (p, _) in with_obligations.items()}, k, log)
+        found = bmc(sys, {n: p for n, (p, _) in with_obligations.items()}, k, log,
+                    obligations={n: obligations for n, (_, obligations) in with_obligations.items()})
         for n in bmc_batch:
             results.append(_trace_defined(sys, found[n], parts_of(sys, {n: with_obligations[n][1]})))
     order = {n: i for i, n in enumerate(invariants)}
@@ -123,8 +124,8 @@ def _prove_one(sys: System, inv: str, step: Step, eng: str, depth: int | None, l
         # inconclusive: is there a real counterexample within the bound?
         k = depth if depth is not None else DEFAULT_DEPTH["bmc"]
         log(f"{inv}: {eng} inconclusive, looking for a counterexample by BMC up to depth {k}")
-        b = bmc(sys, {inv: p}, k, log, timeout_s=CONFIRM_TIMEOUT)[inv]
-        if b.status == "violated":
+        b = bmc(sys, {inv: p}, k, log, timeout_s=CONFIRM_TIMEOUT, obligations={inv: obligations})[inv]
+        if b.status in ("violated", "ill-defined"):
             b.engine = f"{eng}+bmc"
             b.cti, b.cti_params = res.cti, res.cti_params
             res = b
@@ -147,27 +148,8 @@ def _trace_defined(sys: System, res: Result, parts: Parts) -> Result:
         return res
     u = first_on_trace(sys, res.model, len(res.trace) - 1, parts)
     if u is not None:
-        _reached_undefined(sys, res, u, "the trace reaches")
+        mark_undefined(sys, res, u, "the trace reaches")
     return res
-
-
-def _reached_undefined(sys: System, res: Result, u: Undefined, how: str) -> None:
-    """`res` meets the failing obligation `u` on a trace from Init.  A 'type' obligation
-    is a step out of the type invariant's domain (which the translation cannot
-    represent): a violation of the type invariant itself, and for any other property
-    the end of what the proof can follow."""
-    res.undefined, res.trace, res.params = u.describe(), u.trace, u.params
-    if u.obligation.kind != "type":
-        res.status = "ill-defined"
-        res.note = f"{how} an evaluation TLA+ leaves undefined (TLC stops with an error there)"
-    elif res.invariant == sys.tr.type_invariant:
-        res.status = "violated"
-        res.note = (f"the next step leaves {res.invariant}'s domain ({u.describe()}); the state after it "
-                    f"is outside what the translation represents and is not shown")
-    else:
-        res.status = "unknown"
-        res.note = (f"{how} a step out of {sys.tr.type_invariant}'s domain ({u.describe()}); "
-                    f"{sys.tr.type_invariant} is violated there, and the proof cannot follow the spec further")
 
 
 def _defined_and_not_vacuous(sys: System, res: Result, q: z3.BoolRef, parts: Parts, depth: int | None,
@@ -181,7 +163,7 @@ def _defined_and_not_vacuous(sys: System, res: Result, q: z3.BoolRef, parts: Par
             f"looking for a trace up to depth {k}")
         u = reach(sys, parts, k, CONFIRM_TIMEOUT)
         if u is not None:
-            _reached_undefined(sys, res, u, "a trace reaches")
+            mark_undefined(sys, res, u, "a trace reaches")
             return res
         first = failing[0]
         res.status = "unknown"

@@ -29,7 +29,7 @@ from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoad
                            build_root_scope, load_module)
 from ..tla.values import ModelValue
 from .builtins import powerset
-from .obligations import Obligation, distinct
+from .obligations import Obligation, conjunction, distinct
 from .sets import EnumSet, PredSet, SetV
 from .translate import Ctx, Translator
 from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, is_z3, leaves
@@ -164,29 +164,15 @@ class System:
             n: _set_value(v, model, self.strings) for n, v in self.params.items() if isinstance(v, EnumSet)}
 
 
-def _quantified(*formulas: z3.ExprRef) -> bool:
-    """Does one of `formulas` contain a quantifier?  (Walks the DAG through the C API:
-    z3py's wrappers are slow; one walk for all, since thousands of well-definedness
-    obligations share their path conditions.)"""
-    from z3 import z3core as C
+def _quantified(*formulas: z3.BoolRef) -> bool:
+    """Does one of `formulas` contain a quantifier?  Asked of z3's own probe, inside z3:
+    a walk of the DAG from Python (even through the C API) cost seconds on the press,
+    whose ~500,000 well-definedness obligations are asked about at once."""
     if not formulas:
         return False
-    ctx = formulas[0].ctx.ref()
-    seen: set[int] = set()
-    stack = [f.as_ast() for f in formulas]
-    while stack:
-        a = stack.pop()
-        i = C.Z3_get_ast_id(ctx, a)
-        if i in seen:
-            continue
-        seen.add(i)
-        k = C.Z3_get_ast_kind(ctx, a)
-        if k == z3.Z3_QUANTIFIER_AST:
-            return True
-        if k == z3.Z3_APP_AST:
-            app = C.Z3_to_app(ctx, a)
-            stack.extend(C.Z3_get_app_arg(ctx, app, j) for j in range(C.Z3_get_app_num_args(ctx, app)))
-    return False
+    g = z3.Goal(ctx=formulas[0].ctx)
+    g.add(conjunction(list(formulas)))
+    return z3.Probe("has-quantifiers", formulas[0].ctx)(g) > 0
 
 
 def _set_value(s: SetV, model: z3.ModelRef, strings: Strings) -> frozenset:
@@ -287,6 +273,39 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
           type_invariant: str = "TypeOK", cfg_constants: set[str] | None = None, log=lambda s: None) -> System:
     """The z3 transition system of a model: parse, constants (from the .cfg, or symbolic
     where an ASSUME gives their range), variable domains (from TypeOK), Init and Next."""
+    src = _load(model_path, cfg_path, proofs_module)
+    tr, ctx, consts = _constants(src, cfg_constants, log)
+    var_names = [v.name for v in src.var_syms]
+    cur, nxt, tracked, untracked, domain_parts, doms = _variables(tr, src.scope, type_invariant, var_names,
+                                                                  model_path)
+    if untracked:
+        log(f"not typed by {type_invariant}, not tracked: {', '.join(untracked)}")
+    tr.cur, tr.nxt = cur, nxt
+    init, nxt_step = _init_and_next(tr, ctx, src, type_invariant, (cur, nxt), {v: doms[v] for v in tracked})
+    sys_ = System(src.module, src.scope, src.strings, tr, tracked, untracked, cur, nxt, consts.params,
+                  consts.report, z3.And(consts.constraints), z3.And(domain_parts), init.formula, init.aux,
+                  nxt_step.formula, nxt_step.aux, distinct(init.obligations), distinct(nxt_step.obligations))
+    sys_.cur_leaves = [x for v in tracked for x in leaves(cur[v])]
+    sys_.nxt_leaves = [x for v in tracked for x in leaves(nxt[v])]
+    sys_.param_leaves = [x for v in consts.params.values() for x in _param_leaves(v)]
+    return sys_
+
+
+@dataclass
+class _Source:
+    """The parsed model, its .cfg, its root scope and every module it reads."""
+    path: str
+    module: A.Module
+    config: Config | None
+    scope: Scope
+    var_syms: list[Any]
+    modules: list[A.Module]
+    strings: Strings
+
+
+def _load(model_path: str, cfg_path: str | None, proofs_module: str | None) -> _Source:
+    """Parse the model (and its proofs module, merged into its scope) and its .cfg
+    (default: MODEL.cfg beside it, if any); collect every string the translation meets."""
     module = load_module(model_path)
     if cfg_path is None:
         cand = os.path.splitext(model_path)[0] + ".cfg"
@@ -301,37 +320,57 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
         modules.append(extra)
     _TAG[0] += 1
     strings = Strings(_strings_of(modules, config), str(_TAG[0]))
+    return _Source(model_path, module, config, scope, var_syms, modules, strings)
 
-    declared = {n: s for n, s in scope.names.items() if isinstance(s, ConstSym)}
-    constants, overrides = _cfg_values(config, scope, declared, strings)
-    tr = Translator(strings, constants, overrides, {}, None)
-    tr.root_scope = scope
+
+@dataclass
+class _Constants:
+    params: dict[str, Any]      # the symbolic constants
+    constraints: list[Any]      # the ASSUME conjuncts about them
+    report: dict[str, Any]      # how each constant is taken
+
+
+def _constants(src: _Source, cfg_constants: set[str] | None, log: Any) -> tuple[Translator, Ctx, _Constants]:
+    """The translator with every constant's value: the .cfg's, or symbolic where an
+    ASSUME gives its range (unless `cfg_constants` fixes it to the .cfg's)."""
+    declared = {n: s for n, s in src.scope.names.items() if isinstance(s, ConstSym)}
+    constants, overrides = _cfg_values(src.config, src.scope, declared, src.strings)
+    tr = Translator(src.strings, constants, overrides, {}, None)
+    tr.root_scope = src.scope
     tr.const_upper = {}
-    ctx = Ctx(scope, {}, False)
-    assumes = [c for m in modules for a in m.assumes for c in _conjuncts(a.expr)]
+    ctx = Ctx(src.scope, {}, False)
+    assumes = [c for m in src.modules for a in m.assumes for c in _conjuncts(a.expr)]
     fixed = set(declared) if cfg_constants is not None and not cfg_constants else (cfg_constants or set())
     if fixed - set(declared):
         raise TlaError("config", f"--cfg-constants names no constant {', '.join(sorted(fixed - set(declared)))}",
                        None)
-    params, defining = _symbolic_params(tr, ctx, assumes, declared, fixed, strings)
+    params, defining = _symbolic_params(tr, ctx, assumes, declared, fixed, src.strings)
     for n, v in params.items():
         constants[n] = v
         overrides.pop(n, None)
     constraints = _assume_constraints(tr, ctx, assumes, params, defining, log)
-    report = _constant_report(declared, params, constants, overrides, assumes, config, strings)
+    report = _constant_report(declared, params, constants, overrides, assumes, src.config, src.strings)
     tr._memo.clear()
+    return tr, ctx, _Constants(params, constraints, report)
 
-    var_names = [v.name for v in var_syms]
-    cur, nxt, tracked, untracked, domain_parts, doms = _variables(tr, scope, type_invariant, var_names, model_path)
-    if untracked:
-        log(f"not typed by {type_invariant}, not tracked: {', '.join(untracked)}")
-    tr.cur, tr.nxt = cur, nxt
 
-    # ---- Init and Next
+@dataclass
+class _Action:
+    """Init or Next translated: the formula, its Skolem inputs and its obligations."""
+    formula: z3.BoolRef
+    aux: list[z3.ExprRef]
+    obligations: list[Obligation]
+
+
+def _init_and_next(tr: Translator, ctx: Ctx, src: _Source, type_invariant: str,
+                   states: tuple[dict[str, Any], dict[str, Any]], doms: dict[str, SetV]) -> tuple[_Action, _Action]:
+    """Init and Next (the .cfg's INIT/NEXT, or SPECIFICATION's parts), each with the
+    well-definedness obligations of evaluating it."""
+    config = src.config
     init_name = config.init.name if config and config.init else "Init"
     next_name = config.next.name if config and config.next else "Next"
     if config and config.specification and not config.init:
-        init_name, next_name = _split_spec(scope, config.specification.name)
+        init_name, next_name = _split_spec(src.scope, config.specification.name)
     tr.obl.take()  # ASSUMEs and TypeOK's sets: TLC evaluates them once, before Init (not obliged here)
     tr.assigning = True
     tr.type_invariant = type_invariant
@@ -339,23 +378,15 @@ def build(model_path: str, cfg_path: str | None, *, proofs_module: str | None = 
     # its TypeOK domain, so a value assigned outside it would make the step (or initial
     # state) disappear instead of violating TypeOK: such assignments are obliged to stay
     # in the domain (builtins._oblige_type).  A scalar can hold any value of its sort.
-    tr.type_targets = {id(cur[v]): (v, doms[v]) for v in tracked if not is_z3(cur[v])}
-    init = tr.act(_def_body(scope, init_name, model_path), ctx)
-    init_aux, tr.skolems = tr.skolems, []
-    init_obligations = tr.obl.take()
-    tr.type_targets = {id(nxt[v]): (v, doms[v]) for v in tracked if not is_z3(nxt[v])}
-    trans = tr.act(_def_body(scope, next_name, model_path), ctx)
-    trans_aux, tr.skolems = tr.skolems, []
-    trans_obligations = tr.obl.take()
+    actions = []
+    for name, state in zip((init_name, next_name), states):  # Init assigns the state, Next the successor
+        tr.type_targets = {id(state[v]): (v, d) for v, d in doms.items() if not is_z3(state[v])}
+        formula = tr.act(_def_body(src.scope, name, src.path), ctx)
+        aux, tr.skolems = tr.skolems, []
+        actions.append(_Action(formula, aux, tr.obl.take()))
     tr.type_targets = {}
     tr.assigning = False
-    sys_ = System(module, scope, strings, tr, tracked, untracked, cur, nxt, params,
-                  report, z3.And(constraints), z3.And(domain_parts), init, init_aux, trans, trans_aux,
-                  distinct(init_obligations), distinct(trans_obligations))
-    sys_.cur_leaves = [x for v in tracked for x in leaves(cur[v])]
-    sys_.nxt_leaves = [x for v in tracked for x in leaves(nxt[v])]
-    sys_.param_leaves = [x for v in params.values() for x in _param_leaves(v)]
-    return sys_
+    return actions[0], actions[1]
 
 
 def _cfg_values(config: Config | None, scope: Any, declared: dict[str, Any],

@@ -18,7 +18,8 @@ from typing import Any
 
 import z3
 
-from .obligations import Obligation
+from .engines.result import Result
+from .obligations import Obligation, conjunction
 from .system import System
 
 
@@ -87,7 +88,7 @@ def _failing(sys: System, s: z3.Solver, tagged: list[tuple[Obligation, str]]) ->
     open_ = list(tagged)
     while open_:
         s.push()
-        s.add(z3.Not(z3.And([o.cond for o, _ in open_])))
+        s.add(z3.Not(conjunction([o.cond for o, _ in open_])))
         r = s.check()
         m = s.model() if r == z3.sat else None
         s.pop()
@@ -131,6 +132,28 @@ def first_on_trace(sys: System, m: z3.ModelRef, k: int, parts: Parts, last_step:
     return None
 
 
+def undefined_at(sys: System, s: z3.Solver, parts: Parts, k: int) -> Undefined | None:
+    """On the unrolling of the solver's context (Init and k steps of Next): an evaluation
+    at step k that TLA+ leaves undefined -- Init's (k = 0), the predicates' in state k, or
+    Next's out of state k (a step asked for, not added: a step the translation cannot
+    represent, e.g. a value outside TypeOK's domain, would be excluded by it)."""
+    here: list[z3.BoolRef] = []  # one substitution per part, not per obligation (the press has ~10^5)
+    predicates = [o.cond for obls in parts.predicates.values() for o in obls]
+    if predicates:
+        here.append(sys.at(conjunction(predicates), k))
+    if parts.trans:
+        here.append(sys.trans_at(k, conjunction([o.cond for o in parts.trans])))
+    if k == 0 and parts.init:
+        here.append(sys.init_at(0, conjunction([o.cond for o in parts.init])))
+    if not here:
+        return None
+    s.push()
+    s.add(z3.Not(z3.And(here)))
+    found = first_on_trace(sys, s.model(), k, parts, last_step=True) if s.check() == z3.sat else None
+    s.pop()
+    return found
+
+
 def reach(sys: System, parts: Parts, depth: int, timeout_s: float) -> Undefined | None:
     """A trace from Init on which some obligation fails, of at most `depth` steps (BMC)."""
     t0 = time.monotonic()
@@ -139,20 +162,30 @@ def reach(sys: System, parts: Parts, depth: int, timeout_s: float) -> Undefined 
     for k in range(depth + 1):
         if k > 0:
             s.add(sys.trans_at(k - 1))
-        here = [sys.at(o.cond, k) for obls in parts.predicates.values() for o in obls]
-        here += [sys.trans_at(k, o.cond) for o in parts.trans]
-        if k == 0:
-            here += [sys.init_at(0, o.cond) for o in parts.init]
-        if here:
-            s.push()
-            s.add(z3.Not(z3.And(here)))
-            if s.check() == z3.sat:
-                found = first_on_trace(sys, s.model(), k, parts, last_step=True)
-                s.pop()
-                if found is not None:
-                    return found
-            else:
-                s.pop()
+        found = undefined_at(sys, s, parts, k)
+        if found is not None:
+            return found
         if time.monotonic() - t0 > timeout_s:
             break
     return None
+
+
+def mark_undefined(sys: System, res: Result, u: Undefined, how: str) -> None:
+    """`res` meets the failing obligation `u` on a trace from Init.  A 'type' obligation
+    is a step out of the type invariant's domain (which the translation cannot
+    represent): a violation of the type invariant itself, and for any other property
+    the end of what the proof can follow."""
+    res.undefined, res.trace, res.params = u.describe(), u.trace, u.params
+    step = "" if not u.trace else f"on the step out of state {len(u.trace)} " if u.part == "Next" else \
+        f"in state {len(u.trace)} "  # numbered from 1, as the trace is printed
+    if u.obligation.kind != "type":
+        res.status = "ill-defined"
+        res.note = f"{how} an evaluation TLA+ leaves undefined {step}(TLC stops with an error there)"
+    elif res.invariant == sys.tr.type_invariant:
+        res.status = "violated"
+        res.note = (f"the next step leaves {res.invariant}'s domain ({u.describe()}); the state after it "
+                    f"is outside what the translation represents and is not shown")
+    else:
+        res.status = "unknown"
+        res.note = (f"{how} a step out of {sys.tr.type_invariant}'s domain {step}({u.describe()}); "
+                    f"{sys.tr.type_invariant} is violated there, and the proof cannot follow the spec further")

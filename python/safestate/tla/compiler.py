@@ -22,12 +22,12 @@ from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
-from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
+from .errors import EvalError, JavaOverrideError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym, let_instance_scope
 from .inline import can_inline, inline_call
 from .specialise import except_flat, dot_code, eq_code, lazy_read, member_const, membership_const, slot_read, var_read
 from .tlcget import RUNTIME
-from .stdlib import NATURALS, cap, cup, domain, setminus, subseteq, union
+from .stdlib import NATURALS, cap, cup, domain, non_integer_error, setminus, subseteq, union
 from .values import (BOOLEAN, STRING, FilteredSet, FnSetValue, FnValue, IntervalSet, LazySet, PowerSet,
                      ProductSet, RecSetValue, as_set, fmt, is_set, kind, make_fn, member,
                      sorted_elems, values_equal)
@@ -1165,6 +1165,8 @@ class Compiler:
         if isinstance(sym, BuiltinSym):
             fast = _FAST_INT.get(op) if sym.builtin is NATURALS.get(op) else None
             if fast is not None:
+                if op == "..":
+                    a, b = self._interval_bound(e.lhs, a, env), self._interval_bound(e.rhs, b, env)
                 return fast(a, b, loc)
             fn = sym.builtin.fn
             return _guard(lambda s, t, L: fn(a(s, t, L), b(s, t, L)), loc)
@@ -1220,6 +1222,21 @@ class Compiler:
         nxt = self.c_Prime(A.Prime(arg.loc, arg), env)
         return lambda s, t, L: now(s, t, L) == nxt(s, t, L)
 
+    def _interval_bound(self, e: A.Expr, code: Code, env: Env) -> Code:
+        """An operand of `..`.  TLC builds `SUBSET S` without checking S, so with a
+        non-set S the error is `..`'s (a Java exception in TLC, `JavaOverrideError`),
+        not SUBSET's."""
+        if not (isinstance(e, A.Unary) and e.op == "SUBSET"):
+            return code
+        arg, loc = self.expr(e.arg, env), e.loc
+
+        def bound(s: Any, t: Any, L: list) -> Value:
+            v = arg(s, t, L)
+            if type(v) is frozenset or isinstance(v, LazySet):
+                return PowerSet(v)
+            raise JavaOverrideError(f"Attempted to apply the operator .. to SUBSET of the non-set {fmt(v)}", loc)
+        return bound
+
     def _product(self, e: A.Apply, env: Env) -> Code:
         codes = [self.expr(x, env) for x in e.args]
         # Factors are checked when the product is used (values.ProductSet), as by TLC.
@@ -1233,8 +1250,17 @@ class Compiler:
             if fast is not None:
                 return fast
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(env.scope.lookup(".."), BuiltinSym):
-            lo, hi = self.expr(e.lhs, env), self.expr(e.rhs, env)
-            return lambda s, t, L, v: type(v) is int and lo(s, t, L) <= v <= hi(s, t, L)
+            lo = self._interval_bound(e.lhs, self.expr(e.lhs, env), env)
+            hi = self._interval_bound(e.rhs, self.expr(e.rhs, env), env)
+            loc = e.loc
+
+            def in_interval(s: Any, t: Any, L: list, v: Value) -> bool:
+                a, b = lo(s, t, L), hi(s, t, L)
+                if type(a) is not int or type(b) is not int:
+                    first = type(a) is not int
+                    raise non_integer_error("..", a if first else b, first).with_loc(loc)
+                return type(v) is int and a <= v <= b
+            return in_interval
         if isinstance(e, A.FnSet):
             dom = self.expr(e.domain, env)
             rng = self.membership(e.range, env)
@@ -1697,8 +1723,8 @@ _CORE_BINARY: dict[str, Callable[[Value, Value], Value]] = {
 def _int_op(op: str, f: Callable[[int, int], Value]) -> Callable[[Code, Code, Loc], Code]:
     def make(a: Code, b: Code, loc: Loc) -> Code:
         def slow(x: Value, y: Value) -> Value:
-            bad = x if type(x) is not int else y
-            raise EvalError(f"Attempted to apply the operator {op} to the non-integer {fmt(bad)}", loc)
+            first = type(x) is not int
+            raise non_integer_error(op, x if first else y, first).with_loc(loc)
         c = const_value(b)
         if type(c) is int:
             # `x + 1`, `n - 1`, `i <= N`: the right operand is a constant.

@@ -58,6 +58,14 @@ class ModuleEvalError(EvalError):
     invariant, like any evaluation error)."""
 
 
+class JavaOverrideError(EvalError):
+    """An error TLC meets as a Java exception inside an operator it implements in Java,
+    not as its own evaluation error: `..` applied to a non-integer (TLC: "Cannot cast
+    ... to IntValue").  TLC exits with 75 for it while computing successors, but with
+    255 when its liveness check meets the error again on the same state (see
+    `checker/explore.py`)."""
+
+
 class UnassignedPrimeError(EvalError):
     """x' read before the action has given it a value."""
 

@@ -14,7 +14,7 @@ import sys
 from dataclasses import dataclass
 from typing import Callable
 
-from .errors import AssertFailure, EvalError, ModuleEvalError, UnsupportedError
+from .errors import AssertFailure, EvalError, JavaOverrideError, ModuleEvalError, UnsupportedError
 from .tlcget import tlc_get, tlc_set
 from .values import (
     INT, NAT, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
@@ -33,9 +33,32 @@ class Builtin:
     refused: str | None = None
 
 
-def _int(v: Value, op: str) -> int:
+COMPARISONS = ("<", "<=", ">", ">=")
+
+
+def non_integer_error(op: str, v: Value, first: bool) -> EvalError:
+    """TLC's error for a non-integer operand of a Naturals operator.  Its Java methods
+    for the comparisons check their operands (an evaluation error of the module: exit
+    255 in successors, `ModuleEvalError`); those for + - * .. \\div % ^ take integers
+    only, so the call itself fails (a Java exception, `JavaOverrideError`)."""
+    if op in COMPARISONS:
+        return ModuleEvalError(f"The {'first' if first else 'second'} argument of {op} should be an integer, "
+                               f"but instead it is:\n{fmt(v)}")
+    return JavaOverrideError(f"Attempted to apply the operator {op} to the non-integer {fmt_lazy(v)}")
+
+
+def fmt_lazy(v: Value) -> str:
+    """`v` as TLC prints it, or, for a lazy set whose operands are not sets (`{2} \\X 0`,
+    which TLC builds without checking), what it is."""
+    try:
+        return fmt(v)
+    except EvalError:
+        return f"lazily built {type(v).__name__}"
+
+
+def _int(v: Value, op: str, first: bool = True) -> int:
     if type(v) is not int:
-        raise EvalError(f"Attempted to apply the operator {op} to the non-integer {fmt(v)}")
+        raise non_integer_error(op, v, first)
     return v
 
 
@@ -85,7 +108,7 @@ def mod(a: Value, b: Value) -> int:
 
 def _cmp(op: str, f: Callable[[int, int], bool]) -> Callable[[Value, Value], bool]:
     def compare(a: Value, b: Value) -> bool:
-        return f(_int(a, op), _int(b, op))
+        return f(_int(a, op), _int(b, op, False))
     return compare
 
 
@@ -452,7 +475,19 @@ def _infinite(v: Value) -> bool:
     return isinstance(v, LazySet) and not v.finite
 
 
+def _empty_enumerated(v: Value) -> bool:
+    """An empty set that TLC holds as a SetEnumValue or an IntervalValue (its
+    `Reducible` sets)."""
+    return (type(v) is frozenset and not v) or (type(v) is IntervalSet and v.size() == 0)
+
+
 def cup(a: Value, b: Value) -> Value:
+    # TLC returns the other operand itself for `{} \cup S` (and for `S \cup {}` when S is
+    # not a SetEnumValue/IntervalValue), so `{} \cup 0..2` stays `0..2` in a trace.
+    if is_set(b) and _empty_enumerated(a):
+        return b
+    if is_set(a) and _empty_enumerated(b) and type(a) not in (frozenset, IntervalSet):
+        return a
     if _infinite(a) or _infinite(b):
         _need_sets(a, b, "\\cup")
         return FilteredSet(lambda v: member(v, a) or member(v, b), f"{fmt(a)} \\cup {fmt(b)}")

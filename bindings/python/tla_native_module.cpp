@@ -1,0 +1,1020 @@
+// SPDX-License-Identifier: Apache-2.0
+// safestate._tla_native: the native core of `safestate check --engine native`
+// (docs/checker-performance.md, "Design of the compiled core").
+//
+// Values are interned (hash-consed) and named by 32-bit ids; small integers are tagged
+// inline.  A state is an array of ids in one arena that is also the breadth-first queue;
+// the seen-set is an open-addressing table of state indices over that arena (exact: the
+// id arrays are compared on a hash hit).  Init, Next, invariants and constraints arrive
+// from Python (python/safestate/checker/native/translate.py) as a tree of tuples
+// (op, loc, ints, value id, kids, continuation) built in the same order as the Python
+// action compiler's closures, so the successors come in TLC's order.  Any evaluation
+// error ends the search with the error's text and location: the Python engine then
+// re-checks the model for TLC's exact report (the Python evaluator is the reference).
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+enum Kind : uint8_t { K_BOOL, K_INT, K_STR, K_MV, K_SEQ, K_FUN, K_SET };
+
+constexpr uint32_t kIntTag = 0x80000000u;
+constexpr int64_t kIntBias = int64_t(1) << 30;
+constexpr uint32_t kFalse = 0, kTrue = 1;
+constexpr uint32_t kUnset = 0xFFFFFFFFu;
+
+struct EvalFailure {
+    std::string message;
+    int loc;
+};
+
+[[noreturn]] void fail(const std::string& msg, int loc) { throw EvalFailure{msg, loc}; }
+
+inline uint64_t mix(uint64_t h, uint64_t x) {
+    h ^= x + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h *= 0xff51afd7ed558ccdULL;
+    return h ^ (h >> 32);
+}
+
+struct Val {
+    Kind kind;
+    uint32_t off, len;
+    int64_t aux;  // rank of a string / model value in TLC's order
+    uint64_t hash;
+};
+
+// ------------------------------------------------------------------ the value store
+class Store {
+public:
+    std::vector<Val> vals;
+    std::vector<uint32_t> pool;
+    std::vector<std::string> names;  // string / model value text, by aux index
+
+    Store() {
+        vals.push_back({K_BOOL, 0, 0, 0, 11});
+        vals.push_back({K_BOOL, 0, 0, 1, 13});
+        table_.assign(1024, kUnset);
+    }
+
+    static bool is_int(uint32_t id) { return id & kIntTag; }
+    static int64_t int_of(uint32_t id) { return int64_t(id & ~kIntTag) - kIntBias; }
+    static uint32_t mk_int(int64_t v, int loc) {
+        if (v < -kIntBias || v >= kIntBias) fail("integer overflow in the native engine", loc);
+        return kIntTag | uint32_t(v + kIntBias);
+    }
+    Kind kind(uint32_t id) const { return is_int(id) ? K_INT : vals[id].kind; }
+    uint32_t len(uint32_t id) const { return vals[id].len; }
+    const uint32_t* items(uint32_t id) const { return pool.data() + vals[id].off; }
+
+    uint32_t mk_str(Kind k, const std::string& s, int64_t rank) {
+        auto key = std::make_pair(int(k), s);
+        auto it = strings_.find(key);
+        if (it != strings_.end()) return it->second;
+        uint32_t id = uint32_t(vals.size());
+        names.push_back(s);
+        vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s))});
+        strings_[key] = id;
+        return id;
+    }
+
+    // Interns a sequence, function (keys then values) or set whose items are canonical.
+    uint32_t intern(Kind k, const uint32_t* it, uint32_t n) {
+        uint64_t h = mix(k, n);
+        for (uint32_t i = 0; i < (k == K_FUN ? 2 * n : n); ++i) h = mix(h, it[i]);
+        uint32_t cnt = k == K_FUN ? 2 * n : n;
+        size_t mask = table_.size() - 1;
+        size_t pos = h & mask;
+        while (table_[pos] != kUnset) {
+            const Val& v = vals[table_[pos]];
+            if (v.hash == h && v.kind == k && v.len == n &&
+                std::equal(it, it + cnt, pool.begin() + v.off))
+                return table_[pos];
+            pos = (pos + 1) & mask;
+        }
+        uint32_t id = uint32_t(vals.size());
+        uint32_t off = uint32_t(pool.size());
+        pool.insert(pool.end(), it, it + cnt);
+        vals.push_back({k, off, n, 0, h});
+        table_[pos] = id;
+        if (++count_ * 2 > table_.size()) grow();
+        return id;
+    }
+
+    // TLC's order (values.tlc_key): booleans, integers, strings, model values,
+    // functions (length, keys, values; a sequence's keys sort first), sets.
+    static int cls(Kind k) { return k == K_SEQ ? K_FUN : k; }
+    int cmp(uint32_t a, uint32_t b) const {
+        if (a == b) return 0;
+        Kind ka = kind(a), kb = kind(b);
+        if (cls(ka) != cls(kb)) return cls(ka) < cls(kb) ? -1 : 1;
+        switch (ka) {
+            case K_BOOL: return a < b ? -1 : 1;
+            case K_INT: return int_of(a) < int_of(b) ? -1 : 1;
+            case K_STR:
+            case K_MV: return vals[a].aux < vals[b].aux ? -1 : (vals[a].aux > vals[b].aux ? 1 : 0);
+            case K_SET: return cmp_list(a, b);
+            default: break;
+        }
+        uint32_t na = len(a), nb = len(b);
+        if (na != nb) return na < nb ? -1 : 1;
+        if (ka != kb) return ka == K_SEQ ? -1 : 1;  // () < (keys...)
+        if (ka == K_SEQ) return cmp_items(items(a), items(b), na);
+        int c = cmp_items(items(a), items(b), na);
+        return c != 0 ? c : cmp_items(items(a) + na, items(b) + nb, na);
+    }
+    int cmp_list(uint32_t a, uint32_t b) const {
+        uint32_t na = len(a), nb = len(b);
+        if (na != nb) return na < nb ? -1 : 1;
+        return cmp_items(items(a), items(b), na);
+    }
+    int cmp_items(const uint32_t* x, const uint32_t* y, uint32_t n) const {
+        for (uint32_t i = 0; i < n; ++i) {
+            int c = cmp(x[i], y[i]);
+            if (c) return c;
+        }
+        return 0;
+    }
+
+    uint32_t mk_set(std::vector<uint32_t>& el) {
+        std::sort(el.begin(), el.end(), [this](uint32_t a, uint32_t b) { return cmp(a, b) < 0; });
+        el.erase(std::unique(el.begin(), el.end()), el.end());
+        return intern(K_SET, el.data(), uint32_t(el.size()));
+    }
+    uint32_t mk_seq(const std::vector<uint32_t>& el) { return intern(K_SEQ, el.data(), uint32_t(el.size())); }
+    // A function from (key, value) pairs; canonical: a sequence when the domain is 1..n.
+    uint32_t mk_fun(std::vector<std::pair<uint32_t, uint32_t>>& kv) {
+        std::sort(kv.begin(), kv.end(), [this](auto& a, auto& b) { return cmp(a.first, b.first) < 0; });
+        uint32_t n = uint32_t(kv.size());
+        bool seq = true;
+        for (uint32_t i = 0; i < n && seq; ++i) seq = is_int(kv[i].first) && int_of(kv[i].first) == int64_t(i) + 1;
+        std::vector<uint32_t> buf;
+        if (seq) {
+            for (auto& p : kv) buf.push_back(p.second);
+            return mk_seq(buf);
+        }
+        for (auto& p : kv) buf.push_back(p.first);
+        for (auto& p : kv) buf.push_back(p.second);
+        return intern(K_FUN, buf.data(), n);
+    }
+    bool set_has(uint32_t s, uint32_t x) const {
+        const uint32_t* it = items(s);
+        uint32_t lo = 0, hi = len(s);
+        while (lo < hi) {
+            uint32_t mid = (lo + hi) / 2;
+            int c = cmp(it[mid], x);
+            if (c == 0) return true;
+            if (c < 0) lo = mid + 1; else hi = mid;
+        }
+        return false;
+    }
+    size_t bytes() const { return vals.size() * sizeof(Val) + pool.size() * 4 + table_.size() * 4; }
+
+private:
+    std::vector<uint32_t> table_;
+    size_t count_ = 0;
+    std::map<std::pair<int, std::string>, uint32_t> strings_;
+
+    void grow() {
+        std::vector<uint32_t> old(table_.size() * 2, kUnset);
+        old.swap(table_);
+        size_t mask = table_.size() - 1;
+        for (uint32_t id : old) {
+            if (id == kUnset) continue;
+            size_t pos = vals[id].hash & mask;
+            while (table_[pos] != kUnset) pos = (pos + 1) & mask;
+            table_[pos] = id;
+        }
+    }
+};
+
+// ------------------------------------------------------------------ the program tree
+enum Op : int {
+    // expressions
+    CONST, VAR, PVAR, SLOT, LETREF, LET, NOT, NEG, AND, OR, IMPLIES, EQUIV, EQ, NEQ, LT, LE, GT, GE,
+    ADD, SUB, MUL, DIV, MOD, RANGE, IN, NOTIN, CUP, CAP, DIFF, SUBSETEQ, IF, CASE, FORALL, EXISTS,
+    SETENUM, SETFILTER, SETMAP, FNAPP, FNLIT, RECLIT, TUPLE, EXCEPT, AT, DOMAIN, LEN, HEAD, TAIL,
+    APPEND, CONCAT, SUBSEQ, CARD, IN_SD, BIND, RECSET,
+    // set descriptors (membership only)
+    SD_SET, SD_RANGE, SD_SEQ, SD_FN, SD_REC, SD_NAT, SD_INT, SD_STRING,
+    // actions
+    A_EMIT, A_FALSE, A_GUARD, A_OR, A_EXISTS, A_LET, A_ASSIGN, A_ASSIGN_IN, A_IF, A_CASE, A_IMPLIES,
+    A_ALLASSIGNED, A_BIND,
+    // more set descriptors
+    SD_CUP, SD_CAP, SD_DIFF,
+    CHOOSE,
+    OP_COUNT
+};
+
+struct Node {
+    int op = 0;
+    int loc = 0;
+    std::vector<int64_t> ints;
+    uint32_t v = 0;
+    std::vector<Node*> kids;
+    Node* k = nullptr;
+};
+
+struct Ctx {
+    const uint32_t* s = nullptr;
+    uint32_t* t = nullptr;
+    uint32_t* L = nullptr;
+};
+
+class Engine;
+using Emit = void (Engine::*)(Ctx&, int leaf);
+
+class Engine {
+public:
+    Store st;
+    int nvars = 0;
+    std::vector<uint32_t> slots;
+    std::vector<std::unique_ptr<Node>> nodes;
+    std::unordered_map<PyObject*, Node*> built;
+    std::vector<std::string> loc_text;
+
+    // ------------------------------------------------------------ building
+    Node* build(py::handle obj) {
+        if (obj.is_none()) return nullptr;
+        auto it = built.find(obj.ptr());
+        if (it != built.end()) return it->second;
+        py::tuple t = obj.cast<py::tuple>();
+        auto n = std::make_unique<Node>();
+        n->op = t[0].cast<int>();
+        n->loc = t[1].cast<int>();
+        for (auto x : t[2].cast<py::tuple>()) n->ints.push_back(x.cast<int64_t>());
+        n->v = t[3].cast<uint32_t>();
+        for (auto x : t[4].cast<py::tuple>()) n->kids.push_back(build(x));
+        n->k = build(t[5]);
+        Node* raw = n.get();
+        nodes.push_back(std::move(n));
+        keep_.push_back(py::reinterpret_borrow<py::object>(obj));
+        built[obj.ptr()] = raw;
+        fold(raw);
+        return raw;
+    }
+
+    // ------------------------------------------------------------ expressions
+    bool boolean(Node* n, Ctx& c, const char* what) {
+        uint32_t v = eval(n, c);
+        if (v == kTrue) return true;
+        if (v == kFalse) return false;
+        fail(std::string("The ") + what + " is not a boolean", n->loc);
+    }
+    int64_t integer(Node* n, Ctx& c) {
+        uint32_t v = eval(n, c);
+        if (!Store::is_int(v)) fail("an integer was expected", n->loc);
+        return Store::int_of(v);
+    }
+    uint32_t set(Node* n, Ctx& c) {
+        uint32_t v = eval(n, c);
+        if (st.kind(v) != K_SET) fail("a finite set was expected", n->loc);
+        return v;
+    }
+    bool equal(uint32_t a, uint32_t b, int loc) const {
+        if (a == b) return true;
+        Kind ka = st.kind(a), kb = st.kind(b);
+        if (Store::cls(ka) != Store::cls(kb) && ka != K_MV && kb != K_MV)
+            fail("Attempted to check equality of values of different kinds", loc);
+        return false;
+    }
+    uint32_t apply(uint32_t f, uint32_t x, int loc) const {
+        Kind k = st.kind(f);
+        if (k == K_SEQ) {
+            if (Store::is_int(x)) {
+                int64_t i = Store::int_of(x);
+                if (i >= 1 && i <= int64_t(st.len(f))) return st.items(f)[i - 1];
+            }
+            fail("Attempted to apply a sequence to an argument outside its domain", loc);
+        }
+        if (k != K_FUN) fail("Attempted to apply a non-function", loc);
+        const uint32_t* it = st.items(f);
+        uint32_t n = st.len(f), lo = 0, hi = n;
+        while (lo < hi) {
+            uint32_t mid = (lo + hi) / 2;
+            int c = st.cmp(it[mid], x);
+            if (c == 0) return it[n + mid];
+            if (c < 0) lo = mid + 1; else hi = mid;
+        }
+        fail("Attempted to apply a function to an argument outside its domain", loc);
+    }
+    uint32_t update(uint32_t f, uint32_t x, uint32_t val, int loc) {
+        Kind k = st.kind(f);
+        if (k == K_SEQ) {
+            if (Store::is_int(x)) {
+                int64_t i = Store::int_of(x);
+                uint32_t n = st.len(f);
+                if (i >= 1 && i <= int64_t(n)) {
+                    buf_.assign(st.items(f), st.items(f) + n);
+                    buf_[size_t(i - 1)] = val;
+                    return st.mk_seq(buf_);
+                }
+            }
+            fail("EXCEPT of an argument outside the sequence's domain", loc);
+        }
+        if (k != K_FUN) fail("EXCEPT of a non-function", loc);
+        uint32_t n = st.len(f);
+        const uint32_t* it = st.items(f);
+        for (uint32_t i = 0; i < n; ++i)
+            if (it[i] == x) {
+                buf_.assign(it, it + 2 * n);
+                buf_[n + i] = val;
+                return st.intern(K_FUN, buf_.data(), n);
+            }
+        fail("EXCEPT of an argument outside the function's domain", loc);
+    }
+    // The domain of a function as a set.
+    uint32_t domain(uint32_t f, int loc) {
+        std::vector<uint32_t> el;
+        if (st.kind(f) == K_SEQ) {
+            for (uint32_t i = 1; i <= st.len(f); ++i) el.push_back(Store::mk_int(i, loc));
+        } else if (st.kind(f) == K_FUN) {
+            el.assign(st.items(f), st.items(f) + st.len(f));
+        } else {
+            fail("DOMAIN of a non-function", loc);
+        }
+        return st.intern(K_SET, el.data(), uint32_t(el.size()));  // already in TLC order
+    }
+    uint32_t seq_of(uint32_t v, int loc, const char* what) {
+        if (st.kind(v) == K_SEQ) return v;
+        fail(std::string(what) + " of a value that is not a sequence", loc);
+    }
+    // EXCEPT along a path: kids[pos..pos+depth) are the keys, at the end @ = old value.
+    uint32_t except_path(Node* n, Ctx& c, uint32_t f, size_t pos, size_t depth, Node* val, int at_slot) {
+        uint32_t key = eval(n->kids[pos], c);
+        uint32_t old = apply(f, key, n->loc);
+        uint32_t nv;
+        if (depth == 1) {
+            uint32_t saved = slots[size_t(at_slot)];
+            slots[size_t(at_slot)] = old;
+            nv = eval(val, c);
+            slots[size_t(at_slot)] = saved;
+        } else {
+            nv = except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
+        }
+        return update(f, key, nv, n->loc);
+    }
+    bool member_sd(uint32_t x, Node* sd, Ctx& c) {
+        switch (sd->op) {
+            case SD_SET: return st.set_has(set(sd->kids[0], c), x);
+            case SD_RANGE: {
+                if (!Store::is_int(x)) return false;
+                int64_t v = Store::int_of(x);
+                return v >= integer(sd->kids[0], c) && v <= integer(sd->kids[1], c);
+            }
+            case SD_NAT: return Store::is_int(x) && Store::int_of(x) >= 0;
+            case SD_INT: return Store::is_int(x);
+            case SD_STRING: return st.kind(x) == K_STR;
+            case SD_CUP: return member_sd(x, sd->kids[0], c) || member_sd(x, sd->kids[1], c);
+            case SD_CAP: return member_sd(x, sd->kids[0], c) && member_sd(x, sd->kids[1], c);
+            case SD_DIFF: return member_sd(x, sd->kids[0], c) && !member_sd(x, sd->kids[1], c);
+            case SD_SEQ: {
+                if (st.kind(x) != K_SEQ) return false;
+                for (uint32_t i = 0; i < st.len(x); ++i)
+                    if (!member_sd(st.items(x)[i], sd->kids[0], c)) return false;
+                return true;
+            }
+            case SD_FN: {
+                uint32_t dom = set(sd->kids[0], c);
+                Kind k = st.kind(x);
+                if (k == K_SEQ) {
+                    if (st.len(dom) != st.len(x)) return false;
+                    for (uint32_t i = 0; i < st.len(x); ++i)
+                        if (!st.set_has(dom, Store::mk_int(i + 1, sd->loc))) return false;
+                    for (uint32_t i = 0; i < st.len(x); ++i)
+                        if (!member_sd(st.items(x)[i], sd->kids[1], c)) return false;
+                    return true;
+                }
+                if (k != K_FUN || st.len(x) != st.len(dom)) return false;
+                uint32_t n = st.len(x);
+                for (uint32_t i = 0; i < n; ++i)
+                    if (st.items(x)[i] != st.items(dom)[i]) return false;
+                for (uint32_t i = 0; i < n; ++i)
+                    if (!member_sd(st.items(x)[n + i], sd->kids[1], c)) return false;
+                return true;
+            }
+            case SD_REC: {
+                if (st.kind(x) != K_FUN || st.len(x) != sd->ints.size()) return false;
+                uint32_t n = st.len(x);
+                for (size_t i = 0; i < sd->ints.size(); ++i) {
+                    uint32_t key = uint32_t(sd->ints[i]);
+                    uint32_t j = 0;
+                    while (j < n && st.items(x)[j] != key) ++j;
+                    if (j == n || !member_sd(st.items(x)[n + j], sd->kids[i], c)) return false;
+                }
+                return true;
+            }
+            default: fail("bad set descriptor", sd->loc);
+        }
+    }
+
+    uint32_t eval(Node* n, Ctx& c) {
+        switch (n->op) {
+            case CONST: return n->v;
+            case VAR: return c.s[n->ints[0]];
+            case PVAR: {
+                uint32_t v = c.t ? c.t[n->ints[0]] : kUnset;
+                if (v == kUnset) fail("a primed variable is read before it is assigned", n->loc);
+                return v;
+            }
+            case SLOT: case AT: return slots[size_t(n->ints[0])];
+            case LETREF: {
+                uint32_t& sl = slots[size_t(n->ints[0])];
+                if (sl == kUnset) sl = eval(n->kids[0], c);
+                return sl;
+            }
+            case LET: {
+                for (int64_t s : n->ints) slots[size_t(s)] = kUnset;
+                return eval(n->kids[0], c);
+            }
+            case NOT: return boolean(n->kids[0], c, "operand of ~") ? kFalse : kTrue;
+            case NEG: return Store::mk_int(-integer(n->kids[0], c), n->loc);
+            case AND:
+                for (Node* k : n->kids)
+                    if (!boolean(k, c, "conjunct")) return kFalse;
+                return kTrue;
+            case OR:
+                for (Node* k : n->kids)
+                    if (boolean(k, c, "disjunct")) return kTrue;
+                return kFalse;
+            case IMPLIES:
+                return !boolean(n->kids[0], c, "antecedent of =>") || boolean(n->kids[1], c, "consequent of =>") ? kTrue : kFalse;
+            case EQUIV:
+                return boolean(n->kids[0], c, "operand of <=>") == boolean(n->kids[1], c, "operand of <=>") ? kTrue : kFalse;
+            case EQ: return equal(eval(n->kids[0], c), eval(n->kids[1], c), n->loc) ? kTrue : kFalse;
+            case NEQ: return equal(eval(n->kids[0], c), eval(n->kids[1], c), n->loc) ? kFalse : kTrue;
+            case LT: return integer(n->kids[0], c) < integer(n->kids[1], c) ? kTrue : kFalse;
+            case LE: return integer(n->kids[0], c) <= integer(n->kids[1], c) ? kTrue : kFalse;
+            case GT: return integer(n->kids[0], c) > integer(n->kids[1], c) ? kTrue : kFalse;
+            case GE: return integer(n->kids[0], c) >= integer(n->kids[1], c) ? kTrue : kFalse;
+            case ADD: return Store::mk_int(integer(n->kids[0], c) + integer(n->kids[1], c), n->loc);
+            case SUB: return Store::mk_int(integer(n->kids[0], c) - integer(n->kids[1], c), n->loc);
+            case MUL: return Store::mk_int(integer(n->kids[0], c) * integer(n->kids[1], c), n->loc);
+            case DIV: case MOD: {
+                int64_t a = integer(n->kids[0], c), b = integer(n->kids[1], c);
+                if (b <= 0 && n->op == MOD) fail("The second argument of % should be a positive number", n->loc);
+                if (b == 0) fail("Attempted to divide by zero", n->loc);
+                int64_t q = a / b, r = a % b;
+                if (r != 0 && ((r < 0) != (b < 0))) { q -= 1; r += b; }
+                return Store::mk_int(n->op == DIV ? q : r, n->loc);
+            }
+            case RANGE: {
+                int64_t lo = integer(n->kids[0], c), hi = integer(n->kids[1], c);
+                std::vector<uint32_t> el;
+                for (int64_t i = lo; i <= hi; ++i) el.push_back(Store::mk_int(i, n->loc));
+                return st.intern(K_SET, el.data(), uint32_t(el.size()));
+            }
+            case IN: case NOTIN: {
+                uint32_t x = eval(n->kids[0], c);
+                bool in = st.set_has(set(n->kids[1], c), x);
+                return in == (n->op == IN) ? kTrue : kFalse;
+            }
+            case IN_SD: {
+                uint32_t x = eval(n->kids[0], c);
+                return member_sd(x, n->kids[1], c) == (n->ints[0] == 0) ? kTrue : kFalse;
+            }
+            case CUP: case CAP: case DIFF: {
+                uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
+                std::vector<uint32_t> el;
+                if (n->op == CUP) {
+                    el.assign(st.items(a), st.items(a) + st.len(a));
+                    el.insert(el.end(), st.items(b), st.items(b) + st.len(b));
+                } else {
+                    for (uint32_t i = 0; i < st.len(a); ++i)
+                        if (st.set_has(b, st.items(a)[i]) == (n->op == CAP)) el.push_back(st.items(a)[i]);
+                }
+                return st.mk_set(el);
+            }
+            case SUBSETEQ: {
+                uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
+                for (uint32_t i = 0; i < st.len(a); ++i)
+                    if (!st.set_has(b, st.items(a)[i])) return kFalse;
+                return kTrue;
+            }
+            case IF: return eval(boolean(n->kids[0], c, "IF condition") ? n->kids[1] : n->kids[2], c);
+            case CASE: {
+                size_t arms = n->ints[0];
+                for (size_t i = 0; i < arms; ++i)
+                    if (boolean(n->kids[2 * i], c, "CASE guard")) return eval(n->kids[2 * i + 1], c);
+                if (n->kids.size() > 2 * arms) return eval(n->kids.back(), c);
+                fail("Attempted to evaluate a CASE with no arm whose guard is true", n->loc);
+            }
+            case FORALL: case EXISTS: {
+                uint32_t s = set(n->kids[0], c);
+                bool want = n->op == EXISTS;
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    slots[size_t(n->ints[0])] = st.items(s)[i];
+                    if (boolean(n->kids[1], c, "quantified expression") == want) return want ? kTrue : kFalse;
+                }
+                return want ? kFalse : kTrue;
+            }
+            case SETENUM: {
+                std::vector<uint32_t> el;
+                for (Node* k : n->kids) el.push_back(eval(k, c));
+                return st.mk_set(el);
+            }
+            case SETFILTER: {
+                uint32_t s = set(n->kids[0], c);
+                std::vector<uint32_t> el;
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    uint32_t x = st.items(s)[i];
+                    slots[size_t(n->ints[0])] = x;
+                    if (boolean(n->kids[1], c, "set filter predicate")) el.push_back(x);
+                }
+                return st.intern(K_SET, el.data(), uint32_t(el.size()));  // a subsequence: still sorted
+            }
+            case SETMAP: {
+                // ints: one slot per binder; kids: the binders' sets, then the expression.
+                size_t nb = n->ints.size();
+                std::vector<uint32_t> sets(nb), pos(nb, 0), el;
+                for (size_t b = 0; b < nb; ++b) {
+                    sets[b] = set(n->kids[b], c);
+                    if (st.len(sets[b]) == 0) return st.mk_set(el);
+                }
+                while (true) {
+                    for (size_t b = 0; b < nb; ++b) slots[size_t(n->ints[b])] = st.items(sets[b])[pos[b]];
+                    el.push_back(eval(n->kids[nb], c));
+                    size_t b = 0;
+                    while (b < nb && ++pos[b] == st.len(sets[b])) pos[b++] = 0;
+                    if (b == nb) return st.mk_set(el);
+                }
+            }
+            case FNAPP: return apply(eval(n->kids[0], c), eval(n->kids[1], c), n->loc);
+            case FNLIT: {
+                uint32_t s = set(n->kids[0], c);
+                std::vector<std::pair<uint32_t, uint32_t>> kv;
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    uint32_t x = st.items(s)[i];
+                    slots[size_t(n->ints[0])] = x;
+                    kv.emplace_back(x, eval(n->kids[1], c));
+                }
+                return st.mk_fun(kv);
+            }
+            case RECLIT: {
+                std::vector<std::pair<uint32_t, uint32_t>> kv;
+                for (size_t i = 0; i < n->kids.size(); ++i) kv.emplace_back(uint32_t(n->ints[i]), eval(n->kids[i], c));
+                return st.mk_fun(kv);
+            }
+            case TUPLE: {
+                std::vector<uint32_t> el;
+                for (Node* k : n->kids) el.push_back(eval(k, c));
+                return st.mk_seq(el);
+            }
+            case EXCEPT: {
+                // ints: the @ slot, then per update its path depth; kids: base, then per
+                // update its keys and its value.
+                uint32_t f = eval(n->kids[0], c);
+                size_t pos = 1;
+                for (size_t u = 1; u < n->ints.size(); ++u) {
+                    size_t depth = size_t(n->ints[u]);
+                    f = except_path(n, c, f, pos, depth, n->kids[pos + depth], int(n->ints[0]));
+                    pos += depth + 1;
+                }
+                return f;
+            }
+            case DOMAIN: return domain(eval(n->kids[0], c), n->loc);
+            case LEN: return Store::mk_int(st.len(seq_of(eval(n->kids[0], c), n->loc, "Len")), n->loc);
+            case HEAD: {
+                uint32_t s = seq_of(eval(n->kids[0], c), n->loc, "Head");
+                if (st.len(s) == 0) fail("Attempted to apply Head to the empty sequence", n->loc);
+                return st.items(s)[0];
+            }
+            case TAIL: {
+                uint32_t s = seq_of(eval(n->kids[0], c), n->loc, "Tail");
+                if (st.len(s) == 0) fail("Attempted to apply Tail to the empty sequence", n->loc);
+                return st.intern(K_SEQ, st.items(s) + 1, st.len(s) - 1);
+            }
+            case APPEND: {
+                uint32_t s = seq_of(eval(n->kids[0], c), n->loc, "Append");
+                uint32_t x = eval(n->kids[1], c);
+                buf_.assign(st.items(s), st.items(s) + st.len(s));
+                buf_.push_back(x);
+                return st.mk_seq(buf_);
+            }
+            case CONCAT: {
+                uint32_t a = seq_of(eval(n->kids[0], c), n->loc, "\\o");
+                uint32_t b = seq_of(eval(n->kids[1], c), n->loc, "\\o");
+                buf_.assign(st.items(a), st.items(a) + st.len(a));
+                buf_.insert(buf_.end(), st.items(b), st.items(b) + st.len(b));
+                return st.mk_seq(buf_);
+            }
+            case SUBSEQ: {
+                uint32_t s = seq_of(eval(n->kids[0], c), n->loc, "SubSeq");
+                int64_t m = integer(n->kids[1], c), k = integer(n->kids[2], c);
+                if (m > k) return st.intern(K_SEQ, nullptr, 0);
+                if (m < 1 || k > int64_t(st.len(s))) fail("SubSeq indices outside the sequence", n->loc);
+                return st.intern(K_SEQ, st.items(s) + (m - 1), uint32_t(k - m + 1));
+            }
+            case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
+            case BIND: bind(n, c); return eval(n->kids.back(), c);
+            case CHOOSE: {  // the first element in TLC's order that satisfies the predicate
+                uint32_t s = set(n->kids[0], c);
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    slots[size_t(n->ints[0])] = st.items(s)[i];
+                    if (boolean(n->kids[1], c, "CHOOSE predicate")) return st.items(s)[i];
+                }
+                fail("Attempted to compute the value of an expression of form CHOOSE x \\in S: P, but no element of S satisfied P", n->loc);
+            }
+            case RECSET: {
+                // [a : S, b : T] as a finite set of records (ints: the field names).
+                size_t nf = n->ints.size();
+                std::vector<uint32_t> sets(nf), pos(nf, 0), el;
+                for (size_t f = 0; f < nf; ++f) {
+                    sets[f] = set(n->kids[f], c);
+                    if (st.len(sets[f]) == 0) return st.mk_set(el);
+                }
+                std::vector<std::pair<uint32_t, uint32_t>> kv(nf);
+                while (true) {
+                    for (size_t f = 0; f < nf; ++f) kv[f] = {uint32_t(n->ints[f]), st.items(sets[f])[pos[f]]};
+                    auto rec = kv;
+                    el.push_back(st.mk_fun(rec));
+                    size_t f = 0;
+                    while (f < nf && ++pos[f] == st.len(sets[f])) pos[f++] = 0;
+                    if (f == nf) return st.mk_set(el);
+                }
+            }
+            default: fail("not an expression", n->loc);
+        }
+    }
+
+    // ------------------------------------------------------------ actions
+    int emit_kind = 0;  // 0: init, 1: next
+    void exec(Node* n, Ctx& c) {
+        switch (n->op) {
+            case A_EMIT: on_emit(c, int(n->ints[0])); return;
+            case A_FALSE: return;
+            case A_GUARD:
+                if (boolean(n->kids[0], c, "action conjunct")) exec(n->k, c);
+                return;
+            case A_OR:
+                for (Node* b : n->kids) exec(b, c);
+                return;
+            case A_EXISTS: {
+                // ints: one slot per binder; kids: the binders' sets, then the body.
+                // TLC's ContextEnumerator: every set first, the FIRST binder turns fastest.
+                size_t nb = n->ints.size();
+                if (nb == 1) {
+                    uint32_t s = set(n->kids[0], c);
+                    for (uint32_t i = 0; i < st.len(s); ++i) {
+                        slots[size_t(n->ints[0])] = st.items(s)[i];
+                        exec(n->kids[1], c);
+                    }
+                    return;
+                }
+                std::vector<uint32_t> sets(nb), pos(nb, 0);
+                for (size_t b = 0; b < nb; ++b) {
+                    sets[b] = set(n->kids[b], c);
+                    if (st.len(sets[b]) == 0) return;
+                }
+                while (true) {
+                    for (size_t b = 0; b < nb; ++b) slots[size_t(n->ints[b])] = st.items(sets[b])[pos[b]];
+                    exec(n->kids[nb], c);
+                    size_t b = 0;
+                    while (b < nb && ++pos[b] == st.len(sets[b])) pos[b++] = 0;
+                    if (b == nb) return;
+                }
+            }
+            case A_LET:
+                for (int64_t s : n->ints) slots[size_t(s)] = kUnset;
+                exec(n->kids[0], c);
+                return;
+            case A_ASSIGN: {
+                uint32_t v = eval(n->kids[0], c);
+                uint32_t& cur = c.t[n->ints[0]];
+                if (cur == kUnset) {
+                    cur = v;
+                    exec(n->k, c);
+                    c.t[n->ints[0]] = kUnset;
+                } else if (equal(cur, v, n->loc)) {
+                    exec(n->k, c);
+                }
+                return;
+            }
+            case A_ASSIGN_IN: {
+                uint32_t i = uint32_t(n->ints[0]);
+                if (c.t[i] == kUnset) {
+                    uint32_t s = set(n->kids[0], c);
+                    for (uint32_t j = 0; j < st.len(s); ++j) {
+                        c.t[i] = st.items(s)[j];
+                        exec(n->k, c);
+                    }
+                    c.t[i] = kUnset;
+                } else if (member_in(c.t[i], n->kids[1], c)) {
+                    exec(n->k, c);
+                }
+                return;
+            }
+            case A_IF:
+                exec(boolean(n->kids[0], c, "IF condition") ? n->kids[1] : n->kids[2], c);
+                return;
+            case A_CASE: {
+                size_t arms = size_t(n->ints[0]);
+                for (size_t i = 0; i < arms; ++i)
+                    if (boolean(n->kids[2 * i], c, "CASE guard")) { exec(n->kids[2 * i + 1], c); return; }
+                if (n->kids.size() > 2 * arms) { exec(n->kids.back(), c); return; }
+                fail("Attempted to evaluate a CASE with no arm whose guard is true", n->loc);
+            }
+            case A_IMPLIES:
+                if (boolean(n->kids[0], c, "antecedent of =>")) exec(n->kids[1], c);
+                else exec(n->k, c);
+                return;
+            case A_BIND: bind(n, c); exec(n->kids.back(), c); return;
+            case A_ALLASSIGNED:
+                for (int i = 0; i < nvars; ++i)
+                    if (c.t[i] == kUnset) { exec(n->kids[0], c); return; }
+                exec(n->kids[1], c);
+                return;
+            default: fail("not an action", n->loc);
+        }
+    }
+    // An operator's arguments, evaluated into its parameters' slots (ints) before the body.
+    void bind(Node* n, Ctx& c) {
+        for (size_t i = 0; i < n->ints.size(); ++i) {
+            uint32_t v = eval(n->kids[i], c);
+            slots[size_t(n->ints[i])] = v;
+        }
+    }
+    bool member_in(uint32_t x, Node* sd, Ctx& c) { return member_sd(x, sd, c); }
+
+    // ------------------------------------------------------------ folding constants
+    void fold(Node* n) {
+        if (n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) return;
+        if (n->kids.empty() && n->op != SETENUM && n->op != TUPLE && n->op != RECLIT) return;
+        for (Node* k : n->kids)
+            if (k->op != CONST) return;
+        Ctx c;
+        try {
+            n->v = eval(n, c);
+        } catch (const EvalFailure&) {
+            return;  // evaluated (and reported) only if reached
+        }
+        n->op = CONST;
+        n->kids.clear();
+    }
+
+    // ------------------------------------------------------------ the search
+    std::vector<uint32_t> arena;  // nvars ids per state
+    std::vector<int32_t> parent, leaf;
+    std::vector<uint32_t> level_start;  // index of the first state of each level (1-based levels)
+    std::vector<uint32_t> seen;
+    size_t seen_count = 0;
+    uint64_t generated = 0;
+    size_t head = 0;
+    Node* init = nullptr;
+    Node* next = nullptr;
+    std::vector<Node*> invariants, constraints, action_constraints;
+    bool check_deadlock = true;
+    size_t max_memory_mb = 0;
+    py::object progress;
+
+    // Outcome.
+    std::string result = "success";
+    int violated = -1;
+    int64_t trace_to = -1;
+    std::vector<uint32_t> extra;
+    int extra_leaf = -1;
+    bool initial_violation = false;
+    std::string error;
+    int error_loc = 0;
+    int64_t error_state = -1;
+
+    struct Stop {};
+
+    size_t nstates() const { return nvars ? arena.size() / size_t(nvars) : parent.size(); }
+    int max_level() const { return int(level_start.size()); }
+
+    // With a VIEW the seen-set holds the view's value (one id per state), else the state.
+    Node* view = nullptr;
+    std::vector<uint32_t> view_keys;
+    uint32_t view_key = 0;  // of the state being looked up
+    const uint32_t* key_of(uint32_t idx) const {
+        return view ? &view_keys[idx] : arena.data() + size_t(idx) * size_t(nvars);
+    }
+    int key_len() const { return view ? 1 : nvars; }
+    uint64_t key_hash(const uint32_t* x) const {
+        uint64_t h = 0x12345;
+        for (int i = 0; i < key_len(); ++i) h = mix(h, x[i]);
+        return h;
+    }
+    // Index of the state, or -1 after adding it to the seen-set (then the caller stores it).
+    int64_t find_or_insert(const uint32_t* x) {
+        if ((seen_count + 1) * 2 > seen.size()) grow_seen();
+        size_t mask = seen.size() - 1;
+        size_t pos = key_hash(x) & mask;
+        while (seen[pos] != kUnset) {
+            const uint32_t* y = key_of(seen[pos]);
+            if (std::equal(x, x + key_len(), y)) return seen[pos];
+            pos = (pos + 1) & mask;
+        }
+        seen[pos] = uint32_t(nstates());
+        ++seen_count;
+        return -1;
+    }
+    void grow_seen() {
+        std::vector<uint32_t> old(std::max<size_t>(seen.size() * 2, 1024), kUnset);
+        old.swap(seen);
+        size_t mask = seen.size() - 1;
+        for (uint32_t id : old) {
+            if (id == kUnset) continue;
+            size_t pos = key_hash(key_of(id)) & mask;
+            while (seen[pos] != kUnset) pos = (pos + 1) & mask;
+            seen[pos] = id;
+        }
+    }
+    void add(const uint32_t* x, int32_t par, int32_t lf, int lvl) {
+        arena.insert(arena.end(), x, x + nvars);
+        if (view) view_keys.push_back(view_key);
+        parent.push_back(par);
+        leaf.push_back(lf);
+        if (lvl > max_level()) level_start.push_back(uint32_t(nstates() - 1));
+        if (nstates() % 20000 == 0) periodic();
+    }
+    size_t rss_mb() const {
+        std::ifstream f("/proc/self/statm");
+        size_t pages = 0, rss = 0;
+        f >> pages >> rss;
+        return rss * 4096 / (1024 * 1024);
+    }
+    std::chrono::steady_clock::time_point last_progress = std::chrono::steady_clock::now();
+    void periodic() {
+        if (max_memory_mb && rss_mb() > max_memory_mb) {
+            result = "memory";
+            throw Stop{};
+        }
+        auto now = std::chrono::steady_clock::now();
+        if (!progress.is_none() && now - last_progress >= std::chrono::seconds(5)) {
+            last_progress = now;
+            progress(max_level(), generated, nstates(), nstates() - head);
+        }
+    }
+    bool holds_all(const std::vector<Node*>& preds, Ctx& c, int* which) {
+        for (size_t i = 0; i < preds.size(); ++i)
+            if (!boolean(preds[i], c, "predicate")) {
+                if (which) *which = int(i);
+                return false;
+            }
+        return true;
+    }
+
+    int cur_level = 0;
+    uint64_t before = 0;
+    void on_emit(Ctx& c, int lf) {
+        ++generated;
+        for (int i = 0; i < nvars; ++i)
+            if (c.t[i] == kUnset) fail("successor state is not completely specified", 0);
+        Ctx sc{c.t, nullptr, nullptr};
+        bool in_model = holds_all(constraints, sc, nullptr);
+        if (in_model && !action_constraints.empty() && emit_kind == 1) {
+            Ctx ac{c.s, c.t, nullptr};
+            in_model = holds_all(action_constraints, ac, nullptr);
+        }
+        bool is_new = true;
+        int64_t idx = -1;
+        if (in_model) {
+            if (view) view_key = eval(view, sc);
+            int64_t found = find_or_insert(view ? &view_key : c.t);
+            if (found < 0) {
+                idx = int64_t(nstates());
+                add(c.t, emit_kind ? int32_t(head) : -1, emit_kind ? lf : -1, emit_kind ? cur_level + 1 : 1);
+            } else {
+                is_new = false;
+            }
+        }
+        if (!is_new) return;
+        int which = -1;
+        if (!holds_all(invariants, sc, &which)) {
+            result = "safety failure";
+            violated = which;
+            initial_violation = emit_kind == 0;
+            if (idx >= 0) {
+                trace_to = idx;
+            } else {
+                trace_to = emit_kind ? int64_t(head) : -1;
+                extra.assign(c.t, c.t + nvars);
+                extra_leaf = lf;
+            }
+            throw Stop{};
+        }
+    }
+
+    void run() {
+        std::vector<uint32_t> t(size_t(nvars), kUnset);
+        try {
+            try {
+                emit_kind = 0;
+                Ctx c{nullptr, t.data(), nullptr};
+                exec(init, c);
+                if (!progress.is_none()) progress(-1, generated, nstates(), 0);  // initial states done
+                emit_kind = 1;
+                while (head < nstates()) {
+                    while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
+                    std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
+                    Ctx nc{cur.data(), t.data(), nullptr};
+                    before = generated;
+                    exec(next, nc);
+                    if (generated == before && check_deadlock) {
+                        result = "deadlock failure";
+                        trace_to = int64_t(head);
+                        throw Stop{};
+                    }
+                    ++head;
+                }
+            } catch (const EvalFailure& e) {
+                result = "error";
+                error = e.message;
+                error_loc = e.loc;
+                error_state = emit_kind ? int64_t(head) : -1;
+            }
+        } catch (const Stop&) {
+        }
+    }
+
+    py::object state(size_t i) const {
+        std::vector<uint32_t> out(arena.begin() + i * size_t(nvars), arena.begin() + (i + 1) * size_t(nvars));
+        return py::cast(out);
+    }
+    py::tuple describe(uint32_t id) const {
+        Kind k = st.kind(id);
+        if (k == K_BOOL) return py::make_tuple(int(k), id == kTrue);
+        if (k == K_INT) return py::make_tuple(int(k), Store::int_of(id));
+        if (k == K_STR || k == K_MV) return py::make_tuple(int(k), st.names[st.vals[id].off]);
+        std::vector<uint32_t> items(st.items(id), st.items(id) + (k == K_FUN ? 2 : 1) * st.len(id));
+        return py::make_tuple(int(k), items);
+    }
+
+private:
+    std::vector<uint32_t> buf_;
+    std::vector<py::object> keep_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_tla_native, m) {
+    m.doc() = "The native core of safestate check --engine native.";
+    // The Python translator numbers the ops in the same order (checker/native/ops.py checks these).
+    m.attr("OP_COUNT") = int(OP_COUNT);
+    m.attr("OP_IN_SD") = int(IN_SD);
+    m.attr("OP_SD_STRING") = int(SD_STRING);
+    m.attr("OP_A_BIND") = int(A_BIND);
+    py::class_<Engine>(m, "Engine")
+        .def(py::init<>())
+        .def_readwrite("nvars", &Engine::nvars)
+        .def("mk_int", [](Engine&, int64_t v) { return Store::mk_int(v, 0); })
+        .def("mk_bool", [](Engine&, bool b) { return b ? kTrue : kFalse; })
+        .def("mk_str", [](Engine& e, const std::string& s, int64_t rank) { return e.st.mk_str(K_STR, s, rank); })
+        .def("mk_model_value", [](Engine& e, const std::string& s, int64_t rank) { return e.st.mk_str(K_MV, s, rank); })
+        .def("mk_seq", [](Engine& e, const std::vector<uint32_t>& el) { return e.st.mk_seq(el); })
+        .def("mk_set", [](Engine& e, std::vector<uint32_t> el) { return e.st.mk_set(el); })
+        .def("mk_fun", [](Engine& e, const std::vector<uint32_t>& keys, const std::vector<uint32_t>& vals) {
+            std::vector<std::pair<uint32_t, uint32_t>> kv;
+            for (size_t i = 0; i < keys.size(); ++i) kv.emplace_back(keys[i], vals[i]);
+            return e.st.mk_fun(kv);
+        })
+        .def("describe", &Engine::describe)
+        .def("set_slots", [](Engine& e, size_t n) { e.slots.assign(n, kUnset); })
+        .def("build", [](Engine& e, py::handle node) { return reinterpret_cast<uintptr_t>(e.build(node)); })
+        .def("configure", [](Engine& e, py::handle init, py::handle next, py::list inv, py::list cons,
+                             py::list acons, bool deadlock, size_t max_mb, py::object progress) {
+            e.init = e.build(init);
+            e.next = e.build(next);
+            for (auto x : inv) e.invariants.push_back(e.build(x));
+            for (auto x : cons) e.constraints.push_back(e.build(x));
+            for (auto x : acons) e.action_constraints.push_back(e.build(x));
+            e.check_deadlock = deadlock;
+            e.max_memory_mb = max_mb;
+            e.progress = progress;
+        })
+        .def("set_view", [](Engine& e, py::handle v) { e.view = e.build(v); })
+        .def("run", &Engine::run)
+        .def("state", &Engine::state)
+        .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
+        .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })
+        .def_property_readonly("distinct", &Engine::nstates)
+        .def_readonly("generated", &Engine::generated)
+        .def_property_readonly("depth", &Engine::max_level)
+        .def_readonly("head", &Engine::head)
+        .def_readonly("result", &Engine::result)
+        .def_readonly("violated", &Engine::violated)
+        .def_readonly("trace_to", &Engine::trace_to)
+        .def_readonly("extra", &Engine::extra)
+        .def_readonly("extra_leaf", &Engine::extra_leaf)
+        .def_readonly("initial_violation", &Engine::initial_violation)
+        .def_readonly("error", &Engine::error)
+        .def_readonly("error_loc", &Engine::error_loc)
+        .def_property_readonly("bytes", [](Engine& e) {
+            return e.st.bytes() + e.arena.capacity() * 4 + e.parent.capacity() * 4 + e.leaf.capacity() * 4 +
+                   e.seen.capacity() * 4 + e.view_keys.capacity() * 4;
+        });
+}

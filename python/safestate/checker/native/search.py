@@ -1,0 +1,154 @@
+"""``safestate check --engine native``: the breadth-first search in the C++ core.
+
+`native_unsupported(model, ...)` says why a model cannot use the native engine (a
+construct outside its subset, with file:line:col); `explore_native(model, ...)` runs
+the search and returns the Python engine's `CheckResult`, with the same counts, depth
+and trace (the trace's states are converted back to Python values and the actions'
+parameters found by replaying the step with the Python evaluator, as the Python
+engine does).  An evaluation error inside the core returns None: the caller checks
+the model again with the Python engine, which reports TLC's exact error.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Callable
+
+from ...tla import ast as A
+from ...tla.errors import TlaError, UnsupportedError
+from ...tla.tlcget import RUNTIME
+from ..explore import CheckResult, Step, default_memory_limit_mb, step_params
+from ..model import Model
+from .ops import Op
+from .translate import TEnv, Translator, unsupported
+from .values import NOT_NATIVE, ValueBridge
+
+
+class NativeRun:
+    """A model translated for the C++ core, ready to search."""
+
+    def __init__(self, model: Model) -> None:
+        from ... import _tla_native
+        self.m = model
+        self.engine = _tla_native.Engine()
+        self.engine.nvars = len(model.variables)
+        self.bridge = ValueBridge(self.engine)
+        _refuse_model(model)
+        tr = Translator(model, self.bridge)
+        scope = model.scope
+        init = next_ = None
+        if model.init_expr is not None and model.next_expr is not None:
+            init = tr.action(model.init_expr, TEnv(scope, {}, init=True), tr.node(Op.A_EMIT, model.init_expr.loc, (-1,)))
+            next_ = tr.split(model.next_expr, TEnv(scope, {}))
+            if tr.leaves != len(model.leaves):
+                raise UnsupportedError(f"the next-state relation splits into {tr.leaves} actions here and "
+                                       f"{len(model.leaves)} in the Python engine: {NOT_NATIVE}",
+                                       model.next_expr.loc)
+        cfg = model.config
+        self.invariants = [tr.expr(A.Name(e.loc, e.name), TEnv(scope, {})) for e in cfg.invariants]
+        self.constraints = [tr.expr(A.Name(e.loc, e.name), TEnv(scope, {})) for e in cfg.constraints]
+        self.action_constraints = [tr.expr(A.Name(e.loc, e.name), TEnv(scope, {})) for e in cfg.action_constraints]
+        self.view = tr.expr(A.Name(cfg.view.loc, cfg.view.name), TEnv(scope, {})) if cfg.view else None
+        self.init, self.next = init, next_
+        self.nslots = tr.nslots
+
+
+def _refuse_model(model: Model) -> None:
+    """Features of a model (not of an expression) the core does not have."""
+    cfg = model.config
+    loc = model.module_loc()
+    if cfg.properties:
+        raise unsupported(f"PROPERTY {cfg.properties[0].name} (temporal properties)", cfg.properties[0].loc)
+    for what, entry in (("SYMMETRY", cfg.symmetry), ("POSTCONDITION", cfg.postcondition)):
+        if entry is not None:
+            raise unsupported(what, entry.loc)
+    if RUNTIME.used:
+        raise unsupported("TLCGet/TLCSet", loc)
+    if model.init_expr is None or model.next_expr is None:
+        raise unsupported("a model without Init and Next", loc)
+
+
+def native_unsupported(model: Model) -> UnsupportedError | None:
+    """Why the native engine cannot check `model` (None if it can)."""
+    try:
+        NativeRun(model)
+    except UnsupportedError as e:
+        return e
+    return None
+
+
+def explore_native(model: Model, max_memory_mb: int | None = None,
+                   progress: Callable[[str], None] | None = None,
+                   run: NativeRun | None = None) -> tuple[CheckResult | None, str]:
+    """Search with the C++ core (`run`: the model already translated).  Returns
+    (result, "") or (None, why) after an evaluation error, which the Python engine
+    then reports exactly."""
+    start = time.monotonic()
+    run = run or NativeRun(model)
+    eng = run.engine
+    eng.set_slots(run.nslots)
+    limit = max_memory_mb or default_memory_limit_mb()
+
+    def report(level: int, generated: int, distinct: int, left: int) -> None:
+        if progress is not None and level < 0:
+            progress(f"Finished computing initial states: {distinct} distinct state{'' if distinct == 1 else 's'} "
+                     f"generated.")
+        elif progress is not None:
+            progress(f"Progress({level}): {generated} states generated, {distinct} distinct states found, "
+                     f"{left} states left on queue.")
+    if progress is not None:
+        progress("Computing initial states...")
+    if run.view is not None:
+        eng.set_view(run.view)
+    eng.configure(run.init, run.next, run.invariants, run.constraints, run.action_constraints,
+                  model.check_deadlock, limit, report)
+    eng.run()
+    result = _result(run, limit)
+    if result is not None:
+        result.seconds = time.monotonic() - start
+    return result, eng.error
+
+
+def _result(run: NativeRun, limit_mb: int) -> CheckResult | None:
+    eng, m = run.engine, run.m
+    n, gen, head = eng.distinct, eng.generated, eng.head
+    depth = eng.depth if gen else 0
+    if eng.result == "error":
+        return None
+    if eng.result == "success":
+        return CheckResult("success", n, gen, depth, 0)
+    if eng.result == "memory":
+        err = TlaError("memory", f"memory limit of {limit_mb} MB exceeded after {n} distinct states; "
+                       f"raise it with --max-memory or add a state constraint")
+        return CheckResult("error", n, gen, eng.depth, n - head, error=err)
+    if eng.result == "deadlock failure":
+        return CheckResult("deadlock failure", n, gen, depth, n - head - 1, None, _trace(run, eng.trace_to))
+    name = m.config.invariants[eng.violated].name
+    if eng.initial_violation:
+        if eng.trace_to >= 0:
+            return CheckResult("safety failure", n, gen, depth, n, name, _trace(run, eng.trace_to),
+                               initial_violation=True)
+        return CheckResult("safety failure", n, gen, 1, n, name, [Step(run.bridge.state(eng.extra), "Init", {})],
+                           initial_violation=True)
+    if not eng.extra:
+        return CheckResult("safety failure", n, gen, depth, n - head - 2, name, _trace(run, eng.trace_to))
+    trace = _trace(run, eng.trace_to)
+    st = run.bridge.state(eng.extra)
+    leaf = eng.extra_leaf
+    trace.append(Step(st, m.leaves[leaf].name, step_params(m, trace[-1].state, leaf, st)))
+    return CheckResult("safety failure", n, gen, depth, n - head - 1, name, trace)
+
+
+def _trace(run: NativeRun, idx: int) -> list[Step]:
+    eng, m = run.engine, run.m
+    path = []
+    while idx >= 0:
+        path.append(idx)
+        idx = eng.parent(idx)
+    path.reverse()
+    states = [run.bridge.state(eng.state(i)) for i in path]
+    steps = [Step(states[0], "Init", {})]
+    for a, b, i in zip(states, states[1:], path[1:]):
+        leaf = eng.leaf(i)
+        steps.append(Step(b, m.leaves[leaf].name, step_params(m, a, leaf, b)))
+    return steps

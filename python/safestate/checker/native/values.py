@@ -1,0 +1,64 @@
+"""Python TLA+ values (`tla/values.py`) to the native core's interned ids and back."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ...tla.errors import Loc, UnsupportedError
+from ...tla.values import FnValue, IntervalSet, LazySet, ModelValue, Value, make_fn, string_rank
+
+NOT_NATIVE = "not supported by the native engine"
+
+# Kinds as the C++ core numbers them (enum Kind).
+_BOOL, _INT, _STR, _MV, _SEQ, _FUN, _SET = range(7)
+
+
+class ValueBridge:
+    def __init__(self, engine: Any) -> None:
+        self.engine = engine
+        self._back: dict[int, Value] = {}
+
+    def to_native(self, v: Value, loc: Loc) -> int:
+        e = self.engine
+        t = type(v)
+        if t is bool:
+            return e.mk_bool(v)
+        if t is int:
+            if not -(1 << 30) <= v < (1 << 30):
+                raise UnsupportedError(f"the integer {v} is {NOT_NATIVE} (31-bit integers only)", loc)
+            return e.mk_int(v)
+        if t is str:
+            return e.mk_str(v, string_rank(v))
+        if t is ModelValue:
+            return e.mk_model_value(v.name, string_rank(v.name))
+        if t is tuple:
+            return e.mk_seq([self.to_native(x, loc) for x in v])
+        if t is FnValue:
+            keys = list(v.d)
+            return e.mk_fun([self.to_native(k, loc) for k in keys], [self.to_native(v.d[k], loc) for k in keys])
+        if t is frozenset or isinstance(v, IntervalSet):
+            elems = v if t is frozenset else range(v.lo, v.hi + 1)
+            return e.mk_set([self.to_native(x, loc) for x in elems])
+        what = v.describe() if isinstance(v, LazySet) else t.__name__
+        raise UnsupportedError(f"the value {what} is {NOT_NATIVE}", loc)
+
+    def to_python(self, vid: int) -> Value:
+        v = self._back.get(vid)
+        if v is None:
+            kind, payload = self.engine.describe(vid)
+            if kind in (_BOOL, _INT, _STR):
+                v = payload
+            elif kind == _MV:
+                v = ModelValue(payload)
+            elif kind == _SEQ:
+                v = tuple(self.to_python(x) for x in payload)
+            elif kind == _FUN:
+                n = len(payload) // 2
+                v = make_fn({self.to_python(payload[i]): self.to_python(payload[n + i]) for i in range(n)})
+            else:
+                v = frozenset(self.to_python(x) for x in payload)
+            self._back[vid] = v
+        return v
+
+    def state(self, ids: list[int]) -> tuple:
+        return tuple(self.to_python(x) for x in ids)
