@@ -47,12 +47,15 @@ def test_tableau_property_verdict_counts_exit_code_and_lasso_match_tlc(name: str
     for f in FIELDS:
         assert getattr(r, f) == want[f], f"{f}: ours {getattr(r, f)!r}, TLC {want[f]!r}"
     assert exit_codes.BY_RESULT[r.result] == want["exit_code"]
+    if "left_on_queue" in want:  # where TLC stopped its search
+        assert r.left_on_queue == want["left_on_queue"]
     if "lasso" in want:
         assert r.violated_properties == want["violated_properties"]
         states, _, _ = fair_lasso(model, r)
         assert r.trace is not None and len(r.trace) <= want["lasso"]["length"]
         assert r.loop is not None
-        assert all(violated_on(ob, states, r.loop, r.loop_step is None) for ob in model.liveness)
+        for ob in model.liveness:  # TLC names exactly the properties its lasso violates
+            assert violated_on(ob, states, r.loop, r.loop_step is None) == (ob.name in r.violated_properties)
     if want["result"] == "temporal safety failure":
         # TLC's finite counterexample: a behaviour every continuation of which violates
         # the property (checked on the one that stutters at its end).
@@ -69,6 +72,8 @@ def test_tableau_corpus_covers_the_required_cases() -> None:
     assert len(EXPECTED) >= 15
     assert results.count("liveness failure") >= 5 and results.count("success") >= 5
     assert "temporal safety failure" in results and "error" in results
+    # an early stop before, and at the same expanded state as, an invariant violation
+    assert {"StopBeforeInvariant", "StopWithInvariant"} <= set(EXPECTED)
     assert any(w.get("lasso", {}).get("stuttering") for w in EXPECTED.values())
     assert any(w.get("lasso", {}).get("stuttering") is False for w in EXPECTED.values())
     specs = {n: (TABLEAU / f"{n}.tla").read_text() for n in EXPECTED}
@@ -223,6 +228,8 @@ def test_tableau_expected_results_are_tlcs(name: str) -> None:
         return
     for f in FIELDS:
         assert getattr(tlc, f) == want[f], f
+    if "left_on_queue" in want:
+        assert tlc.left_on_queue == want["left_on_queue"]
     assert (tlc.lasso is None) == ("lasso" not in want)
     assert tlc.violated_properties == want.get("violated_properties")
 

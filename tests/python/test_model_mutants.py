@@ -4,7 +4,8 @@ registry: `systems/<Name>/system.toml` names the system's model and its mutant f
 Each mutant is generated as patches into a temporary folder (the test fails when a patch
 no longer applies: the mutant went stale) and checked by `safestate check --json` alone
 (the CLI's entry point, run in the test's process: no interpreter start and imports per
-mutant), with only its target invariant listed: it must be violated with TLC's trace length (and TLC's
+mutant; `--engine auto`, so the native core searches where it accepts the model), with
+only its target invariant listed: it must be violated with TLC's trace length (and TLC's
 distinct states where declared), or, for an environment weakening (expect = "holds"),
 the witness it targets must hold (be lost). Each `Witness_X` of the model (the negation
 of a property's antecedent) must be violated, i.e. the antecedent is reachable."""
@@ -33,7 +34,10 @@ def _check(tla: Path) -> dict:
     implies; the verdict itself is asserted by the caller)."""
     out, err = io.StringIO(), io.StringIO()
     with redirect_stdout(out), redirect_stderr(err):
-        safestate_main(["check", str(tla), "--json"])
+        # --engine auto: the native core where it accepts the model (the flagship, PLCopen,
+        # Protection, RuntimeSupervisor; identical results to the Python engine, see
+        # test_checker_native_engine.py), the Python engine elsewhere.
+        safestate_main(["check", str(tla), "--json", "--engine", "auto"])
     assert "internal error" not in out.getvalue() + err.getvalue(), out.getvalue() + err.getvalue()
     return json.loads(out.getvalue())
 

@@ -460,6 +460,9 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         call_with_deep_stack(lambda: check_liveness(model, explorer, result))
         if result.result == "error":
             _at_tlc_liveness_error(model, explorer, result)
+    elif model.liveness:
+        from .liveness_run import stop_before_safety_failure
+        call_with_deep_stack(lambda: stop_before_safety_failure(model, explorer, result))
     if result.result == "success" and model.postcondition is not None:
         _check_postcondition(model, result)
     result.seconds = time.monotonic() - start

@@ -46,6 +46,7 @@ from dataclasses import dataclass
 from typing import Callable, Iterable
 
 from ..tla.errors import TlaError
+from . import ltl
 from .scc import strongly_connected
 from .temporal import Fairness, Obligation
 
@@ -391,13 +392,12 @@ TABLEAU_KINDS = ("eventually", "leadsto", "stays", "init_always", "init_eventual
 def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], fairness: list[Fairness],
                    obligations: list[Obligation],
                    check_memory: Callable[[], None]) -> tuple[Obligation, Lasso] | None:
-    """A liveness obligation with a fair counterexample, chosen as TLC does: the
-    properties checked with a tableau first, then the others; in each group the
+    """A liveness obligation with a fair counterexample, chosen as TLC does: its
+    groups (`tlc_check_order`) in order, the first with a violation; in it the
     shortest counterexample (the first in .cfg order among equals)."""
     from .tableau_search import tableau_counterexample  # it builds on LivenessChecker
     checker = LivenessChecker(graph, states, initial, fairness, check_memory)
-    for group in ([o for o in obligations if o.kind in TABLEAU_KINDS],
-                  [o for o in obligations if o.kind not in TABLEAU_KINDS]):
+    for group in tlc_check_order(obligations):
         best: tuple[Obligation, Lasso] | None = None
         for ob in group:
             check_memory()
@@ -408,6 +408,48 @@ def find_violation(graph: StateGraph, states: list[tuple], initial: list[int], f
         if best is not None:
             return best
     return None
+
+
+def tlc_check_order(obligations: list[Obligation]) -> list[list[Obligation]]:
+    """TLC's `OrderOfSolution`s in the order it checks them (`Liveness.processLiveness`):
+    the negated properties' DNF disjuncts in .cfg order, except that a disjunct that is
+    just ``[]<>A`` goes last (`LNDisj.toDNF` merges those into one at the end), lumped
+    by their tableau formula; those without one (only ``<>[]A`` / ``[]<>A`` conjuncts)
+    share one group, at the place of the first.  A group's search finds the
+    counterexample nearest the initial states.  An obligation is placed by the first of
+    its disjuncts in that order."""
+    ordered: list[tuple[Obligation, bool]] = []  # (obligation, its disjunct needs a tableau)
+    last: list[tuple[Obligation, bool]] = []
+    for ob in obligations:
+        for needs_tableau, only_ae in _disjunct_kinds(ob):
+            (last if only_ae else ordered).append((ob, needs_tableau))
+    groups: list[list[Obligation]] = []
+    shared: list[Obligation] | None = None
+    placed: set[int] = set()
+    for ob, needs_tableau in ordered + last:
+        if id(ob) in placed:
+            continue
+        placed.add(id(ob))
+        if needs_tableau:
+            groups.append([ob])
+            continue
+        if shared is None:
+            shared = []
+            groups.append(shared)
+        shared.append(ob)
+    return groups
+
+
+def _disjunct_kinds(ob: Obligation) -> list[tuple[bool, bool]]:
+    """For each DNF disjunct of the obligation's negation: does it need a tableau, is
+    it just ``[]<>A``?"""
+    if ob.kind != "tableau":
+        # <>[]P is negated to []<>~P; the other forms without a tableau are not []<>A.
+        return [(ob.kind in TABLEAU_KINDS, ob.kind == "stable")]
+    assert ob.formula is not None
+    conjunctions = ltl.disjuncts(ltl.negate(ob.formula)) or [[ob.formula]]
+    return [(not all(ltl.without_tableau(c) for c in d),
+             len(d) == 1 and isinstance(d[0], ltl.Always) and ltl.without_tableau(d[0])) for d in conjunctions]
 
 
 def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) -> bool:

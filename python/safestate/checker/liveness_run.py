@@ -29,10 +29,7 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
         check_memory()
         graph = StateGraph(len(explorer.states), explorer.edge_src, explorer.edge_dst)
         check_memory()
-        stop = first_stop(model.liveness, bool(model.fairness), explorer.states, explorer.initial,
-                          lambda v: list(graph.succ(v)), len(explorer.generated_after))
-        if stop is not None:
-            _stop_at(model, explorer, result, stop)
+        if _stopped_early(model, explorer, result, graph):
             return
         found = find_violation(graph, explorer.states, explorer.initial, model.fairness, model.liveness,
                                check_memory)
@@ -50,6 +47,33 @@ def check_liveness(model: Model, explorer: Explorer, result: CheckResult) -> Non
     if not lasso.stuttering:
         result.loop_step = steps.pop()
     result.trace = steps
+
+
+def stop_before_safety_failure(model: Model, explorer: Explorer, result: CheckResult) -> None:
+    """TLC adds a state to its behaviour graph after generating its successors
+    (`Worker.run`: `doNextCheckLiveness` after `getNextStates`), so a finite temporal
+    counterexample completed while expanding an earlier state than the one where the
+    search met an invariant violation, deadlock or error ends the search first: the
+    result becomes that property's.  (Completed while expanding the same state, TLC
+    reports the safety failure first and then the property too; we report the former.)"""
+    if not model.liveness or model.fairness or not explorer.generated_after:
+        return
+    try:
+        _stopped_early(model, explorer, result,
+                       StateGraph(len(explorer.states), explorer.edge_src, explorer.edge_dst))
+    except TlaError as e:
+        result.result = "error"
+        result.error = e
+
+
+def _stopped_early(model: Model, explorer: Explorer, result: CheckResult, graph: StateGraph) -> bool:
+    """Replays TLC's early stop over the states expanded so far; on a stop, `result` is its."""
+    stop = first_stop(model.liveness, bool(model.fairness), explorer.states, explorer.initial,
+                      lambda v: list(graph.succ(v)), len(explorer.generated_after))
+    if stop is None:
+        return False
+    _stop_at(model, explorer, result, stop)
+    return True
 
 
 def _name_violated(model: Model, explorer: Explorer, result: CheckResult, ob: Obligation, lasso: Lasso) -> None:
@@ -75,6 +99,7 @@ def _stop_at(model: Model, explorer: Explorer, result: CheckResult, stop: Safety
             break
         distinct = max(distinct, dst + 1)
     result.result = "temporal safety failure"
+    result.error = None
     result.distinct_states = distinct
     result.states_generated = explorer.generated_after[k]
     result.depth = max(explorer.level[:distinct])

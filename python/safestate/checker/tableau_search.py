@@ -73,6 +73,10 @@ class BehaviourGraph:
                         self.dist[i] = 0
                         self.initial.append(i)
                         dq.append(i)
+        # The successor particles of t that state w satisfies: the same (w, t) recurs
+        # for every predecessor of w.
+        consistent: dict[int, list[int]] = {}
+        n_particles = len(tab.particles)
         done = bytearray()
         while dq:
             i = dq.popleft()
@@ -89,9 +93,11 @@ class BehaviourGraph:
                 if not self.step_satisfies(v, w, t):
                     continue
                 cost = 0 if w == v else 1
-                for t2 in tab.successors[t]:
-                    if not self.satisfies(w, t2):
-                        continue
+                key = w * n_particles + t
+                nexts = consistent.get(key)
+                if nexts is None:
+                    nexts = consistent[key] = [t2 for t2 in tab.successors[t] if self.satisfies(w, t2)]
+                for t2 in nexts:
                     j, _ = node(w, t2)
                     if j == i:
                         self.self_loop[i] = 1
@@ -144,6 +150,9 @@ class BehaviourChecker(LivenessChecker):
         super().__init__(bg, [bg.states[v] for v in bg.state_of], bg.initial, fairness, check_memory)  # type: ignore[arg-type]
         self.bg = bg
         self._state_enabled = [bytearray(len(bg.states)) for _ in fairness]
+        # Is a step an <<A>>_v step, per fairness conjunct and pair of states: the same step
+        # recurs in many nodes (one per particle) and in every sub-component tried.
+        self._state_taken: list[dict[int, bool]] = [{} for _ in fairness]
 
     def has_self_loop(self, v: int) -> bool:
         return bool(self.bg.self_loop[v])
@@ -153,6 +162,21 @@ class BehaviourChecker(LivenessChecker):
         if not c[s]:
             c[s] = 2 if self.fairness[fi].enabled(self.bg.states[s]) else 1
         return c[s] == 2
+
+    def taken_in(self, fi: int, comp: list[int], inside: set[int]) -> tuple[int, int] | None:
+        cache, taken = self._state_taken[fi], self.fairness[fi].taken
+        of, states, n = self.bg.state_of, self.bg.states, len(self.bg.states)
+        for u in comp:
+            su = of[u]
+            for w in self.tail_succ(u):
+                if w in inside:
+                    key = su * n + of[w]
+                    t = cache.get(key)
+                    if t is None:
+                        t = cache[key] = bool(taken(states[su], states[of[w]]))
+                    if t:
+                        return u, w
+        return None
 
     def counterexample_lasso(self) -> Lasso | None:
         """The shortest (in states) fair, fulfilling lasso of the behaviour graph, in states."""

@@ -27,6 +27,8 @@ class TlcSummary:
     # The states of a safety/deadlock/evaluation-error trace ("The behavior up to this
     # point is:"), each as its `/\ x = v` lines.
     trace: list[str] | None = None
+    # "N states left on queue": where TLC stopped its search.
+    left_on_queue: int | None = None
 
 
 def tlc_jar() -> str | None:
@@ -50,6 +52,7 @@ def run_tlc(jar: str, tla_path: str, cfg_path: str, timeout: float = 3600, worke
 
 def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
     stats = re.findall(r"^(\d+) states generated, (\d+) distinct states found", out, re.M)
+    queue = re.findall(r"distinct states found, (\d+) states left on queue", out)
     depth = re.findall(r"^The depth of the complete state graph search is (\d+)", out, re.M)
     viol = re.search(r"^Error: Invariant (\S+) is violated", out, re.M)
     # "Temporal properties were violated." names none: TLC's own check of its lasso found
@@ -74,7 +77,7 @@ def parse_tlc_output(out: str, exit_code: int) -> TlcSummary:
                       int(stats[-1][1]) if stats else None, int(stats[-1][0]) if stats else None,
                       int(depth[-1]) if depth else None, (viol.group(1) or None) if viol else None, exit_code,
                       _lasso(out) if temporal else None, _temporal_names(out) if temporal else None,
-                      None if temporal else _trace(out))
+                      None if temporal else _trace(out), int(queue[-1]) if queue else None)
 
 
 def _trace(out: str) -> list[str] | None:

@@ -135,8 +135,11 @@ def _run_mutants(runner: Runner, runs: SystemRuns) -> None:
         except mutants_mod.MutationError as e:
             runs.mutant_error = str(e)
             continue
+        # --engine auto: the native core where it accepts the model (the same verdict, counts
+        # and trace as the Python engine: test_checker_native_engine.py), Python elsewhere.
         step = runner.run(f"{system.name}-mutant-{m.name}",
-                          safestate_argv("check", str(tla), "--json", "--itf", "{out}/trace.itf.json"),
+                          safestate_argv("check", str(tla), "--json", "--engine", "auto",
+                                         "--itf", "{out}/trace.itf.json"),
                           [*files_under([dest], (".tla", ".cfg")), *tool_files("check")], outputs=["trace.itf.json"])
         killed = step.returncode == 12 if m.expect == "violated" else step.returncode == 0
         runs.mutants.append(MutantRun(m, step, killed))

@@ -1,7 +1,7 @@
 --------------------------- MODULE PropertyOrder ---------------------------
-(* Which of several violated properties TLC reports: those it checks with   *)
-(* a tableau (<>P, P ~> Q) come first, and among them the counterexample    *)
-(* nearest the initial state; the message then names every property that    *)
+(* Which of several violated properties TLC reports: it checks them in .cfg *)
+(* order (A's group of forms without a tableau first here, then B, then C),  *)
+(* the counterexample nearest the initial state; the message names each one  *)
 (* counterexample violates.  No fairness: x may stutter anywhere.  Here     *)
 (* stuttering at x = 0 violates C and A, while B's needs a step first.      *)
 (* Expected (TLC 1.8.0): "Temporal properties A and C were violated."      *)
