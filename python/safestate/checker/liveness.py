@@ -347,13 +347,7 @@ class LivenessChecker:
                         prev[w] = v
                         nxt.append(w)
             if best is not None:
-                v, w = best
-                path = [w]
-                while v != src:
-                    path.append(v)
-                    v = prev[v]
-                path.reverse()
-                return path
+                return _path_back(prev, src, *best)
             level = nxt
         raise TlaError("internal", "liveness: a need of a fair component is unreachable inside it")
 
@@ -370,12 +364,7 @@ class LivenessChecker:
                 if w not in inside:
                     continue
                 if w in goals:
-                    path = [w]
-                    while v != src:
-                        path.append(v)
-                        v = prev[v]
-                    path.reverse()
-                    return path
+                    return _path_back(prev, src, v, w)
                 if w not in prev:
                     prev[w] = v
                     dq.append(w)
@@ -489,3 +478,14 @@ def violated_on(ob: Obligation, states: list[tuple], loop: int, stutters: bool) 
     if ob.kind == "wf":
         return not taken and all(p(s) for s in cycle)
     return not taken and any(p(s) for s in cycle)  # sf
+
+
+def _path_back(prev: dict[int, int], src: int, v: int, w: int) -> list[int]:
+    """The path from src (excluded) to w, whose last step is v -> w, read back through
+    the BFS's predecessor map."""
+    path = [w]
+    while v != src:
+        path.append(v)
+        v = prev[v]
+    path.reverse()
+    return path
