@@ -62,6 +62,8 @@ Next == \E e \in Inputs : Scan(e)
 
 Spec == Init /\ [][Next]_vars
 
+\* SCH-05: every variable of the flat press in its type: motor bit, step counter 0..8,
+\* mode 1..3, the outputs the motor and the stroke valves.
 TypeOK ==
     /\ MoToOut \in BOOLEAN /\ cur \in 0..8 /\ FangShi \in 1..3 /\ continuous \in BOOLEAN
     /\ outputs \subseteq {"motor"} \cup StrokeOutputs

@@ -95,6 +95,8 @@ ChainNext == RunScan \/ \E src \in States : \E dst \in States : Request(src, dst
 Spec == ChainInit /\ [][ChainNext]_chainVars
 
 -----------------------------------------------------------------------------
+\* SCH-01, SCH-02: the active set a set of the tree's states, the result of the last
+\* request ok or one of the SCH-02 reject reasons, the last request a pair of states.
 TypeOK ==
     /\ active \subseteq States
     /\ result \in {"ok", "source_inactive", "cross_level", "target_active"}

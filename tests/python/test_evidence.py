@@ -288,3 +288,21 @@ def test_evidence_gap_reasons_keep_the_gap_counted_and_a_stale_one_is_shown(tmp_
     page.write_text("- RSM-15 (no row): x\n")
     with pytest.raises(RequirementLinkError, match=r"p.md:1:11: no row: not a gap kind"):
         gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS)
+
+
+def test_evidence_an_invariant_gap_carries_its_design_page_reason(tmp_path: Path) -> None:
+    # The flat press violates INV_PRESS by design: no mutant can kill it, the page says why.
+    from safestate.evidence.matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, Gap, _explained,
+                                           _stale_reasons)
+    from safestate.evidence.sources import RequirementLinkError, gap_reasons
+    page = tmp_path / "p.md"
+    page.write_text("- HydraulicPressFlat.INV_PRESS (invariant without a mutant): the defective reference.\n")
+    reasons = gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS, INVARIANT_GAP_KINDS)
+    gap = Gap("invariant without a mutant", "HydraulicPressFlat.INV_PRESS", "no model mutant targets it")
+    assert _explained([gap], reasons) == [Gap("invariant without a mutant", "HydraulicPressFlat.INV_PRESS",
+                                              "the defective reference. (p.md:1)")]
+    assert _stale_reasons(reasons, []) == [Gap("stale gap reason", "HydraulicPressFlat.INV_PRESS",
+                                               "p.md:1 explains 'invariant without a mutant', which is not a gap of it")]
+    page.write_text("- HydraulicPressFlat.INV_PRESS (no test): x\n")  # a requirement's kind, not an invariant's
+    with pytest.raises(RequirementLinkError, match=r"p.md:1:33: no test: not a gap kind"):
+        gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS, INVARIANT_GAP_KINDS)

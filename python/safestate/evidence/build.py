@@ -16,7 +16,7 @@ from ..errors import UsageError
 from ..systems.registry import System, load_all
 from . import diagrams, junit, manifest, render, sources, traces
 from .collect import Runner, StepResult
-from .matrix import (REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_ok,
+from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_ok,
                      check_verdict, conform_summary, proofs_by_invariant)
 from .render import SystemPage
 from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
@@ -116,7 +116,8 @@ def build(opts: Options) -> Result:
     try:
         tests = [t for d in [root / "tests" / "cpp", *sorted((root / "src").rglob("tests"))]
                  for t in sources.gtests(d, root, known)] + sources.pytests(root / "tests" / "python", root, known)
-        reasons = [g for p in pages for g in sources.gap_reasons(p, root, known, REQUIREMENT_GAP_KINDS)]
+        reasons = [g for p in pages for g in sources.gap_reasons(p, root, known, REQUIREMENT_GAP_KINDS,
+                                                                  INVARIANT_GAP_KINDS)]
     except sources.RequirementLinkError as e:
         raise UsageError(str(e)) from None
     corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)], tests,

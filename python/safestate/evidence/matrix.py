@@ -15,6 +15,8 @@ from .steps import SystemRuns
 # The gaps of one requirement that a design page may explain (sources.gap_reasons).
 REQUIREMENT_GAP_KINDS = {"no invariant", "no conformance", "no design row", "no C++ row", "no model operator",
                          "no test"}
+# ... and those of a system's invariant (`- System.INVARIANT (kind): reason`).
+INVARIANT_GAP_KINDS = frozenset({"invariant without a mutant", "invariant names no requirement"})
 
 
 @dataclass(frozen=True)
@@ -151,9 +153,12 @@ def build(corpus: Corpus, facts: list[SystemFacts], test_results: dict[str, str]
         gaps += e.gaps
         entries.append(e)
     here = {e.req.id for e in entries if not e.outside}
-    gaps += _stale_reasons([r for r in corpus.gap_reasons if r.requirement in here], gaps)
+    gaps += _stale_reasons([r for r in corpus.gap_reasons if r.subject in here], gaps)
     row_gaps, unreachable = _row_gaps(corpus, facts)
-    gaps += _invariant_gaps(facts) + row_gaps
+    invariant_gaps = _explained(_invariant_gaps(facts), corpus.gap_reasons)
+    systems = {f.runs.system.name for f in facts}
+    gaps += invariant_gaps + _stale_reasons(
+        [r for r in corpus.gap_reasons if r.subject.split(".")[0] in systems], invariant_gaps) + row_gaps
     return Matrix(entries, gaps, unreachable)
 
 
@@ -222,7 +227,7 @@ def _requirement_gaps(e: Entry) -> list[Gap]:
 
 def _explained(gaps: list[Gap], reasons: list[GapReason]) -> list[Gap]:
     """A gap a design page explains keeps its kind (it stays counted), with the reason."""
-    why = {(r.requirement, k): r for r in reasons for k in r.kinds}
+    why = {(r.subject, k): r for r in reasons for k in r.kinds}
     return [Gap(g.kind, g.subject, f"{why[g.subject, g.kind].reason} ({why[g.subject, g.kind].loc})")
             if (g.subject, g.kind) in why else g for g in gaps]
 
@@ -230,8 +235,8 @@ def _explained(gaps: list[Gap], reasons: list[GapReason]) -> list[Gap]:
 def _stale_reasons(reasons: list[GapReason], gaps: list[Gap]) -> list[Gap]:
     """A reason for a gap that is not there any more is itself shown (the page is out of date)."""
     open_ = {(g.subject, g.kind) for g in gaps}
-    return [Gap("stale gap reason", r.requirement, f"{r.loc} explains '{k}', which is not a gap of it")
-            for r in reasons for k in r.kinds if (r.requirement, k) not in open_]
+    return [Gap("stale gap reason", r.subject, f"{r.loc} explains '{k}', which is not a gap of it")
+            for r in reasons for k in r.kinds if (r.subject, k) not in open_]
 
 
 def _invariant_gaps(facts: list[SystemFacts]) -> list[Gap]:

@@ -24,8 +24,9 @@ _PYREQ = re.compile(r"^\s*@pytest\.mark\.req\((.*)\)\s*$")
 _GTREQ = re.compile(r"^\s*// req:(.*)$")
 # "- K17 unreachable by construction: <reason>" on a design page.
 _UNREACHABLE = re.compile(r"^- ([A-Z]{1,2}\d{2}) unreachable by construction: (.+)$")
-# "- RSM-15 (no design row, no C++ row): <reason>": why a requirement's gap stays open.
-_GAP_REASON = re.compile(r"^- (" + REQ_ID.pattern[2:-2] + r") \(([^)]*)\): (.+)$")
+# "- RSM-15 (no design row, no C++ row): <reason>": why a requirement's gap stays open;
+# "- HydraulicPressFlat.INV_PRESS (invariant without a mutant): <reason>": an invariant's.
+_GAP_REASON = re.compile(r"^- (" + REQ_ID.pattern[2:-2] + r"|[A-Z]\w*\.[A-Za-z_]\w*) \(([^)]*)\): (.+)$")
 
 
 @dataclass(frozen=True)
@@ -74,8 +75,9 @@ class TestCase:
 
 @dataclass(frozen=True)
 class GapReason:
-    """A design page's reason why gaps of a requirement stay open (they stay counted)."""
-    requirement: str
+    """A design page's reason why gaps of a requirement, or of a system's invariant
+    (`System.INVARIANT`), stay open (they stay counted)."""
+    subject: str
     kinds: tuple[str, ...]
     reason: str
     loc: Loc
@@ -298,21 +300,25 @@ def unreachable_rows(page: Path, root: Path) -> list[Unreachable]:
     return out
 
 
-def gap_reasons(page: Path, root: Path, known: set[str], kinds: set[str]) -> list[GapReason]:
-    """The `- ID (kind, kind): reason` items of a design page; an unknown ID or kind is a
-    located error (a reason that explains nothing would pass unnoticed)."""
+def gap_reasons(page: Path, root: Path, known: set[str], kinds: set[str],
+                invariant_kinds: frozenset[str] = frozenset()) -> list[GapReason]:
+    """The `- ID (kind, kind): reason` items of a design page (ID: a requirement, with one of
+    `kinds`, or `System.INVARIANT`, with one of `invariant_kinds`); an unknown ID or kind is
+    a located error (a reason that explains nothing would pass unnoticed)."""
     out = []
     for i, line in enumerate(page.read_text(encoding="utf-8").splitlines(), start=1):
         m = _GAP_REASON.match(line)
         if not m:
             continue
         where = f"{rel(root, page)}:{i}"
-        if m.group(1) not in known:
+        of_invariant = "." in m.group(1)
+        if not of_invariant and m.group(1) not in known:
             raise RequirementLinkError(f"{where}:3: {m.group(1)}: not a requirement ID of REQUIREMENTS.md")
+        allowed = invariant_kinds if of_invariant else kinds
         named = tuple(k.strip() for k in m.group(2).split(","))
-        bad = [k for k in named if k not in kinds]
+        bad = [k for k in named if k not in allowed]
         if bad:
             raise RequirementLinkError(f"{where}:{line.index('(') + 2}: {', '.join(bad)}: not a gap kind (expected "
-                                       f"one of: {', '.join(sorted(kinds))})")
+                                       f"one of: {', '.join(sorted(allowed))})")
         out.append(GapReason(m.group(1), named, m.group(3).strip(), Loc(rel(root, page), i)))
     return out
