@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "safestate/jog_setpoint.hpp"
+#include "safestate/scan_outputs.hpp"
 #include "ssm_test_support.hpp"
 
 namespace {
@@ -260,6 +261,29 @@ TEST(RSM09_Manual, JogArgumentsAreValidated) {
     EXPECT_EQ(r.command(c), CommandResult::rejected(RejectReason::InvalidArgument));
     EXPECT_EQ(r.state(), StateId::ManualIdle);
   }
+}
+
+// A JOG_START built field by field with its direction left unset carries direction 0,
+// which is no direction: rejected at K26 like any other invalid argument, never a jog.
+TEST(RSM09_Manual, AJogStartWithItsDirectionLeftUnsetIsRejected) {
+  Rig r;
+  r.to_operational(SelectorReading::T1);
+  Command c{};
+  c.kind = CommandKind::JogStart;
+  c.axis = 1;
+  c.speed_mm_s = 100;
+  EXPECT_EQ(r.command(c), CommandResult::rejected(RejectReason::InvalidArgument));
+  EXPECT_EQ(r.state(), StateId::ManualIdle);
+}
+
+// The outputs of a scan are a value: != is exactly the negation of ==.
+TEST(RSM16_ScanOutputs, OutputsDifferExactlyWhenTheyAreNotEqual) {
+  const ScanOutputs a{};
+  ScanOutputs b{};
+  EXPECT_FALSE(a != b);
+  b.ramp_down_request = true;
+  EXPECT_TRUE(a != b);
+  EXPECT_FALSE(a == b);
 }
 
 // The jog setpoint (axis, direction, speed) is a value: two setpoints are equal exactly
