@@ -18,8 +18,14 @@ TOOL = {"check": ("checker", "tla"), "prove": ("prove", "checker", "tla"),
         "conform": ("conform", "checker", "tla", "systems")}
 
 
+# The checker's native core (C++; `--engine auto` runs the model mutants on it): part of
+# the checker's version wherever the sources are at hand (a source checkout).
+NATIVE_CORE = PKG.parents[1] / "bindings" / "python" / "tla_native_module.cpp"
+
+
 def tool_files(step: str) -> list[Path]:
-    return files_under([PKG / d for d in TOOL[step]], (".py",))
+    files = files_under([PKG / d for d in TOOL[step]], (".py",))
+    return [*files, NATIVE_CORE] if "checker" in TOOL[step] and NATIVE_CORE.is_file() else files
 
 
 def model_files(model: Path) -> list[Path]:
