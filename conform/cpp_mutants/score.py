@@ -234,17 +234,23 @@ def evaluate(build: Path, m: Mutant, passes: tuple[str, ...], tests: list[str], 
     return {"status": "killed" if why else "survived", "killed_by": why}
 
 
-def equivalents(path: Path = HERE / "equivalent.toml") -> dict[tuple[str, str, str], str]:
-    """Survivors justified as equivalent: (file, original line, mutant line) -> why."""
+Justified = dict[tuple[str, str, str, int | None], str]
+
+
+def equivalents(path: Path = HERE / "equivalent.toml") -> Justified:
+    """Survivors justified as equivalent: (file, original line, mutant line, line number or
+    None) -> why.  An entry with `line` covers that line only: the same text mutated the same
+    way elsewhere in the file (a `break;` commented out) need not be equivalent there."""
     if not path.is_file():
         return {}
     with open(path, "rb") as f:
         doc = tomllib.load(f)
-    return {(e["file"], e["original"], e["mutant"]): e["why"] for e in doc.get("equivalent", [])}
+    return {(e["file"], e["original"], e["mutant"], e.get("line")): e["why"] for e in doc.get("equivalent", [])}
 
 
-def note(row: dict, justified: dict[tuple[str, str, str], str]) -> str:
-    why = justified.get((row["file"], row["original"], row["mutant"]))
+def note(row: dict, justified: Justified) -> str:
+    key = (row["file"], row["original"], row["mutant"])
+    why = justified.get((*key, row["line"])) or justified.get((*key, None))
     return f"equivalent: {why}" if why else "not yet killed by a test nor justified as equivalent"
 
 
@@ -324,8 +330,9 @@ def survivors_to_rerun(prior: dict, every: list[Mutant]) -> tuple[list[Mutant], 
 
 def rerun(prior: dict, rows: list[dict], a: argparse.Namespace) -> dict:
     """A written result with the re-evaluated survivors' rows replaced (each saying when)."""
-    new = {row_key(r): r | {"reevaluated": {"commit": a.commit, "date": datetime.datetime.now(
-        datetime.timezone.utc).isoformat(timespec="seconds")}} for r in rows}
+    when = {"commit": a.commit, "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+            "passes": a.passes, "gtest_tests": a.gtest_tests or "all"}
+    new = {row_key(r): r | {"reevaluated": when} for r in rows}
     mutants = [new.get(row_key(r), r) for r in prior["mutants"]]
     return prior | {"mutants": mutants} | counts(mutants)
 

@@ -80,9 +80,11 @@ def test_the_score_without_equivalent_mutants_leaves_them_out_of_the_denominator
 def test_a_reevaluated_survivor_replaces_its_row_and_says_when():
     prior = _run(1, [_row("src/a.cpp:1", "killed", killed_by="GoogleTest: t"), _row("src/a.cpp:3", "survived")])
     again = _row("src/a.cpp:3", "killed", killed_by="GoogleTest: test_x (RSM09_Manual.New)") | {"id": "new"}
-    d = score.rerun(prior, [again], argparse.Namespace(commit="abc1234"))
+    d = score.rerun(prior, [again], argparse.Namespace(commit="abc1234", passes="gtest", gtest_tests=["test_x"]))
     assert (d["killed"], d["survivors"]) == (2, [])
-    assert d["mutants"][1]["id"] == "new" and d["mutants"][1]["reevaluated"]["commit"] == "abc1234"
+    assert d["mutants"][1]["id"] == "new"
+    assert d["mutants"][1]["reevaluated"] | {"date": 0} == {"commit": "abc1234", "date": 0, "passes": "gtest",
+                                                          "gtest_tests": ["test_x"]}
 
 
 def test_merged_runs_count_a_mutant_sampled_twice_once_with_the_later_row(tmp_path):
@@ -101,3 +103,13 @@ def test_runs_of_different_populations_are_not_merged():
     b["generated"] = 9000
     with pytest.raises(ValueError, match="different populations"):
         merge_scores.merge([a, b])
+
+
+def test_an_equivalence_with_a_line_justifies_that_line_only():
+    """`break;` -> `/*break;*/` is equivalent at the end of a switch's last case, not
+    before the next case label (equivalent.toml's transition_table.hpp:281 entry)."""
+    justified = score.equivalents()
+    last = {"file": "include/safestate/transition_table.hpp", "original": "break;", "mutant": "/*break;*/"}
+    assert score.note(last | {"line": 281}, justified).startswith("equivalent: the break of the last case")
+    assert score.note(last | {"line": 275}, justified).startswith("not yet killed")
+    assert score.note(EQUIV, justified).startswith("equivalent: a comment line")  # no line: any line
