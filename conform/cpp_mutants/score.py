@@ -436,7 +436,7 @@ def main() -> int:
     result = summary(rows, every, files, sample, passes, a, t0) if prior is None else rerun(prior, rows, a)
     valid, killed = result["evaluated"], result["killed"]
     out.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
-    print(f"C++ mutation score: {result['score_percent']}% ({killed}/{valid} killed; {len(rows)} sampled of "
+    print(f"C++ mutation score: {result['score_percent']}% ({killed}/{valid} killed; {result['sampled']} sampled of "
           f"{len(every)} generated, {result['stillborn']} stillborn; 95% interval {result['confidence_95_percent']}) "
           f"-> {out}")
     return 0
