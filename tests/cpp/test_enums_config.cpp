@@ -71,6 +71,20 @@ TEST(RSM16_StatusNames, CommandResultIsNoneAcceptedOrTheReason) {
   EXPECT_EQ(to_string(CommandResult::rejected(RejectReason::QueueFull)), "QUEUE_FULL");
 }
 
+// A command result is a value: != is exactly the negation of == (the outcome and the
+// reason both count).
+TEST(RSM13_Commands, CommandResultsDifferExactlyWhenTheyAreNotEqual) {
+  const CommandResult all[] = {CommandResult::none(), CommandResult::accepted(),
+                               CommandResult::rejected(RejectReason::WrongState),
+                               CommandResult::rejected(RejectReason::QueueFull)};
+  for (const CommandResult& a : all) {
+    for (const CommandResult& b : all) {
+      EXPECT_EQ(a != b, !(a == b)) << to_string(a) << " vs " << to_string(b);
+      EXPECT_EQ(a == b, &a == &b) << to_string(a) << " vs " << to_string(b);
+    }
+  }
+}
+
 // The status record (RSM-16) compares by every field: tests and the binding use == to
 // say "nothing changed", so a field left out of it would hide a change.
 template <typename E>
