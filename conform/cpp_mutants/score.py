@@ -201,13 +201,19 @@ def gtest_order(m: Mutant, tests: list[str]) -> list[str]:
     return sorted(tests, key=lambda t: (not words & set(t.split("_")[1:]), t))
 
 
+GTEST_TIMEOUT = 300  # seconds; every executable finishes in under 5 s unmutated
+
+
 def gtest_kill(build: Path, m: Mutant, tests: list[str]) -> str | None | bool:
     """The first failing GoogleTest executable; False: one did not build (stillborn)."""
     for t in gtest_order(m, tests):
         if not _build(build, m, [f"gt_{m.id}_{t}"]):
             return False
-        r = subprocess.run([str(build / f"gtest_{m.id}" / t), "--gtest_brief=1"], capture_output=True, text=True,
-                           timeout=600)
+        try:
+            r = subprocess.run([str(build / f"gtest_{m.id}" / t), "--gtest_brief=1"], capture_output=True, text=True,
+                               timeout=GTEST_TIMEOUT)
+        except subprocess.TimeoutExpired:  # a hang (e.g. a queue that never drains) is a failure the suite shows
+            return f"GoogleTest: {t} (did not finish in {GTEST_TIMEOUT} s)"
         if r.returncode != 0:
             failed = [ln.split("] ", 1)[1] for ln in r.stdout.splitlines() if ln.startswith("[  FAILED  ]")]
             return f"GoogleTest: {t}" + (f" ({failed[0].split(',')[0].split(' (')[0]})" if failed else "")
