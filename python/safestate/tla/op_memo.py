@@ -21,6 +21,7 @@ ordinary call runs and raises it, with its own location.
 
 from __future__ import annotations
 
+from time import perf_counter_ns
 from typing import Any, Callable
 
 from . import ast as A
@@ -30,8 +31,10 @@ from .values import FnValue, ModelValue
 
 Code = Callable[[Any, Any, list], Any]
 
-# Entries kept per operator; past this the operator is called without storing more.
+# An operator's table is dropped (and the operator called plainly) when it reaches
+# MAX_ENTRIES, or when fewer than half of its first TRIAL_CALLS calls were hits.
 MAX_ENTRIES = 200_000
+TRIAL_CALLS = 2_000
 
 _ITERATING = (A.Quant, A.SetFilter, A.SetMap, A.Choose, A.FnLit, A.Lambda)
 _MISS = object()
@@ -105,10 +108,22 @@ class OpMemo:
 
     def wrap(self, sym: DefSym, plain: Code, arg_codes: list[Code]) -> Code:
         """`plain` (the ordinary call), answered from the operator's table when its
-        arguments were seen before."""
+        arguments were seen before.  The first TRIAL_CALLS calls measure what the table
+        costs (building keys) and saves (the calls it answers); an operator for which it
+        does not pay (the flagship's Safety(s): a record per state, a cheap body) goes
+        back to the plain call, as does one whose table reaches MAX_ENTRIES.  Either way
+        every value is the plain call's: only the speed depends on the measurement."""
         table = self.tables.setdefault(id(sym), {})
+        calls = hits = key_ns = plain_ns = 0
+        on = True
 
         def memoised(s: Any, t: Any, L: list) -> Any:
+            nonlocal calls, hits, key_ns, plain_ns, on
+            if not on:
+                return plain(s, t, L)
+            trial = calls < TRIAL_CALLS
+            if trial:
+                t0 = perf_counter_ns()
             try:
                 vals = tuple(a(s, t, L) for a in arg_codes)
             except Exception:  # noqa: BLE001 - the ordinary call reports it as before
@@ -117,10 +132,22 @@ class OpMemo:
             if kinds is _MISS:
                 return plain(s, t, L)
             key = (vals, kinds)
+            calls += 1
             r = table.get(key, _MISS)
-            if r is _MISS:
+            if trial:
+                t1 = perf_counter_ns()
+                key_ns += t1 - t0
+            if r is not _MISS:
+                hits += 1
+            else:
                 r = plain(s, t, L)
-                if len(table) < MAX_ENTRIES:
-                    table[key] = r
+                table[key] = r
+                if trial:
+                    plain_ns += perf_counter_ns() - t1
+            if calls == TRIAL_CALLS and hits * plain_ns < 2 * key_ns * (calls - hits) or len(table) >= MAX_ENTRIES:
+                # kept only if the calls answered from the table saved at least twice
+                # what building every key cost
+                on = False
+                table.clear()
             return r
         return memoised
