@@ -58,8 +58,12 @@ def generate(files: list[Path], work: Path) -> list[Mutant]:
     """universalmutator's mutants of each file, as exact substitutions (the changed line
     with enough surrounding lines to occur once in the original)."""
     out: list[Mutant] = []
+    stems = [f.stem for f in files]
     for f in files:
-        d = work / f.stem
+        # src/machine_state.cpp and include/safestate/machine_state.hpp share a stem: their
+        # ids (CMake target names) must not collide
+        prefix = f"um_{f.stem}" if stems.count(f.stem) == 1 else f"um_{f.stem}_{f.suffix[1:]}"
+        d = work / f.name
         d.mkdir(parents=True, exist_ok=True)
         subprocess.run([str(Path(sys.executable).parent / "mutate"), str(f), "cpp", "--noCheck", "--mutantDir", str(d)],
                        check=True, capture_output=True, cwd=d)
@@ -77,7 +81,7 @@ def generate(files: list[Path], work: Path) -> list[Mutant]:
             while text.count("".join(orig[lo:hi])) != 1 and (lo > 0 or hi < len(orig)):
                 lo, hi = max(0, lo - 1), min(len(orig), hi + 1)
             n = mf.name.split(".")[-2]
-            out.append(Mutant(id=f"um_{f.stem}_{n}", kind=f"{f.relative_to(REPO)}:{i + 1}",
+            out.append(Mutant(id=f"{prefix}_{n}", kind=f"{f.relative_to(REPO)}:{i + 1}",
                               what=f"{orig[i].strip()}  =>  {mut[i].strip()}", file=str(f.relative_to(REPO)),
                               original="".join(orig[lo:hi]), replacement="".join(orig[lo:i] + [mut[i]] + orig[i + 1:hi])))
     return out
@@ -109,9 +113,21 @@ def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
     return (round(100 * (c - h), 1), round(100 * (c + h), 1))
 
 
-def _build(build: Path, targets: list[str]) -> bool:
+class TreeError(Exception):
+    """The mutants' CMake tree failed for a reason other than a mutated file not compiling."""
+
+
+def _build(build: Path, m: Mutant, targets: list[str]) -> bool:
+    """False: a translation unit of this mutant does not compile or link (stillborn).  Any
+    other failure (configure, an unmutated unit) is the tree's, never the mutant's."""
     r = subprocess.run(["cmake", "--build", str(build), "-j", "1", "--target", *targets], capture_output=True, text=True)
-    return r.returncode == 0
+    if r.returncode == 0:
+        return True
+    failed = [ln[len("FAILED: "):] for ln in r.stdout.splitlines() if ln.startswith("FAILED: ")]
+    if failed and all(m.id in f for f in failed) and "build.ninja" not in " ".join(failed):
+        return False
+    raise TreeError(f"building {' '.join(targets)} failed outside the mutant {m.id}: "
+                    f"{(failed or r.stdout.splitlines()[-1:] or ['?'])[0]}")
 
 
 @functools.cache
@@ -185,13 +201,19 @@ def gtest_order(m: Mutant, tests: list[str]) -> list[str]:
     return sorted(tests, key=lambda t: (not words & set(t.split("_")[1:]), t))
 
 
+GTEST_TIMEOUT = 300  # seconds; every executable finishes in under 5 s unmutated
+
+
 def gtest_kill(build: Path, m: Mutant, tests: list[str]) -> str | None | bool:
     """The first failing GoogleTest executable; False: one did not build (stillborn)."""
     for t in gtest_order(m, tests):
-        if not _build(build, [f"gt_{m.id}_{t}"]):
+        if not _build(build, m, [f"gt_{m.id}_{t}"]):
             return False
-        r = subprocess.run([str(build / f"gtest_{m.id}" / t), "--gtest_brief=1"], capture_output=True, text=True,
-                           timeout=600)
+        try:
+            r = subprocess.run([str(build / f"gtest_{m.id}" / t), "--gtest_brief=1"], capture_output=True, text=True,
+                               timeout=GTEST_TIMEOUT)
+        except subprocess.TimeoutExpired:  # a hang (e.g. a queue that never drains) is a failure the suite shows
+            return f"GoogleTest: {t} (did not finish in {GTEST_TIMEOUT} s)"
         if r.returncode != 0:
             failed = [ln.split("] ", 1)[1] for ln in r.stdout.splitlines() if ln.startswith("[  FAILED  ]")]
             return f"GoogleTest: {t}" + (f" ({failed[0].split(',')[0].split(' (')[0]})" if failed else "")
@@ -209,7 +231,7 @@ def evaluate(build: Path, m: Mutant, passes: tuple[str, ...], tests: list[str], 
             return {"status": "stillborn", "stillborn_at": "GoogleTest build"}
         why = g if isinstance(g, str) else None
     if why is None and {"replay", "input-complete"} & set(passes):
-        if not _build(build, [f"mut_{m.id}"]):
+        if not _build(build, m, [f"mut_{m.id}"]):
             return {"status": "stillborn", "stillborn_at": "binding build"}
         if "replay" in passes:
             why = replay_kill(build, m)
@@ -218,18 +240,45 @@ def evaluate(build: Path, m: Mutant, passes: tuple[str, ...], tests: list[str], 
     return {"status": "killed" if why else "survived", "killed_by": why}
 
 
-def equivalents(path: Path = HERE / "equivalent.toml") -> dict[tuple[str, str, str], str]:
-    """Survivors justified as equivalent: (file, original line, mutant line) -> why."""
+Justified = dict[tuple[str, str, str, int | None], str]
+
+
+def equivalents(path: Path = HERE / "equivalent.toml") -> Justified:
+    """Survivors justified as equivalent: (file, original line, mutant line, line number or
+    None) -> why.  An entry with `line` covers that line only: the same text mutated the same
+    way elsewhere in the file (a `break;` commented out) need not be equivalent there."""
     if not path.is_file():
         return {}
     with open(path, "rb") as f:
         doc = tomllib.load(f)
-    return {(e["file"], e["original"], e["mutant"]): e["why"] for e in doc.get("equivalent", [])}
+    return {(e["file"], e["original"], e["mutant"], e.get("line")): e["why"] for e in doc.get("equivalent", [])}
 
 
-def note(row: dict, justified: dict[tuple[str, str, str], str]) -> str:
-    why = justified.get((row["file"], row["original"], row["mutant"]))
+def note(row: dict, justified: Justified) -> str:
+    key = (row["file"], row["original"], row["mutant"])
+    why = justified.get((*key, row["line"])) or justified.get((*key, None))
     return f"equivalent: {why}" if why else "not yet killed by a test nor justified as equivalent"
+
+
+def counts(rows: list[dict]) -> dict:
+    """The score of a list of mutant rows: the counts, the score with its 95% Wilson interval
+    (equivalent survivors counted as survivors) and without the equivalent mutants."""
+    valid = [r for r in rows if r["status"] != "stillborn"]
+    killed = sum(1 for r in valid if r["status"] == "killed")
+    survivors = [r for r in valid if r["status"] == "survived"]
+    equivalent = sum(1 for r in survivors if r.get("note", "").startswith("equivalent"))
+    judged = len(valid) - equivalent
+    return {
+        "sampled": len(rows), "stillborn": len(rows) - len(valid), "evaluated": len(valid), "killed": killed,
+        "score_percent": round(100 * killed / len(valid), 1) if valid else None,
+        "confidence_95_percent": wilson(killed, len(valid)),
+        "killed_by_gtest": sum(1 for r in valid if (r.get("killed_by") or "").startswith("GoogleTest")),
+        "killed_by_conformance": sum(1 for r in valid if (r.get("killed_by") or "").startswith("conformance")),
+        "survived_equivalent": equivalent,
+        "score_without_equivalent_percent": round(100 * killed / judged, 1) if judged else None,
+        "confidence_95_percent_without_equivalent": wilson(killed, judged),
+        "survivors": survivors,
+    }
 
 
 def rejustify(path: Path) -> int:
@@ -240,8 +289,7 @@ def rejustify(path: Path) -> int:
     for r in d["mutants"]:
         if r["status"] == "survived":
             r["note"] = note(r, justified)
-    d["survivors"] = [r for r in d["mutants"] if r["status"] == "survived"]
-    d["survived_equivalent"] = sum(1 for r in d["survivors"] if r["note"].startswith("equivalent"))
+    d |= counts(d["mutants"])
     path.write_text(json.dumps(d, indent=1) + "\n", encoding="utf-8")
     gaps = len(d["survivors"]) - d["survived_equivalent"]
     print(f"{path}: {d['survived_equivalent']} survivors justified as equivalent, {gaps} not")
@@ -251,30 +299,48 @@ def rejustify(path: Path) -> int:
 def summary(rows: list[dict], every: list[Mutant], files: list[Path], sample: list[Mutant],
             passes: tuple[str, ...], a: argparse.Namespace, t0: float) -> dict:
     """The score.json document for the mutants evaluated so far."""
-    valid = [r for r in rows if r["status"] != "stillborn"]
-    killed = sum(1 for r in valid if r["status"] == "killed")
     per_file: dict[str, int] = defaultdict(int)
     for m in every:
         per_file[m.file] += 1
+    c = counts(rows)
     result = {
         "tool": "universalmutator " + _version(), "targets": [str(f.relative_to(REPO)) for f in files] if a.files
         else list(TARGETS), "generated": len(every),
         "generated_per_file": dict(sorted(per_file.items())), "sample_requested": a.sample, "seed": a.seed,
-        "passes": list(passes), "sampled": len(rows), "stillborn": len(rows) - len(valid), "evaluated": len(valid),
-        "killed": killed, "input_complete_stride": a.stride,
-        "score_percent": round(100 * killed / len(valid), 1) if valid else None,
-        "confidence_95_percent": wilson(killed, len(valid)),
-        "killed_by_gtest": sum(1 for r in valid if (r.get("killed_by") or "").startswith("GoogleTest")),
-        "killed_by_conformance": sum(1 for r in valid if (r.get("killed_by") or "").startswith("conformance")),
-        "survived_equivalent": sum(1 for r in valid if r.get("note", "").startswith("equivalent")),
+        "passes": list(passes), "input_complete_stride": a.stride,
+        **{k: v for k, v in c.items() if k != "survivors"},
         "budget_seconds": a.budget, "seconds": round(time.monotonic() - t0, 1),
         "stopped_by_budget": len(rows) < len(sample),
         "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
         "commit": a.commit,
-        "survivors": [r for r in valid if r["status"] == "survived"],
+        "survivors": c["survivors"],
         "mutants": rows,
     }
     return result
+
+
+def row_key(r: dict) -> tuple[str, str, str]:
+    """A mutant's identity across runs and id schemes: where, original line, mutant line."""
+    return (r["where"], r["original"], r["mutant"])
+
+
+def survivors_to_rerun(prior: dict, every: list[Mutant]) -> tuple[list[Mutant], list[str]]:
+    """The survivors of a written result not justified as equivalent, as today's mutants
+    (and the `where` of those no longer generated)."""
+    justified = equivalents()
+    by_key = {(m.kind, *m.what.split("  =>  ")): m for m in every}
+    want = [row_key(r) for r in prior["mutants"]
+            if r["status"] == "survived" and not note(r, justified).startswith("equivalent")]
+    return [by_key[k] for k in want if k in by_key], [k[0] for k in want if k not in by_key]
+
+
+def rerun(prior: dict, rows: list[dict], a: argparse.Namespace) -> dict:
+    """A written result with the re-evaluated survivors' rows replaced (each saying when)."""
+    when = {"commit": a.commit, "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+            "passes": a.passes, "gtest_tests": a.gtest_tests or "all"}
+    new = {row_key(r): r | {"reevaluated": when} for r in rows}
+    mutants = [new.get(row_key(r), r) for r in prior["mutants"]]
+    return prior | {"mutants": mutants} | counts(mutants)
 
 
 def main() -> int:
@@ -294,6 +360,9 @@ def main() -> int:
     ap.add_argument("--passes", default=",".join(PASSES),
                     help=f"the kill passes to run, in this order (default {','.join(PASSES)})")
     ap.add_argument("--gtest-tests", nargs="+", metavar="NAME", help="only these GoogleTest executables")
+    ap.add_argument("--reevaluate", type=Path, metavar="SCORE_JSON",
+                    help="run again only the survivors of SCORE_JSON not justified as equivalent (after new "
+                         "tests) and rewrite their rows in it (or in --out)")
     a = ap.parse_args()
     if a.rejustify:
         return rejustify(a.build)
@@ -316,7 +385,16 @@ def main() -> int:
     else:
         files = sorted(f for pat in TARGETS for f in REPO.glob(pat))
     every = generate(files, build / "generated")
-    sample = stratified(every, a.sample, a.seed)
+    prior: dict | None = None
+    if a.reevaluate:
+        prior = json.loads(a.reevaluate.read_text(encoding="utf-8"))
+        sample, gone = survivors_to_rerun(prior, every)
+        if gone:
+            print(f"error: {a.reevaluate}: survivor {gone[0]} is no longer among universalmutator's mutants of "
+                  f"today's sources (the file changed): rerun the sample instead", file=sys.stderr)
+            return 2
+    else:
+        sample = stratified(every, a.sample, a.seed)
     tests = [k[5:] for k in translation_units(True) if k.startswith("test_")]
     if a.gtest_tests:
         unknown = [t for t in a.gtest_tests if t not in tests]
@@ -327,12 +405,18 @@ def main() -> int:
     prepare(build, sample, gtest="gtest" in passes)
     py = sys.executable
     pybind = subprocess.run([py, "-m", "pybind11", "--cmakedir"], check=True, capture_output=True, text=True).stdout.strip()
-    if not (build / "build.ninja").exists():
-        subprocess.run(["cmake", "-S", str(build / "src"), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                        f"-DPython_EXECUTABLE={py}", f"-Dpybind11_DIR={pybind}"], check=True, stdout=subprocess.DEVNULL)
+    # configured here, not by ninja's regeneration inside the first mutant's build: a tree
+    # that does not configure is an error, never a column of stillborn mutants
+    cfg = subprocess.run(["cmake", "-S", str(build / "src"), "-B", str(build), "-G", "Ninja",
+                          "-DCMAKE_BUILD_TYPE=Release", f"-DPython_EXECUTABLE={py}", f"-Dpybind11_DIR={pybind}"],
+                         capture_output=True, text=True)
+    if cfg.returncode != 0:
+        err = next((ln for ln in cfg.stderr.splitlines() if "Error" in ln), cfg.stderr.strip()[-200:])
+        print(f"error: {build / 'src' / 'CMakeLists.txt'}: the mutants' tree does not configure: {err}", file=sys.stderr)
+        return 2
     justified = equivalents()
     rows: list[dict] = []
-    out = a.out or build / "score.json"
+    out = a.out or a.reevaluate or build / "score.json"
     out.parent.mkdir(parents=True, exist_ok=True)
 
     for m in sample:
@@ -342,19 +426,23 @@ def main() -> int:
         original, mutant = m.what.split("  =>  ")
         row = {"id": m.id, "where": m.kind, "file": m.file, "line": int(m.kind.rsplit(":", 1)[1]),
                "original": original, "mutant": mutant}
-        row |= evaluate(build, m, passes, tests, a.stride)
+        try:
+            row |= evaluate(build, m, passes, tests, a.stride)
+        except TreeError as e:
+            print(f"error: {e}", file=sys.stderr)
+            return 2
         if row["status"] == "survived":
             row["note"] = note(row, justified)
         row["seconds"] = round(time.monotonic() - t1, 1)
         rows.append(row)
         print(json.dumps(row), file=sys.stderr, flush=True)
         # after every mutant: an interrupted run leaves a readable partial result
-        result = summary(rows, every, files, sample, passes, a, t0)
+        result = summary(rows, every, files, sample, passes, a, t0) if prior is None else rerun(prior, rows, a)
         out.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
-    result = summary(rows, every, files, sample, passes, a, t0)
+    result = summary(rows, every, files, sample, passes, a, t0) if prior is None else rerun(prior, rows, a)
     valid, killed = result["evaluated"], result["killed"]
     out.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
-    print(f"C++ mutation score: {result['score_percent']}% ({killed}/{valid} killed; {len(rows)} sampled of "
+    print(f"C++ mutation score: {result['score_percent']}% ({killed}/{valid} killed; {result['sampled']} sampled of "
           f"{len(every)} generated, {result['stillborn']} stillborn; 95% interval {result['confidence_95_percent']}) "
           f"-> {out}")
     return 0

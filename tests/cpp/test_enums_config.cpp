@@ -12,6 +12,7 @@
 #include "safestate/command_kind.hpp"
 #include "safestate/command_result.hpp"
 #include "safestate/config.hpp"
+#include "safestate/config_error.hpp"
 #include "safestate/enable_position.hpp"
 #include "safestate/enum_strings.hpp"
 #include "safestate/fault_code.hpp"
@@ -68,6 +69,20 @@ TEST(RSM16_StatusNames, CommandResultIsNoneAcceptedOrTheReason) {
   EXPECT_EQ(to_string(CommandResult::none()), "NONE");
   EXPECT_EQ(to_string(CommandResult::accepted()), "ACCEPTED");
   EXPECT_EQ(to_string(CommandResult::rejected(RejectReason::QueueFull)), "QUEUE_FULL");
+}
+
+// A command result is a value: != is exactly the negation of == (the outcome and the
+// reason both count).
+TEST(RSM13_Commands, CommandResultsDifferExactlyWhenTheyAreNotEqual) {
+  const CommandResult all[] = {CommandResult::none(), CommandResult::accepted(),
+                               CommandResult::rejected(RejectReason::WrongState),
+                               CommandResult::rejected(RejectReason::QueueFull)};
+  for (const CommandResult& a : all) {
+    for (const CommandResult& b : all) {
+      EXPECT_EQ(a != b, !(a == b)) << to_string(a) << " vs " << to_string(b);
+      EXPECT_EQ(a == b, &a == &b) << to_string(a) << " vs " << to_string(b);
+    }
+  }
 }
 
 // The status record (RSM-16) compares by every field: tests and the binding use == to
@@ -131,6 +146,17 @@ TEST(RSM15_Config, DefaultsAreThoseOfTheDesignPage) {
   EXPECT_EQ(kMaxQueueCapacity, 16U);
   EXPECT_DOUBLE_EQ(c.dh[1].a_m, kUr5DhTable[1].a_m);
   EXPECT_EQ(validate(c), ConfigError::None);
+}
+
+// kAllConfigErrors is the public list of validate()'s answers: each once, in declaration
+// order (as every kAll* list), so that kAllConfigErrors[i] is the error of value i.
+TEST(RSM15_Config, EveryConfigErrorIsListedOnceInDeclarationOrder) {
+  EXPECT_EQ(names(kAllConfigErrors),
+            (V{"NONE", "CYCLE_TIME_ZERO", "DISCREPANCY_TOO_LARGE", "ARMING_TIMEOUT_TOO_LARGE", "MAX_STOP_TOO_LARGE",
+               "T1_LIMIT_NOT_POSITIVE", "ZERO_VELOCITY_INVALID", "QUEUE_LIMIT_OUT_OF_RANGE", "DH_TABLE_NOT_FINITE"}));
+  for (std::size_t i = 0; i < kAllConfigErrors.size(); ++i) {
+    EXPECT_EQ(static_cast<std::size_t>(kAllConfigErrors[i]), i) << to_string(kAllConfigErrors[i]);
+  }
 }
 
 TEST(RSM15_Config, ValidateRejectsEachUnusableParameter) {

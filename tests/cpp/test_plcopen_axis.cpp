@@ -42,6 +42,23 @@ TEST(RSM17_PlcopenAxis, StateNamesAreTheEnumeratorNames) {
   for (const auto& [s, n] : names) EXPECT_EQ(safestate::to_string(s), n);
 }
 
+// The rejection reasons carry their enumerator names (the diagnostics and the binding show
+// them); found missing by the C++ mutation score (an emptied name survived).
+TEST(RSM17_PlcopenAxis, RejectReasonNamesAreTheEnumeratorNames) {
+  using R = AxisReject;
+  const std::pair<AxisReject, const char*> names[] = {
+      {R::None, "None"},
+      {R::AxisDisabled, "AxisDisabled"},
+      {R::AxisInErrorStop, "AxisInErrorStop"},
+      {R::AxisStopping, "AxisStopping"},
+      {R::HomingActive, "HomingActive"},
+      {R::NotStandStill, "NotStandStill"},
+      {R::NothingToComplete, "NothingToComplete"},
+      {R::NoErrorToReset, "NoErrorToReset"},
+  };
+  for (const auto& [r, n] : names) EXPECT_EQ(safestate::to_string(r), n);
+}
+
 // The function blocks carry their PLCopen Part 1 names (rejections and the diagram name
 // them); found missing by the C++ mutation score (an emptied name survived).
 TEST(RSM17_PlcopenAxis, FunctionBlockNamesAreThePlcopenNames) {

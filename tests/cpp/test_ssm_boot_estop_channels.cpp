@@ -28,6 +28,9 @@ TEST(RSM01_States, BeforeTheFirstCycleTheManagerIsInBootWithEverythingOff) {
   EXPECT_EQ(s.command_result, CommandResult::none());
   EXPECT_EQ(s.estop_mismatch + s.safeguard_mismatch + s.enabling_mismatch + s.selector_invalid, 0U);
   EXPECT_EQ(s.queue_length, 0U);
+  // ... and the whole record is the default one (no jog: axis, direction, speed 0), as the
+  // outputs are the default outputs: a default-built record means "nothing yet"
+  EXPECT_EQ(s, StatusRecord{});
   EXPECT_EQ(r.m.outputs(), ScanOutputs{});
   for (const AxisState a : r.m.outputs().axes) EXPECT_EQ(a, AxisState::Disabled);
   EXPECT_EQ(r.m.last_rows().cycle, nullptr);

@@ -4,8 +4,10 @@
 // outputs (RSM-16) and the PLCopen axes it drives (RSM-17).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <thread>
 #include <vector>
 
@@ -274,6 +276,28 @@ TEST(RSM09_Manual, AJogStartWithItsDirectionLeftUnsetIsRejected) {
   c.speed_mm_s = 100;
   EXPECT_EQ(r.command(c), CommandResult::rejected(RejectReason::InvalidArgument));
   EXPECT_EQ(r.state(), StateId::ManualIdle);
+}
+
+// A command is a value the operator interface submits and reads back (the queue copies it,
+// the binding and the conformance traces show its fields): the factories of commands
+// without arguments carry their kind and zero jog arguments, as a command built field by
+// field does; only jog_start sets them.
+TEST(RSM13_Commands, CommandsWithoutArgumentsCarryZeroJogArguments) {
+  const Command made[] = {Command::reset(), Command::servo_on(), Command::servo_off(), Command::start(),
+                          Command::pause(), Command::resume(),   Command::jog_stop(),  Command::t2_confirm()};
+  const CommandKind kinds[] = {CommandKind::Reset, CommandKind::ServoOn, CommandKind::ServoOff,
+                               CommandKind::Start, CommandKind::Pause,   CommandKind::Resume,
+                               CommandKind::JogStop, CommandKind::T2Confirm};
+  for (std::size_t i = 0; i < std::size(made); ++i) {
+    EXPECT_EQ(made[i].kind, kinds[i]) << i;
+    EXPECT_EQ(made[i].axis, 0) << to_string(kinds[i]);
+    EXPECT_EQ(made[i].direction, 0) << to_string(kinds[i]);
+    EXPECT_EQ(made[i].speed_mm_s, 0) << to_string(kinds[i]);
+  }
+  const Command jog = Command::jog_start(3, -1, 120);
+  EXPECT_EQ((std::array<std::int32_t, 3>{jog.axis, jog.direction, jog.speed_mm_s}),
+            (std::array<std::int32_t, 3>{3, -1, 120}));
+  EXPECT_EQ(jog.kind, CommandKind::JogStart);
 }
 
 // The outputs of a scan are a value: != is exactly the negation of ==.

@@ -178,6 +178,42 @@ TEST(TransitionTableExport, JsonListsEveryRowOnceInOrder) {
   EXPECT_EQ(json.substr(json.size() - 3), "]}\n");
 }
 
+// The operator panel parses this JSON (python/safestate/panel/diagram_dot.py): each row is
+// one object on its own line, its fields separated by ", ".  Checked on whole rows, since a
+// search for one field still finds it when the separator before it or a name is missing.
+TEST(TransitionTableExport, JsonRowsAreWholeObjectsWithEveryFieldSeparated) {
+  const std::string json = to_json();
+  EXPECT_NE(json.find("\n  {\"id\": \"C01\", \"section\": \"cycle\", \"event\": \"CYCLE\", \"source\": "
+                      "[\"ERROR_LOCKOUT\"], \"effective_source\": [\"ERROR_LOCKOUT\"], \"guard\": \"always\", "
+                      "\"kind\": \"STAY\", \"targets\": [], \"reason\": \"NONE\", \"stop_category\": \"KEEP\", "
+                      "\"action\": \"none\", \"requirements\": [\"RSM-04\", \"INV-DISCREPANCY\"]},\n"),
+            std::string::npos);
+  std::istringstream lines(json);
+  std::size_t rows = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("  {\"id\": ", 0) != 0) continue;
+    ++rows;
+    for (const char* key : {"section", "event", "source", "effective_source", "guard", "kind", "targets", "reason",
+                            "stop_category", "action", "requirements"}) {
+      EXPECT_NE(line.find(std::string(", \"") + key + "\": "), std::string::npos) << key << " in " << line;
+    }
+  }
+  EXPECT_EQ(rows, kTransitionTable.size());
+}
+
+// The names the design page's tables and the exports use for a row's kind and its effect
+// on stop_category (§5-§7; Clear is K12's reset of the category to NONE).
+TEST(RSM03_StopCategories, RowKindAndStopUpdateNamesAreThoseOfTheDesignPage) {
+  EXPECT_EQ(to_string(StopUpdate::Keep), "KEEP");
+  EXPECT_EQ(to_string(StopUpdate::Cat0), "CAT0");
+  EXPECT_EQ(to_string(StopUpdate::Cat1), "CAT1");
+  EXPECT_EQ(to_string(StopUpdate::Cat2), "CAT2");
+  EXPECT_EQ(to_string(StopUpdate::Clear), "NONE");
+  EXPECT_EQ(to_string(TargetKind::Enter), "ENTER");
+  EXPECT_EQ(to_string(TargetKind::Stay), "STAY");
+  EXPECT_EQ(to_string(TargetKind::Reject), "REJECT");
+}
+
 TEST(TransitionTableExport, DotListsEveryRowAndEveryState) {
   const std::string dot = to_dot();
   EXPECT_EQ(dot.rfind("digraph SystemStateManager {", 0), 0U);
