@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import z3
+from z3.z3 import _to_expr_ref  # what z3.substitute wraps its result with (not exported)
 
 from ..checker.cfg import Config, parse_config
 from ..tla import ast as A
@@ -35,6 +36,21 @@ from .translate import Ctx, Translator
 from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, is_z3, leaves
 
 _TAG = [0]
+
+
+class Renaming:
+    """`z3.substitute(f, pairs)` with the pairs checked and converted once."""
+
+    def __init__(self, pairs: list[tuple[z3.ExprRef, z3.ExprRef]]) -> None:
+        if not all(a.sort().eq(b.sort()) for a, b in pairs):
+            raise ValueError("a renaming pair of mismatching sorts")
+        self.pairs = pairs  # keeps the terms alive: the arrays hold bare pointers
+        self.n = len(pairs)
+        self.sources = (z3.Ast * self.n)(*(a.as_ast() for a, _ in pairs))
+        self.targets = (z3.Ast * self.n)(*(b.as_ast() for _, b in pairs))
+
+    def __call__(self, f: z3.ExprRef) -> z3.ExprRef:
+        return _to_expr_ref(z3.Z3_substitute(f.ctx.ref(), f.as_ast(), self.n, self.sources, self.targets), f.ctx)
 
 
 @dataclass
@@ -62,6 +78,7 @@ class System:
     param_leaves: list[z3.ExprRef] = field(default_factory=list)
     _copies: dict[int, list[z3.ExprRef]] = field(default_factory=dict)
     _aux: dict[int, list[z3.ExprRef]] = field(default_factory=dict)
+    _renamings: dict[tuple[str, int], "Renaming"] = field(default_factory=dict)
     _base_quantified: bool | None = None
     _predicates: dict[str, tuple[z3.BoolRef, list[Obligation]]] = field(default_factory=dict)
 
@@ -116,23 +133,34 @@ class System:
             self._copies[i] = [z3.Const(f"{leaf}@{i}", leaf.sort()) for leaf in self.cur_leaves]
         return self._copies[i]
 
+    # The renamings below are built once per step: the well-definedness check of a
+    # counterexample renames every obligation of Next at every step (hundreds of calls
+    # with the same pairs), and z3.substitute re-checks each pair's sorts at every call.
+    def _renaming(self, kind: str, i: int) -> "Renaming":
+        r = self._renamings.get((kind, i))
+        if r is None:
+            pairs = list(zip(self.cur_leaves, self.state(i)))
+            if kind == "init":
+                pairs += zip(self.init_aux, [z3.Const(f"{a}@i{i}", a.sort()) for a in self.init_aux])
+            elif kind == "trans":
+                aux = [z3.Const(f"{a}@{i}", a.sort()) for a in self.trans_aux]
+                self._aux[i] = aux
+                pairs += list(zip(self.nxt_leaves, self.state(i + 1))) + list(zip(self.trans_aux, aux))
+            r = self._renamings[(kind, i)] = Renaming(pairs)
+        return r
+
     def at(self, f: z3.BoolRef, i: int) -> z3.BoolRef:
         """A state formula about step i of an unrolling."""
-        return z3.substitute(f, list(zip(self.cur_leaves, self.state(i))))
+        return self._renaming("at", i)(f)
 
     def init_at(self, i: int = 0, f: z3.BoolRef | None = None) -> z3.BoolRef:
         """Init (or a formula over its state and inputs, e.g. an obligation) at step i."""
-        aux = [z3.Const(f"{a}@i{i}", a.sort()) for a in self.init_aux]
-        return z3.substitute(self.init if f is None else f,
-                             list(zip(self.cur_leaves, self.state(i))) + list(zip(self.init_aux, aux)))
+        return self._renaming("init", i)(self.init if f is None else f)
 
     def trans_at(self, i: int, f: z3.BoolRef | None = None) -> z3.BoolRef:
-        """Next (or a formula over s, s' and its inputs) between steps i and i+1 (fresh
-        copies of the Skolem constants)."""
-        aux = [z3.Const(f"{a}@{i}", a.sort()) for a in self.trans_aux]
-        self._aux[i] = aux
-        pairs = list(zip(self.cur_leaves, self.state(i))) + list(zip(self.nxt_leaves, self.state(i + 1)))
-        return z3.substitute(self.trans if f is None else f, pairs + list(zip(self.trans_aux, aux)))
+        """Next (or a formula over s, s' and its inputs) between steps i and i+1 (the
+        step's own copies of the Skolem constants)."""
+        return self._renaming("trans", i)(self.trans if f is None else f)
 
     def solver(self, *formulas: z3.ExprRef) -> z3.Solver:
         """A solver for unrollings of Init, Next and `formulas`: quantifier-free when they are.

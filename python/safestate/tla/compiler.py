@@ -20,6 +20,7 @@ from typing import Any, Callable
 
 from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
+from .fold_memo import EXPANSION_LIMIT, FoldMemo
 from .op_memo import OpMemo
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
@@ -115,6 +116,7 @@ class Compiler:
         # > 0 while compiling a body that runs re-entrantly on a shared frame (see inline.py).
         self._no_inline = 0
         self.folder = ConstFolder(self)
+        self.fold_memo = FoldMemo(self.folder)
         self.op_memo = OpMemo(self)
         # (id of a LET's INSTANCE, id of the enclosing scope) -> the LET body's scope
         self._let_scopes: dict[tuple[int, int], Scope] = {}
@@ -240,10 +242,10 @@ class Compiler:
         method = getattr(self, "c_" + type(e).__name__, None)
         if method is None:
             raise UnsupportedError(f"unsupported expression {type(e).__name__}", e.loc)
-        code = method(e, env)
         if self.fast_paths and type(e) not in _LITERALS and self.folder.is_constant(e, env):
-            code = fold(code, env.frame.size)
-        return code
+            return self.fold_memo.fold(e, env, self._inline_depth,
+                                       lambda: fold(method(e, env), env.frame.size))
+        return method(e, env)
 
     def c_Num(self, e: A.Num, env: Env) -> Code:
         return const_code(e.value)
@@ -327,14 +329,21 @@ class Compiler:
             raise UnsupportedError(f"priming an expression that applies the operator argument {name}", loc)
         return None
 
+    def enter_expansion(self, name: str, loc: Loc) -> None:
+        """One level deeper into expanded operator bodies (the caller decrements
+        `_inline_depth` when done); an expansion this deep is a recursion."""
+        self._inline_depth += 1
+        if self._inline_depth > EXPANSION_LIMIT:
+            raise UnsupportedError(f"recursive action-level operator {name}", loc)
+        if self._inline_depth > self.fold_memo.depth_peak:
+            self.fold_memo.depth_peak = self._inline_depth
+
     def inline_let_op(self, name: str, local: LetOpLocal, args: list[A.Expr], env: Env, loc: Loc,
                       compile_body: Callable[[A.Expr, Env], Any]) -> Any:
         """Expand a LET operator at its call site (under a prime, or in an action)."""
         d = local.defn
         self._arity(name, len(d.params), args, loc)
-        self._inline_depth += 1
-        if self._inline_depth > 60:
-            raise UnsupportedError(f"recursive action-level operator {name}", loc)
+        self.enter_expansion(name, loc)
         try:
             bindings, pre = self.bind_params(d.params, args, env, loc)
             body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings},
@@ -572,9 +581,7 @@ class Compiler:
         """Expand an operator at its call site (action-level operators, Init, instances)."""
         d = sym.defn
         self._arity(d.name, len(d.params), args, loc)
-        self._inline_depth += 1
-        if self._inline_depth > 60:
-            raise UnsupportedError(f"recursive action-level operator {d.name}", loc)
+        self.enter_expansion(d.name, loc)
         try:
             bindings, pre = self.bind_params(d.params, args, env, loc)
             inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
