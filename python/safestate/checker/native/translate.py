@@ -95,6 +95,7 @@ class Translator:
         self._loc_index: dict[tuple, int] = {}
         self._defs: dict[tuple, Node] = {}
         self.leaves = 0
+        self.leaf_params: list[tuple[tuple[str, int], ...]] = []  # per leaf: (name, slot) as Leaf.params
         self._depth = 0
 
     # ---------------------------------------------------------------- nodes
@@ -483,24 +484,33 @@ class Translator:
         return self.node(Op.TUPLE, e.loc, kids=tuple(self.expr(x, env) for x in e.elems))
 
     # ---------------------------------------------------------------- actions
-    def split(self, e: A.Expr, env: TEnv) -> Node:
-        """Next as `ActionCompiler.split`: each of TLC's actions ends in its own leaf."""
+    def split(self, e: A.Expr, env: TEnv, params: tuple[tuple[str, int], ...] = ()) -> Node:
+        """Next as `ActionCompiler.split`: each of TLC's actions ends in its own leaf,
+        whose parameters (the \\E variables and the operator arguments bound to slots
+        on the way, as `Leaf.params`) are recorded in `leaf_params`."""
         if isinstance(e, A.Or):
-            return self.node(Op.A_OR, e.loc, kids=tuple(self.split(i, env) for i in e.items))
+            return self.node(Op.A_OR, e.loc, kids=tuple(self.split(i, env, params) for i in e.items))
         if isinstance(e, A.Quant) and e.kind == "\\E":
-            return self.exists(e, env, lambda env2: self.split(e.body, env2))
+            names = [n for n, _ in self.names_of(e.bounds, e.loc)]
+            return self.exists(e, env, lambda env2: self.split(
+                e.body, env2, params + tuple((n, env2.locals[n].slot) for n in names)))
         if isinstance(e, A.Let):
             env2, slots = self.bind_let(e, env)
-            return self.node(Op.A_LET, e.loc, slots, kids=(self.split(e.body, env2),))
+            return self.node(Op.A_LET, e.loc, slots, kids=(self.split(e.body, env2, params),))
         if isinstance(e, (A.Name, A.Apply)) and e.name not in env.locals:
             sym = env.scope.lookup(e.name)
             if isinstance(sym, DefSym) and not sym.recursive and sym.defn.fn_bounds is None:
                 args = e.args if isinstance(e, A.Apply) else []
                 if sym.scope.instance_params or sym.scope.parameterised:
                     raise unsupported(f"the operator {sym.defn.name} of a parameterised INSTANCE", e.loc)
-                return self.inline(sym.defn, args, sym.scope, {}, env, e.loc, self.split)
+
+                def body(b: A.Expr, benv: TEnv) -> Node:
+                    bound = [(p.name, benv.locals[p.name]) for p in sym.defn.params]
+                    return self.split(b, benv, params + tuple((n, a.slot) for n, a in bound if isinstance(a, SlotArg)))
+                return self.inline(sym.defn, args, sym.scope, {}, env, e.loc, body)
         leaf = self.leaves
         self.leaves += 1
+        self.leaf_params.append(params)
         return self.action(e, env, self.node(Op.A_EMIT, e.loc, (leaf,)))
 
     def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
