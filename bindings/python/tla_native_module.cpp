@@ -271,6 +271,7 @@ enum Op : int {
     // more set descriptors
     SD_CUP, SD_CAP, SD_DIFF,
     CHOOSE,
+    SELECTSEQ,
     OP_COUNT
 };
 
@@ -709,6 +710,16 @@ public:
                     if (boolean(n->kids[1], c, "CHOOSE predicate")) return st.items(s)[i];
                 }
                 fail("Attempted to compute the value of an expression of form CHOOSE x \\in S: P, but no element of S satisfied P", n->loc);
+            }
+            case SELECTSEQ: {  // ints: the test's parameter slot; kids: the sequence, the test's body
+                uint32_t s = seq_of(eval(n->kids[0], c), n->loc, "SelectSeq");
+                std::vector<uint32_t> out;
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    uint32_t x = st.items(s)[i];
+                    slots[size_t(n->ints[0])] = x;
+                    if (boolean(n->kids[1], c, "test of SelectSeq")) out.push_back(x);
+                }
+                return st.mk_seq(out);
             }
             case RECSET: {
                 // [a : S, b : T] as a finite set of records (ints: the field names).
@@ -1298,6 +1309,7 @@ PYBIND11_MODULE(_tla_native, m) {
     m.attr("OP_IN_SD") = int(IN_SD);
     m.attr("OP_SD_STRING") = int(SD_STRING);
     m.attr("OP_A_BIND") = int(A_BIND);
+    m.attr("OP_SELECTSEQ") = int(SELECTSEQ);
     py::class_<Engine>(m, "Engine")
         .def(py::init<>())
         .def_readwrite("nvars", &Engine::nvars)

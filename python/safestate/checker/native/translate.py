@@ -235,6 +235,9 @@ class Translator:
 
     def builtin(self, sym: BuiltinSym, args: list[A.Expr], env: TEnv, loc: Loc) -> Node:
         b = sym.builtin
+        if b.name == "SelectSeq" and b.module == "Sequences" and len(args) == 2:
+            slot = self.alloc()
+            return self.node(Op.SELECTSEQ, loc, (slot,), kids=(self.expr(args[0], env), self.test_body(args[1], slot, env)))
         spec = _BUILTIN_APPLY.get(b.name)
         if spec is None or b.module not in _NATIVE_MODULES or b.refused:
             raise unsupported(f"the operator {b.name} as a value", loc)
@@ -242,6 +245,25 @@ class Translator:
         if len(args) != arity:
             raise unsupported(f"{b.name} applied to {len(args)} arguments", loc)
         return self.node(op, loc, kids=tuple(self.expr(a, env) for a in args))
+
+    def test_body(self, op: A.Expr, slot: int, env: TEnv) -> Node:
+        """The body of a one-parameter operator argument (``LAMBDA x : e``, a user
+        operator or a LET operator, as SelectSeq's test), its parameter in `slot`."""
+        if isinstance(op, A.Lambda) and len(op.params) == 1:
+            return self.expr(op.body, replace(env, locals={**env.locals, op.params[0]: SlotArg(slot, None)}))
+        name = op.name if isinstance(op, (A.Name, A.OpRef)) else None
+        local = env.locals.get(name) if name else None
+        if isinstance(local, LetOp):
+            defn, scope, base = local.defn, local.env.scope, local.env.locals
+        else:
+            sym = self.lookup(name, env) if name and local is None else None
+            if not isinstance(sym, DefSym) or sym.recursive or sym.defn.fn_bounds is not None \
+                    or sym.scope.instance_params or sym.scope.parameterised:
+                raise unsupported("this operator argument", op.loc)
+            defn, scope, base = sym.defn, sym.scope, {}
+        if len(defn.params) != 1 or defn.params[0].arity:
+            raise unsupported(f"the operator argument {defn.name} (one parameter expected)", op.loc)
+        return self.expr(defn.body, TEnv(scope, {**base, defn.params[0].name: SlotArg(slot, None)}, env.primed, env.init))
 
     def fn_arg(self, args: list[A.Expr], env: TEnv, loc: Loc) -> Node:
         if len(args) == 1:
@@ -426,8 +448,6 @@ class Translator:
             raise unsupported("this CHOOSE (unbounded, or over a tuple of names)", e.loc)
         slot = self.alloc()
         s = self.expr(e.set, env)
-        if _product_ordered(s):
-            raise unsupported("CHOOSE from a set of records [a : S]", e.loc)
         env2 = replace(env, locals={**env.locals, e.names[0]: SlotArg(slot, None)})
         return self.node(Op.CHOOSE, e.loc, (slot,), kids=(s, self.expr(e.body, env2)))
 
@@ -515,22 +535,13 @@ class Translator:
 
     def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
         pairs = self.names_of(e.bounds, e.loc)
-        sets = tuple(self.enumerated(s, env) for _, s in pairs)
+        sets = tuple(self.expr(s, env) for _, s in pairs)
         locals_ = dict(env.locals)
         slots = []
         for n, _ in pairs:
             slots.append(self.alloc())
             locals_[n] = SlotArg(slots[-1], None)
         return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(replace(env, locals=locals_)),))
-
-    def enumerated(self, e: A.Expr, env: TEnv) -> Node:
-        """A set whose elements the action enumerates, in TLC's order: the core's
-        sets are in TLC's sorted order, but the Python engine enumerates a record set
-        ``[a : S]`` (or a filter of one) in product order, so those are refused."""
-        n = self.expr(e, env)
-        if _product_ordered(n):
-            raise unsupported("enumerating a set of records [a : S] in an action", e.loc)
-        return n
 
     def action(self, e: A.Expr, env: TEnv, k: Node) -> Node:
         method = getattr(self, "a_" + type(e).__name__, None)
@@ -654,7 +665,7 @@ class Translator:
             return None
         if e.op == "=":
             return self.node(Op.A_ASSIGN, e.loc, (target,), kids=(self.expr(e.rhs, env),), k=k)
-        return self.node(Op.A_ASSIGN_IN, e.loc, (target,), kids=(self.enumerated(e.rhs, env), self.set_test(e.rhs, env, 0)),
+        return self.node(Op.A_ASSIGN_IN, e.loc, (target,), kids=(self.expr(e.rhs, env), self.set_test(e.rhs, env, 0)),
                          k=k)
 
     def target_var(self, lhs: A.Expr, env: TEnv, depth: int) -> int | None:
@@ -737,22 +748,6 @@ def _guard_chain(n: Node, k: Node) -> bool:
         n = n[5]
         if n is k:
             return True
-    return False
-
-
-def _product_ordered(n: Node) -> bool:
-    """Can the set `n` be one the Python engine enumerates in product order?"""
-    op, kids = n[0], n[4]
-    if op == Op.RECSET:
-        return True
-    if op == Op.SETFILTER:
-        return _product_ordered(kids[0])
-    if op in (Op.LET, Op.LETREF, Op.BIND):
-        return _product_ordered(kids[-1])
-    if op == Op.IF:
-        return _product_ordered(kids[1]) or _product_ordered(kids[2])
-    if op == Op.CASE:
-        return any(_product_ordered(k) for i, k in enumerate(kids) if i % 2 == 1 or i == len(kids) - 1)
     return False
 
 
