@@ -272,6 +272,9 @@ enum Op : int {
     SD_CUP, SD_CAP, SD_DIFF,
     CHOOSE,
     SELECTSEQ,
+    // an operator call whose body reads only its parameters (no state, no outer binder):
+    // its value is remembered per argument values
+    BIND_MEMO,
     OP_COUNT
 };
 
@@ -703,6 +706,16 @@ public:
             }
             case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
             case BIND: bind(n, c); return eval(n->kids.back(), c);
+            case BIND_MEMO: {
+                MemoKey key{n, {}};
+                for (size_t i = 0; i < n->ints.size(); ++i) key.args.push_back(eval(n->kids[i], c));
+                auto it = memo_.find(key);
+                if (it != memo_.end()) return it->second;
+                for (size_t i = 0; i < n->ints.size(); ++i) slots[size_t(n->ints[i])] = key.args[i];
+                uint32_t v = eval(n->kids.back(), c);
+                memo_.emplace(std::move(key), v);
+                return v;
+            }
             case CHOOSE: {  // the first element in TLC's order that satisfies the predicate
                 uint32_t s = set(n->kids[0], c);
                 for (uint32_t i = 0; i < st.len(s); ++i) {
@@ -836,6 +849,21 @@ public:
             default: fail("not an action", n->loc);
         }
     }
+    // BIND_MEMO's values (per engine: a worker has its own).
+    struct MemoKey {
+        const Node* node;
+        std::vector<uint32_t> args;
+        bool operator==(const MemoKey& o) const { return node == o.node && args == o.args; }
+    };
+    struct MemoHash {
+        size_t operator()(const MemoKey& k) const {
+            uint64_t h = mix(0x51ed, uint64_t(reinterpret_cast<uintptr_t>(k.node)));
+            for (uint32_t a : k.args) h = mix(h, a);
+            return size_t(h);
+        }
+    };
+    std::unordered_map<MemoKey, uint32_t, MemoHash> memo_;
+
     // An operator's arguments, evaluated into its parameters' slots (ints) before the body.
     void bind(Node* n, Ctx& c) {
         for (size_t i = 0; i < n->ints.size(); ++i) {
@@ -1310,6 +1338,7 @@ PYBIND11_MODULE(_tla_native, m) {
     m.attr("OP_SD_STRING") = int(SD_STRING);
     m.attr("OP_A_BIND") = int(A_BIND);
     m.attr("OP_SELECTSEQ") = int(SELECTSEQ);
+    m.attr("OP_BIND_MEMO") = int(BIND_MEMO);
     py::class_<Engine>(m, "Engine")
         .def(py::init<>())
         .def_readwrite("nvars", &Engine::nvars)

@@ -97,6 +97,7 @@ class Translator:
         self.leaves = 0
         self.leaf_params: list[tuple[tuple[str, int], ...]] = []  # per leaf: (name, slot) as Leaf.params
         self._depth = 0
+        self._free: dict[int, tuple[Node, frozenset[int]]] = {}
 
     # ---------------------------------------------------------------- nodes
     def node(self, op: Op, loc: Loc, ints: tuple = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
@@ -198,7 +199,10 @@ class Translator:
             if got is None:
                 if args:
                     raise unsupported(f"applying {d.name} to arguments", loc)
-                got = self._defs[key] = self.expr(d.body, TEnv(sym.scope, {}, env.primed, env.init))
+                got = self.expr(d.body, TEnv(sym.scope, {}, env.primed, env.init))
+                if got[0] != Op.CONST and not self.free_slots(got):
+                    got = self.node(Op.BIND_MEMO, loc, (), kids=(got,))  # a constant: evaluated once
+                self._defs[key] = got
             return got
         return self.inline(d, args, sym.scope, {}, env, loc, self.expr)
 
@@ -230,8 +234,41 @@ class Translator:
             self._depth -= 1
         if not slots:
             return body
-        op = Op.BIND if body_of == self.expr else Op.A_BIND
+        if body_of != self.expr:
+            op = Op.A_BIND
+        else:
+            # A body that reads nothing but its parameters is a function of their values:
+            # the core remembers them (constant-level helpers called once per state).
+            op = Op.BIND_MEMO if not (self.free_slots(body) - set(slots)) else Op.BIND
         return self.node(op, loc, slots, kids=tuple(values) + (body,))
+
+    def free_slots(self, n: Node) -> frozenset[int]:
+        """The slots an expression reads but does not bind itself; -1 stands for the state."""
+        got = self._free.get(id(n))
+        if got is not None:
+            return got[1]
+        op, ints, kids, k = n[0], n[2], n[4], n[5]
+        if op in (Op.VAR, Op.PVAR):
+            free: frozenset[int] = frozenset((-1,))
+        elif op in (Op.SLOT, Op.AT):
+            free = frozenset((ints[0],))
+        else:
+            inner = frozenset().union(*(self.free_slots(x) for x in kids if x is not None))
+            if k is not None:
+                inner |= self.free_slots(k)
+            if op == Op.LETREF:
+                free = inner | {ints[0]}
+            elif op in (Op.LET, Op.EXCEPT):
+                free = inner - {ints[0]} if op == Op.EXCEPT else inner - set(ints)
+            elif op in (Op.BIND, Op.BIND_MEMO, Op.SETMAP):
+                nb = len(ints)
+                free = frozenset().union(*(self.free_slots(x) for x in kids[:nb])) | (self.free_slots(kids[-1]) - set(ints))
+            elif op in (Op.SETFILTER, Op.FORALL, Op.EXISTS, Op.CHOOSE, Op.FNLIT, Op.SELECTSEQ):
+                free = self.free_slots(kids[0]) | (self.free_slots(kids[1]) - {ints[0]})
+            else:
+                free = inner
+        self._free[id(n)] = (n, free)  # the node kept alive: its id stays its own
+        return free
 
     def builtin(self, sym: BuiltinSym, args: list[A.Expr], env: TEnv, loc: Loc) -> Node:
         b = sym.builtin
