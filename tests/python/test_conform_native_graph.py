@@ -140,3 +140,11 @@ def test_a_change_to_the_native_core_changes_the_graph_cache_key(tmp_path: Path,
     assert graph_mod.graph_key(model) == before
     core.write_text("// the core, changed\n")
     assert graph_mod.graph_key(model) != before
+
+
+def test_graph_engine_python_makes_the_python_engine_build_the_graph(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    monkeypatch.setenv(graph_mod.GRAPH_ENGINE_ENV, "python")
+    notes: list[str] = []
+    g = explore(load_model(str(MODELS / "PLCopenAxis.tla")), progress=notes.append)
+    assert "conform: state graph built by the Python engine ($SAFESTATE_GRAPH_ENGINE=python)" in notes
+    assert len(g.states) == 104

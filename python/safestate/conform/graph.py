@@ -67,8 +67,10 @@ def _dedup(states: list[tuple], initial: list[int], raw: Iterable[tuple[int, int
 
 def explore(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
     """The graph from the native core when it accepts the model (the same graph, several
-    times faster), else from the Python engine."""
-    native = native_graph(model, progress)
+    times faster), else from the Python engine ($SAFESTATE_GRAPH_ENGINE=python: always,
+    to compare the two)."""
+    forced = os.environ.get(GRAPH_ENGINE_ENV) == "python"
+    native = f"${GRAPH_ENGINE_ENV}=python" if forced else native_graph(model, progress)
     if not isinstance(native, str):
         if progress:
             progress("conform: state graph built by the native engine")
@@ -94,6 +96,7 @@ def _require_success(res: CheckResult) -> None:
 
 
 CACHE_ENV = "SAFESTATE_CACHE_DIR"
+GRAPH_ENGINE_ENV = "SAFESTATE_GRAPH_ENGINE"
 CHECKER_SOURCES = ("checker", "tla", "conform/graph.py", "conform/events.py", "conform/native_graph.py")
 
 
