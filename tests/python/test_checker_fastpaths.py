@@ -65,8 +65,10 @@ ERROR_SPECS = {
 }
 
 
-def _check(tla: Path, cfg: Path | None, fast: bool, monkeypatch: pytest.MonkeyPatch) -> tuple:
-    monkeypatch.setattr(Compiler, "fast_paths", fast)
+def _check(tla: Path, cfg: Path | None, fast: bool, monkeypatch: pytest.MonkeyPatch,
+           switch: str = "fast_paths") -> tuple:
+    """Everything observable of checking `tla` with the Compiler's `switch` on or off."""
+    monkeypatch.setattr(Compiler, switch, fast)
     try:
         model = load_model(str(tla), str(cfg) if cfg else None)
         r = explore_states(model)

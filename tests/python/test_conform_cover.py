@@ -38,6 +38,37 @@ def test_trace_generation_is_deterministic():
     assert cover(g) == cover(g)
 
 
+@pytest.mark.parametrize("max_len,expected", [
+    # Worked by hand from the module's description: trace 1 prefers edges that stay in
+    # the cycle {0, 1, 2}, leaves it for node 3 last and ends there; trace 2 starts at the
+    # shallowest node with an untaken edge (4), detours 0 -> 1 and takes the rest.
+    (1000, [(0, [0, 1, 2, 8, 5]), (4, [7, 6, 0, 3, 4])]),
+    (2, [(0, [0, 1]), (0, [8, 5]), (4, [7, 2]), (0, [0, 3]), (0, [0, 4]), (4, [7, 6])]),
+])
+def test_trace_generation_walks_as_documented(max_len, expected):
+    assert [(t.start, t.edges) for t in cover(small_graph(), max_len=max_len)] == expected
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_trace_generation_covers_every_edge_of_random_graphs(seed):
+    import random
+
+    rng = random.Random(seed)
+    n = rng.randint(1, 30)
+    src, dst = [], []
+    for v in range(1, n):  # a random tree from node 0 keeps every node reachable
+        src.append(rng.randrange(v))
+        dst.append(v)
+    for _ in range(rng.randint(0, 4 * n)):
+        src.append(rng.randrange(n))
+        dst.append(rng.randrange(n))
+    g = Graph(n, [0], src, dst)
+    for max_len, detour in ((1000, 256), (rng.randint(1, 5), rng.randint(1, 4))):
+        traces = cover(g, max_len=max_len, detour_nodes=detour)
+        check_cover(g, traces)
+        assert all(len(t.edges) <= max(max_len, n) + n for t in traces)
+
+
 def test_absorbing_node_is_entered_once_per_trace():
     g = small_graph()
     for t in cover(g):

@@ -3,8 +3,10 @@ traces, replay each through the C++, compare after every step."""
 
 from __future__ import annotations
 
+import hashlib
 import os
 import time
+from array import array
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from types import ModuleType
@@ -138,9 +140,20 @@ def _run_plan(model: Model, graph: StateGraph, h: Harness, opts: Options, plan: 
 
 def _cached_plan(h: Harness, graph: StateGraph, plan: list[Trace], mat: Materializer,
                  opts: Options) -> replay_plan.ReplayPlan:
-    options = f"max_len={opts.max_len} check_rows={opts.check_rows} traces={len(plan)}"
+    options = f"max_len={opts.max_len} check_rows={opts.check_rows} traces={len(plan)} cover={_digest(plan)}"
     return replay_plan.cached_build(h.adapter, graph, (mat.trace(t) for t in plan), options, opts.check_rows,
                                     opts.progress)
+
+
+def _digest(plan: list[Trace]) -> str:
+    """A hash of the traces themselves: the plan follows them, whichever code walked them
+    (the cover's walk is in the binding, bindings/python/cover_module.cpp)."""
+    flat = array("q")
+    for t in plan:
+        flat.append(t.start)
+        flat.append(len(t.edges))
+        flat.extend(t.edges)
+    return hashlib.sha256(flat.tobytes()).hexdigest()[:16]
 
 
 def plan_of(h: Harness, graph: StateGraph, opts: Options) -> replay_plan.ReplayPlan:

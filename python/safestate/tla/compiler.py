@@ -20,6 +20,7 @@ from typing import Any, Callable
 
 from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_code, const_value, fold
+from .op_memo import OpMemo
 from .env import (NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal,
                   SlotLocal)
 from .errors import EvalError, JavaOverrideError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
@@ -102,6 +103,7 @@ class Compiler:
     # inline.py, specialise.py).  The tests turn them off to compare with the
     # general closures.
     fast_paths = True
+    memoise_operators = True  # op_memo.py; off only to compare with the plain calls
 
     def __init__(self, constants: dict[str, Value], overrides: dict[str, Any]) -> None:
         # CONSTANT name -> value (from the .cfg); `overrides` maps names to symbols for `C <- Op`.
@@ -113,6 +115,7 @@ class Compiler:
         # > 0 while compiling a body that runs re-entrantly on a shared frame (see inline.py).
         self._no_inline = 0
         self.folder = ConstFolder(self)
+        self.op_memo = OpMemo(self)
         # (id of a LET's INSTANCE, id of the enclosing scope) -> the LET body's scope
         self._let_scopes: dict[tuple[int, int], Scope] = {}
 
@@ -495,6 +498,13 @@ class Compiler:
             return _prefix(pre, body)
         if d.fn_bounds is not None:
             return self._fn_def_ref(sym)
+        if self.fast_paths and self.memoise_operators and self.op_memo.applies(sym, args):
+            self.op_memo.skip.add(id(sym))
+            try:
+                plain = self._call_def(sym, args, env, loc)
+            finally:
+                self.op_memo.skip.discard(id(sym))
+            return self.op_memo.wrap(sym, plain, [self.expr(a, env) for a in args])
         if self.fast_paths and (d.params or info.vars) and can_inline(self, sym):
             return inline_call(self, sym, args, env, loc)
         compiled = self._compiled_def(sym)
