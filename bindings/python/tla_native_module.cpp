@@ -271,6 +271,10 @@ enum Op : int {
     // more set descriptors
     SD_CUP, SD_CAP, SD_DIFF,
     CHOOSE,
+    SELECTSEQ,
+    // an operator call whose body reads only its parameters (no state, no outer binder):
+    // its value is remembered per argument values
+    BIND_MEMO,
     OP_COUNT
 };
 
@@ -702,6 +706,16 @@ public:
             }
             case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
             case BIND: bind(n, c); return eval(n->kids.back(), c);
+            case BIND_MEMO: {
+                MemoKey key{n, {}};
+                for (size_t i = 0; i < n->ints.size(); ++i) key.args.push_back(eval(n->kids[i], c));
+                auto it = memo_.find(key);
+                if (it != memo_.end()) return it->second;
+                for (size_t i = 0; i < n->ints.size(); ++i) slots[size_t(n->ints[i])] = key.args[i];
+                uint32_t v = eval(n->kids.back(), c);
+                memo_.emplace(std::move(key), v);
+                return v;
+            }
             case CHOOSE: {  // the first element in TLC's order that satisfies the predicate
                 uint32_t s = set(n->kids[0], c);
                 for (uint32_t i = 0; i < st.len(s); ++i) {
@@ -709,6 +723,16 @@ public:
                     if (boolean(n->kids[1], c, "CHOOSE predicate")) return st.items(s)[i];
                 }
                 fail("Attempted to compute the value of an expression of form CHOOSE x \\in S: P, but no element of S satisfied P", n->loc);
+            }
+            case SELECTSEQ: {  // ints: the test's parameter slot; kids: the sequence, the test's body
+                uint32_t s = seq_of(eval(n->kids[0], c), n->loc, "SelectSeq");
+                std::vector<uint32_t> out;
+                for (uint32_t i = 0; i < st.len(s); ++i) {
+                    uint32_t x = st.items(s)[i];
+                    slots[size_t(n->ints[0])] = x;
+                    if (boolean(n->kids[1], c, "test of SelectSeq")) out.push_back(x);
+                }
+                return st.mk_seq(out);
             }
             case RECSET: {
                 // [a : S, b : T] as a finite set of records (ints: the field names).
@@ -825,6 +849,21 @@ public:
             default: fail("not an action", n->loc);
         }
     }
+    // BIND_MEMO's values (per engine: a worker has its own).
+    struct MemoKey {
+        const Node* node;
+        std::vector<uint32_t> args;
+        bool operator==(const MemoKey& o) const { return node == o.node && args == o.args; }
+    };
+    struct MemoHash {
+        size_t operator()(const MemoKey& k) const {
+            uint64_t h = mix(0x51ed, uint64_t(reinterpret_cast<uintptr_t>(k.node)));
+            for (uint32_t a : k.args) h = mix(h, a);
+            return size_t(h);
+        }
+    };
+    std::unordered_map<MemoKey, uint32_t, MemoHash> memo_;
+
     // An operator's arguments, evaluated into its parameters' slots (ints) before the body.
     void bind(Node* n, Ctx& c) {
         for (size_t i = 0; i < n->ints.size(); ++i) {
@@ -974,6 +1013,23 @@ public:
         return true;
     }
 
+    // The state graph (`conform/graph.py`): one edge per successor inside the model, as
+    // the Python engine lists them (source, target, action leaf, the leaf's parameters
+    // as one interned tuple of their slots' values).  Only the one-worker search records.
+    bool record_edges = false;
+    std::vector<std::vector<int64_t>> leaf_params;  // per leaf: the slots of its parameters
+    std::vector<uint32_t> edge_src, edge_dst, edge_leaf, edge_params;
+    size_t initial_count = 0;  // the initial states are the first ones stored
+    void record_edge(uint32_t src, uint32_t dst, int lf) {
+        buf_.clear();
+        if (size_t(lf) < leaf_params.size())
+            for (int64_t s : leaf_params[size_t(lf)]) buf_.push_back(slots[size_t(s)]);
+        edge_src.push_back(src);
+        edge_dst.push_back(dst);
+        edge_leaf.push_back(uint32_t(lf));
+        edge_params.push_back(st.mk_seq(buf_));
+    }
+
     int cur_level = 0;
     uint64_t before = 0;
     void on_emit(Ctx& c, int lf) {
@@ -997,6 +1053,7 @@ public:
             } else {
                 is_new = false;
             }
+            if (record_edges && emit_kind == 1) record_edge(uint32_t(head), uint32_t(found < 0 ? idx : found), lf);
         }
         if (!is_new) return;
         int which = -1;
@@ -1026,8 +1083,9 @@ public:
                     py::gil_scoped_acquire gil;
                     progress(-1, generated, nstates(), 0);  // initial states done
                 }
+                initial_count = nstates();
                 emit_kind = 1;
-                if (workers > 1) search_levels();
+                if (workers > 1 && !record_edges) search_levels();
                 while (head < nstates()) {
                     while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
                     std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
@@ -1260,6 +1318,10 @@ private:
 };
 
 
+py::bytes as_bytes(const std::vector<uint32_t>& v) {
+    return py::bytes(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(uint32_t));
+}
+
 size_t seen_bytes(const Engine& e) {
     size_t n = 0;
     for (auto& sh : e.seen) n += sh.table.capacity() * 4;
@@ -1275,6 +1337,8 @@ PYBIND11_MODULE(_tla_native, m) {
     m.attr("OP_IN_SD") = int(IN_SD);
     m.attr("OP_SD_STRING") = int(SD_STRING);
     m.attr("OP_A_BIND") = int(A_BIND);
+    m.attr("OP_SELECTSEQ") = int(SELECTSEQ);
+    m.attr("OP_BIND_MEMO") = int(BIND_MEMO);
     py::class_<Engine>(m, "Engine")
         .def(py::init<>())
         .def_readwrite("nvars", &Engine::nvars)
@@ -1309,6 +1373,15 @@ PYBIND11_MODULE(_tla_native, m) {
         .def_readonly("worker_cpu", &Engine::worker_cpu)
         .def_readonly("critical_cpu", &Engine::critical_cpu)
         .def("state", &Engine::state)
+        .def_readwrite("record_edges", &Engine::record_edges)
+        .def_readwrite("leaf_params", &Engine::leaf_params)
+        .def_readonly("initial_count", &Engine::initial_count)
+        // Raw native-endian uint32 arrays (Python: array("I", ...)), one copy, no list of ints.
+        .def("states_bytes", [](Engine& e) { return as_bytes(e.arena); })
+        .def("edges_bytes", [](Engine& e) {
+            return py::make_tuple(as_bytes(e.edge_src), as_bytes(e.edge_dst), as_bytes(e.edge_leaf),
+                                  as_bytes(e.edge_params));
+        })
         .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
         .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })
         .def_property_readonly("distinct", &Engine::nstates)
@@ -1325,6 +1398,7 @@ PYBIND11_MODULE(_tla_native, m) {
         .def_readonly("error_loc", &Engine::error_loc)
         .def_property_readonly("bytes", [](Engine& e) {
             return e.st.bytes() + e.arena.capacity() * 4 + e.parent.capacity() * 4 + e.leaf.capacity() * 4 +
-                   seen_bytes(e) + e.view_keys.capacity() * 4;
+                   seen_bytes(e) + e.view_keys.capacity() * 4 +
+                   (e.edge_src.capacity() + e.edge_dst.capacity() + e.edge_leaf.capacity() + e.edge_params.capacity()) * 4;
         });
 }

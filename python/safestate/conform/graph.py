@@ -17,14 +17,16 @@ import pickle
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Iterator, TypeVar
+from typing import Callable, Iterable, Iterator, TypeVar
 
-from ..checker.explore import explore_states
+from ..checker.explore import CheckResult, explore_states
 from ..checker.model import Model
+from ..checker.native import NATIVE_CORE_SOURCE
 from ..errors import SafestateError
 from .cover import Graph
 from .events import Event
 from .json_input import load_json
+from .native_graph import native_graph
 
 
 @dataclass
@@ -47,7 +49,7 @@ class GraphFileError(SafestateError):
     """A --graph file that is not a state graph of this model."""
 
 
-def _dedup(states: list[tuple], initial: list[int], raw: list[tuple[int, int, Event]]) -> StateGraph:
+def _dedup(states: list[tuple], initial: list[int], raw: Iterable[tuple[int, int, Event]]) -> StateGraph:
     seen: dict[tuple[int, Event], int] = {}
     g = StateGraph(states, initial, [], [], [])
     for s, d, ev in raw:
@@ -64,17 +66,38 @@ def _dedup(states: list[tuple], initial: list[int], raw: list[tuple[int, int, Ev
 
 
 def explore(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
+    """The graph from the native core when it accepts the model (the same graph, several
+    times faster), else from the Python engine ($SAFESTATE_GRAPH_ENGINE=python: always,
+    to compare the two)."""
+    forced = os.environ.get(GRAPH_ENGINE_ENV) == "python"
+    native = f"${GRAPH_ENGINE_ENV}=python" if forced else native_graph(model, progress)
+    if not isinstance(native, str):
+        if progress:
+            progress("conform: state graph built by the native engine")
+        _require_success(native.result)
+        return _dedup(native.states, native.initial, native.raw_edges())
+    if progress:
+        progress(f"conform: state graph built by the Python engine ({native})")
+    return explore_python(model, progress)
+
+
+def explore_python(model: Model, progress=None) -> StateGraph:  # type: ignore[no-untyped-def]
+    """The graph from the Python engine alone (the reference the native graph is tested against)."""
     res = explore_states(model, workers=1, graph=True, progress=progress)
+    _require_success(res)
+    assert res.states is not None and res.edges is not None and res.initial is not None
+    return _dedup(res.states, list(res.initial), ((e.src, e.dst, Event.of(e.action, e.params)) for e in res.edges))
+
+
+def _require_success(res: CheckResult) -> None:
     if res.result != "success":
         raise SafestateError(f"model checking did not succeed: {res.result} {res.violated or ''} "
                            f"{res.error.message if res.error else ''}".strip())
-    assert res.states is not None and res.edges is not None and res.initial is not None
-    raw = [(e.src, e.dst, Event.of(e.action, e.params)) for e in res.edges]
-    return _dedup(res.states, list(res.initial), raw)
 
 
 CACHE_ENV = "SAFESTATE_CACHE_DIR"
-CHECKER_SOURCES = ("checker", "tla", "conform/graph.py", "conform/events.py")
+GRAPH_ENGINE_ENV = "SAFESTATE_GRAPH_ENGINE"
+CHECKER_SOURCES = ("checker", "tla", "conform/graph.py", "conform/events.py", "conform/native_graph.py")
 
 
 def cache_dir() -> Path:
@@ -102,6 +125,8 @@ def graph_key(model: Model) -> str:
         p = pkg / name
         for f in sorted(p.rglob("*.py")) if p.is_dir() else [p]:
             h.update(str(f.relative_to(pkg)).encode() + b"\0" + f.read_bytes())
+    if NATIVE_CORE_SOURCE.is_file():  # the graph is built by the core (an installed package keys on Python alone)
+        h.update(b"native core\0" + NATIVE_CORE_SOURCE.read_bytes())
     return h.hexdigest()[:32]
 
 

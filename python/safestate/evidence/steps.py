@@ -10,6 +10,7 @@ from pathlib import Path
 
 from .. import mutants as mutants_mod
 from ..systems.registry import System
+from ..checker.native import NATIVE_CORE_SOURCE
 from .collect import Runner, StepResult, files_under, safestate_argv
 
 PKG = Path(__file__).resolve().parents[1]   # python/safestate
@@ -18,14 +19,10 @@ TOOL = {"check": ("checker", "tla"), "prove": ("prove", "checker", "tla"),
         "conform": ("conform", "checker", "tla", "systems")}
 
 
-# The checker's native core (C++; `--engine auto` runs the model mutants on it): part of
-# the checker's version wherever the sources are at hand (a source checkout).
-NATIVE_CORE = PKG.parents[1] / "bindings" / "python" / "tla_native_module.cpp"
-
-
 def tool_files(step: str) -> list[Path]:
     files = files_under([PKG / d for d in TOOL[step]], (".py",))
-    return [*files, NATIVE_CORE] if "checker" in TOOL[step] and NATIVE_CORE.is_file() else files
+    # The model mutants run with `--engine auto`: the native core is part of the checker.
+    return [*files, NATIVE_CORE_SOURCE] if "checker" in TOOL[step] and NATIVE_CORE_SOURCE.is_file() else files
 
 
 def model_files(model: Path) -> list[Path]:

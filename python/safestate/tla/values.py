@@ -319,8 +319,11 @@ class RecSetValue(LazySet):
         return True
 
     def iterate(self) -> Iterator[Value]:
-        names = [n for n, _ in self.fields]
-        for combo in itertools.product(*(sorted_elems(s) for _, s in self.fields)):
+        # TLC's order (its order of the records): the fields in the order of their names
+        # (string_rank, not as written), the last one turning fastest.
+        fields = sorted(self.fields, key=lambda f: string_rank(f[0]))
+        names = [n for n, _ in fields]
+        for combo in itertools.product(*(sorted_elems(s) for _, s in fields)):
             yield FnValue(dict(zip(names, combo)))
 
     def size(self) -> int:

@@ -88,7 +88,9 @@ class Op(IntEnum):
     SD_CAP = 76
     SD_DIFF = 77
     CHOOSE = 78
+    SELECTSEQ = 79
+    BIND_MEMO = 80
 
 
-assert (core.OP_COUNT, core.OP_IN_SD, core.OP_SD_STRING, core.OP_A_BIND) == \
-    (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND), "checker/native/ops.py is out of step with the C++ core"
+assert (core.OP_COUNT, core.OP_IN_SD, core.OP_SD_STRING, core.OP_A_BIND, core.OP_SELECTSEQ,
+        core.OP_BIND_MEMO) == (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ, Op.BIND_MEMO), "checker/native/ops.py is out of step with the C++ core"

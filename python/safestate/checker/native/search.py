@@ -51,6 +51,7 @@ class NativeRun:
         self.view = tr.expr(A.Name(cfg.view.loc, cfg.view.name), TEnv(scope, {})) if cfg.view else None
         self.init, self.next = init, next_
         self.nslots = tr.nslots
+        self.leaf_params = tr.leaf_params  # per leaf: (name, slot) of its parameters
 
 
 def _refuse_model(model: Model) -> None:

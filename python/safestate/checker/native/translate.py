@@ -95,7 +95,9 @@ class Translator:
         self._loc_index: dict[tuple, int] = {}
         self._defs: dict[tuple, Node] = {}
         self.leaves = 0
+        self.leaf_params: list[tuple[tuple[str, int], ...]] = []  # per leaf: (name, slot) as Leaf.params
         self._depth = 0
+        self._free: dict[int, tuple[Node, frozenset[int]]] = {}
 
     # ---------------------------------------------------------------- nodes
     def node(self, op: Op, loc: Loc, ints: tuple = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
@@ -197,7 +199,10 @@ class Translator:
             if got is None:
                 if args:
                     raise unsupported(f"applying {d.name} to arguments", loc)
-                got = self._defs[key] = self.expr(d.body, TEnv(sym.scope, {}, env.primed, env.init))
+                got = self.expr(d.body, TEnv(sym.scope, {}, env.primed, env.init))
+                if got[0] != Op.CONST and not self.free_slots(got):
+                    got = self.node(Op.BIND_MEMO, loc, (), kids=(got,))  # a constant: evaluated once
+                self._defs[key] = got
             return got
         return self.inline(d, args, sym.scope, {}, env, loc, self.expr)
 
@@ -229,11 +234,47 @@ class Translator:
             self._depth -= 1
         if not slots:
             return body
-        op = Op.BIND if body_of == self.expr else Op.A_BIND
+        if body_of != self.expr:
+            op = Op.A_BIND
+        else:
+            # A body that reads nothing but its parameters is a function of their values:
+            # the core remembers them (constant-level helpers called once per state).
+            op = Op.BIND_MEMO if not (self.free_slots(body) - set(slots)) else Op.BIND
         return self.node(op, loc, slots, kids=tuple(values) + (body,))
+
+    def free_slots(self, n: Node) -> frozenset[int]:
+        """The slots an expression reads but does not bind itself; -1 stands for the state."""
+        got = self._free.get(id(n))
+        if got is not None:
+            return got[1]
+        op, ints, kids, k = n[0], n[2], n[4], n[5]
+        if op in (Op.VAR, Op.PVAR):
+            free: frozenset[int] = frozenset((-1,))
+        elif op in (Op.SLOT, Op.AT):
+            free = frozenset((ints[0],))
+        else:
+            inner = frozenset().union(*(self.free_slots(x) for x in kids if x is not None))
+            if k is not None:
+                inner |= self.free_slots(k)
+            if op == Op.LETREF:
+                free = inner | {ints[0]}
+            elif op in (Op.LET, Op.EXCEPT):
+                free = inner - {ints[0]} if op == Op.EXCEPT else inner - set(ints)
+            elif op in (Op.BIND, Op.BIND_MEMO, Op.SETMAP):
+                nb = len(ints)
+                free = frozenset().union(*(self.free_slots(x) for x in kids[:nb])) | (self.free_slots(kids[-1]) - set(ints))
+            elif op in (Op.SETFILTER, Op.FORALL, Op.EXISTS, Op.CHOOSE, Op.FNLIT, Op.SELECTSEQ):
+                free = self.free_slots(kids[0]) | (self.free_slots(kids[1]) - {ints[0]})
+            else:
+                free = inner
+        self._free[id(n)] = (n, free)  # the node kept alive: its id stays its own
+        return free
 
     def builtin(self, sym: BuiltinSym, args: list[A.Expr], env: TEnv, loc: Loc) -> Node:
         b = sym.builtin
+        if b.name == "SelectSeq" and b.module == "Sequences" and len(args) == 2:
+            slot = self.alloc()
+            return self.node(Op.SELECTSEQ, loc, (slot,), kids=(self.expr(args[0], env), self.test_body(args[1], slot, env)))
         spec = _BUILTIN_APPLY.get(b.name)
         if spec is None or b.module not in _NATIVE_MODULES or b.refused:
             raise unsupported(f"the operator {b.name} as a value", loc)
@@ -241,6 +282,25 @@ class Translator:
         if len(args) != arity:
             raise unsupported(f"{b.name} applied to {len(args)} arguments", loc)
         return self.node(op, loc, kids=tuple(self.expr(a, env) for a in args))
+
+    def test_body(self, op: A.Expr, slot: int, env: TEnv) -> Node:
+        """The body of a one-parameter operator argument (``LAMBDA x : e``, a user
+        operator or a LET operator, as SelectSeq's test), its parameter in `slot`."""
+        if isinstance(op, A.Lambda) and len(op.params) == 1:
+            return self.expr(op.body, replace(env, locals={**env.locals, op.params[0]: SlotArg(slot, None)}))
+        name = op.name if isinstance(op, (A.Name, A.OpRef)) else None
+        local = env.locals.get(name) if name else None
+        if isinstance(local, LetOp):
+            defn, scope, base = local.defn, local.env.scope, local.env.locals
+        else:
+            sym = self.lookup(name, env) if name and local is None else None
+            if not isinstance(sym, DefSym) or sym.recursive or sym.defn.fn_bounds is not None \
+                    or sym.scope.instance_params or sym.scope.parameterised:
+                raise unsupported("this operator argument", op.loc)
+            defn, scope, base = sym.defn, sym.scope, {}
+        if len(defn.params) != 1 or defn.params[0].arity:
+            raise unsupported(f"the operator argument {defn.name} (one parameter expected)", op.loc)
+        return self.expr(defn.body, TEnv(scope, {**base, defn.params[0].name: SlotArg(slot, None)}, env.primed, env.init))
 
     def fn_arg(self, args: list[A.Expr], env: TEnv, loc: Loc) -> Node:
         if len(args) == 1:
@@ -425,8 +485,6 @@ class Translator:
             raise unsupported("this CHOOSE (unbounded, or over a tuple of names)", e.loc)
         slot = self.alloc()
         s = self.expr(e.set, env)
-        if _product_ordered(s):
-            raise unsupported("CHOOSE from a set of records [a : S]", e.loc)
         env2 = replace(env, locals={**env.locals, e.names[0]: SlotArg(slot, None)})
         return self.node(Op.CHOOSE, e.loc, (slot,), kids=(s, self.expr(e.body, env2)))
 
@@ -483,44 +541,44 @@ class Translator:
         return self.node(Op.TUPLE, e.loc, kids=tuple(self.expr(x, env) for x in e.elems))
 
     # ---------------------------------------------------------------- actions
-    def split(self, e: A.Expr, env: TEnv) -> Node:
-        """Next as `ActionCompiler.split`: each of TLC's actions ends in its own leaf."""
+    def split(self, e: A.Expr, env: TEnv, params: tuple[tuple[str, int], ...] = ()) -> Node:
+        """Next as `ActionCompiler.split`: each of TLC's actions ends in its own leaf,
+        whose parameters (the \\E variables and the operator arguments bound to slots
+        on the way, as `Leaf.params`) are recorded in `leaf_params`."""
         if isinstance(e, A.Or):
-            return self.node(Op.A_OR, e.loc, kids=tuple(self.split(i, env) for i in e.items))
+            return self.node(Op.A_OR, e.loc, kids=tuple(self.split(i, env, params) for i in e.items))
         if isinstance(e, A.Quant) and e.kind == "\\E":
-            return self.exists(e, env, lambda env2: self.split(e.body, env2))
+            names = [n for n, _ in self.names_of(e.bounds, e.loc)]
+            return self.exists(e, env, lambda env2: self.split(
+                e.body, env2, params + tuple((n, env2.locals[n].slot) for n in names)))
         if isinstance(e, A.Let):
             env2, slots = self.bind_let(e, env)
-            return self.node(Op.A_LET, e.loc, slots, kids=(self.split(e.body, env2),))
+            return self.node(Op.A_LET, e.loc, slots, kids=(self.split(e.body, env2, params),))
         if isinstance(e, (A.Name, A.Apply)) and e.name not in env.locals:
             sym = env.scope.lookup(e.name)
             if isinstance(sym, DefSym) and not sym.recursive and sym.defn.fn_bounds is None:
                 args = e.args if isinstance(e, A.Apply) else []
                 if sym.scope.instance_params or sym.scope.parameterised:
                     raise unsupported(f"the operator {sym.defn.name} of a parameterised INSTANCE", e.loc)
-                return self.inline(sym.defn, args, sym.scope, {}, env, e.loc, self.split)
+
+                def body(b: A.Expr, benv: TEnv) -> Node:
+                    bound = [(p.name, benv.locals[p.name]) for p in sym.defn.params]
+                    return self.split(b, benv, params + tuple((n, a.slot) for n, a in bound if isinstance(a, SlotArg)))
+                return self.inline(sym.defn, args, sym.scope, {}, env, e.loc, body)
         leaf = self.leaves
         self.leaves += 1
+        self.leaf_params.append(params)
         return self.action(e, env, self.node(Op.A_EMIT, e.loc, (leaf,)))
 
     def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
         pairs = self.names_of(e.bounds, e.loc)
-        sets = tuple(self.enumerated(s, env) for _, s in pairs)
+        sets = tuple(self.expr(s, env) for _, s in pairs)
         locals_ = dict(env.locals)
         slots = []
         for n, _ in pairs:
             slots.append(self.alloc())
             locals_[n] = SlotArg(slots[-1], None)
         return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(replace(env, locals=locals_)),))
-
-    def enumerated(self, e: A.Expr, env: TEnv) -> Node:
-        """A set whose elements the action enumerates, in TLC's order: the core's
-        sets are in TLC's sorted order, but the Python engine enumerates a record set
-        ``[a : S]`` (or a filter of one) in product order, so those are refused."""
-        n = self.expr(e, env)
-        if _product_ordered(n):
-            raise unsupported("enumerating a set of records [a : S] in an action", e.loc)
-        return n
 
     def action(self, e: A.Expr, env: TEnv, k: Node) -> Node:
         method = getattr(self, "a_" + type(e).__name__, None)
@@ -644,7 +702,7 @@ class Translator:
             return None
         if e.op == "=":
             return self.node(Op.A_ASSIGN, e.loc, (target,), kids=(self.expr(e.rhs, env),), k=k)
-        return self.node(Op.A_ASSIGN_IN, e.loc, (target,), kids=(self.enumerated(e.rhs, env), self.set_test(e.rhs, env, 0)),
+        return self.node(Op.A_ASSIGN_IN, e.loc, (target,), kids=(self.expr(e.rhs, env), self.set_test(e.rhs, env, 0)),
                          k=k)
 
     def target_var(self, lhs: A.Expr, env: TEnv, depth: int) -> int | None:
@@ -727,22 +785,6 @@ def _guard_chain(n: Node, k: Node) -> bool:
         n = n[5]
         if n is k:
             return True
-    return False
-
-
-def _product_ordered(n: Node) -> bool:
-    """Can the set `n` be one the Python engine enumerates in product order?"""
-    op, kids = n[0], n[4]
-    if op == Op.RECSET:
-        return True
-    if op == Op.SETFILTER:
-        return _product_ordered(kids[0])
-    if op in (Op.LET, Op.LETREF, Op.BIND):
-        return _product_ordered(kids[-1])
-    if op == Op.IF:
-        return _product_ordered(kids[1]) or _product_ordered(kids[2])
-    if op == Op.CASE:
-        return any(_product_ordered(k) for i, k in enumerate(kids) if i % 2 == 1 or i == len(kids) - 1)
     return False
 
 
