@@ -43,7 +43,7 @@ def native_graph(model: Model, progress: Callable[[str], None] | None = None) ->
     except UnsupportedError as e:
         return f"{e.loc}: {e.message}" if e.loc else e.message
     leaf_slots = []
-    for i, (leaf, native) in enumerate(zip(model.leaves, run.leaf_params)):
+    for leaf, native in zip(model.leaves, run.leaf_params):
         if [n for n, _ in leaf.params] != [n for n, _ in native]:
             return (f"{leaf.loc}: the parameters of action {leaf.name} differ between the engines "
                     f"({[n for n, _ in leaf.params]} and {[n for n, _ in native]})")

@@ -24,6 +24,9 @@ from ..model import Model
 from .ops import Op
 from .values import NOT_NATIVE, ValueBridge
 
+# Ops that iterate over a set: an operator call whose body has one is worth remembering.
+_ITERATING = frozenset((Op.FORALL, Op.EXISTS, Op.SETFILTER, Op.SETMAP, Op.CHOOSE, Op.FNLIT, Op.SELECTSEQ))
+
 Node = tuple
 
 _NATIVE_MODULES = {"Naturals", "Integers", "Sequences", "FiniteSets"}
@@ -98,6 +101,7 @@ class Translator:
         self.leaf_params: list[tuple[tuple[str, int], ...]] = []  # per leaf: (name, slot) as Leaf.params
         self._depth = 0
         self._free: dict[int, tuple[Node, frozenset[int]]] = {}
+        self._iterates: dict[int, tuple[Node, bool]] = {}
 
     # ---------------------------------------------------------------- nodes
     def node(self, op: Op, loc: Loc, ints: tuple = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
@@ -238,9 +242,24 @@ class Translator:
             op = Op.A_BIND
         else:
             # A body that reads nothing but its parameters is a function of their values:
-            # the core remembers them (constant-level helpers called once per state).
-            op = Op.BIND_MEMO if not (self.free_slots(body) - set(slots)) else Op.BIND
+            # the core remembers them (constant-level helpers called once per state) when
+            # it iterates over a set; for a cheap body the key costs more than the call
+            # (the flagship: 1.5x slower with every such call remembered).
+            pure = not (self.free_slots(body) - set(slots))
+            op = Op.BIND_MEMO if pure and self.iterates(body) else Op.BIND
         return self.node(op, loc, slots, kids=tuple(values) + (body,))
+
+    def iterates(self, n: Node) -> bool:
+        """Does the expression iterate over a set (a quantifier, set filter or map,
+        CHOOSE, function constructor or SelectSeq), itself or in a sub-expression?"""
+        got = self._iterates.get(id(n))
+        if got is not None:
+            return got[1]
+        op, kids, k = n[0], n[4], n[5]
+        r = op in _ITERATING or any(self.iterates(x) for x in kids if x is not None) or (
+            k is not None and self.iterates(k))
+        self._iterates[id(n)] = (n, r)  # the node kept alive: its id stays its own
+        return r
 
     def free_slots(self, n: Node) -> frozenset[int]:
         """The slots an expression reads but does not bind itself; -1 stands for the state."""
