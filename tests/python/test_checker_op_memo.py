@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from safestate.checker.explore import explore_states
 from safestate.checker.model import load_model
 from safestate.tla.compiler import Compiler
 from test_checker_fastpaths import _check
@@ -63,8 +64,6 @@ def test_memoised_operator_calls_equal_plain_calls(name: str, spec: str, tmp_pat
 def test_booleans_and_integers_are_told_apart_by_the_memo(tmp_path: Path) -> None:
     tla = _write(tmp_path, "Kinds", KINDS)
     model = load_model(str(tla))
-    from safestate.checker.explore import explore_states
-
     r = explore_states(model)
     assert (r.result, r.distinct_states) == ("success", 4), r.error
     # the memo was used, and Pick's 12 arguments (0..3, TRUE, FALSE, {TRUE}, {FALSE} and
@@ -75,8 +74,6 @@ def test_booleans_and_integers_are_told_apart_by_the_memo(tmp_path: Path) -> Non
 
 def test_an_evaluation_error_is_reported_not_remembered(tmp_path: Path) -> None:
     model = load_model(str(_write(tmp_path, "Errs", ERRORS)))
-    from safestate.checker.explore import explore_states
-
     r = explore_states(model)
     assert r.result == "error" and r.error is not None
     assert "CHOOSE" in r.error.message

@@ -74,11 +74,7 @@ def check_writable(out: str | None) -> None:
 def run(model: Model, core: ModuleType, graph: StateGraph, harness: Harness, opts: Options) -> ConformResult:
     start = time.monotonic()
     stepper = harness.stepper
-    cg = graph.as_cover_graph()
-    parent, _ = bfs_tree(cg)
-    plan = cover(cg, opts.max_len)
-    mat = Materializer(stepper, graph)
-    mat.set_tree(parent)
+    plan, mat, parent = _traces(harness, graph, opts)
     res = ConformResult(transitions_total=len(graph.src), traces=len(plan))
     covered = bytearray(len(graph.src))
     if opts.fast and not opts.out and harness.adapter.has_plan_replay():
@@ -158,11 +154,18 @@ def _digest(plan: list[Trace]) -> str:
 
 def plan_of(h: Harness, graph: StateGraph, opts: Options) -> replay_plan.ReplayPlan:
     """The compact replay plan of the whole conformance run (cached as `run` caches it)."""
+    plan, mat, _ = _traces(h, graph, opts)
+    return _cached_plan(h, graph, plan, mat, opts)
+
+
+def _traces(h: Harness, graph: StateGraph, opts: Options) -> tuple[list[Trace], Materializer, list[int]]:
+    """The trace cover of the graph, the materializer of its concrete states, and the BFS
+    tree's parent edges (computed once for both)."""
     cg = graph.as_cover_graph()
-    parent, _ = bfs_tree(cg)
+    tree = bfs_tree(cg)
     mat = Materializer(h.stepper, graph)
-    mat.set_tree(parent)
-    return _cached_plan(h, graph, cover(cg, opts.max_len), mat, opts)
+    mat.set_tree(tree[0])
+    return cover(cg, opts.max_len, tree=tree), mat, tree[0]
 
 
 def _account(cp: replay_plan.ReplayPlan, h: Harness, res: ConformResult, covered: bytearray,

@@ -86,8 +86,10 @@ def tree_path(g: Graph, parent: list[int], node: int) -> tuple[int, list[int]]:
     return node, path
 
 
-def cover(g: Graph, max_len: int = 1000, detour_nodes: int = 256) -> list[Trace]:
+def cover(g: Graph, max_len: int = 1000, detour_nodes: int = 256,
+          tree: tuple[list[int], list[int]] | None = None) -> list[Trace]:
     """Traces from initial nodes that take every edge at least once (deterministic).
+    `tree` is `bfs_tree(g)` when the caller has it already.
 
     The walk of steps 2-4 above runs in the binding `safestate._cover`
     (bindings/python/cover_module.cpp): its detours visit tens of millions of edges on
@@ -96,7 +98,7 @@ def cover(g: Graph, max_len: int = 1000, detour_nodes: int = 256) -> list[Trace]
         raise ValueError("max_len must be at least 1")
     from .. import _cover  # type: ignore[attr-defined]
 
-    parent, order = bfs_tree(g)
+    parent, order = tree if tree is not None else bfs_tree(g)
     starts, offsets, edges = _cover.cover(g.n, g.src, g.dst, parent, order, max_len, detour_nodes)
     return [Trace(s, edges[offsets[k]:offsets[k + 1]]) for k, s in enumerate(starts)]
 

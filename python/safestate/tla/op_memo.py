@@ -11,7 +11,9 @@ Only operators that iterate over a set (a quantifier, ``{x \\in S : P}``, ``{e :
 CHOOSE, a function constructor, an operator argument such as SelectSeq's LAMBDA, or
 a call of such an operator) are memoised: for the rest a lookup costs as much as the
 call.  The arguments must be pure too (evaluated once for the key, then again by the
-ordinary call on a miss).
+ordinary call on a miss).  Even so a table may not pay (a record argument that is new in
+every state, a cheap body): each operator measures its first TRIAL_CALLS calls and goes
+back to the plain call unless its hits save at least twice what its keys cost.
 
 Exactness: TRUE and 1 are equal Python values (tla/values.py), so the key carries the
 kind of every boolean and integer inside the arguments; a value of another kind (a
@@ -32,7 +34,7 @@ from .values import FnValue, ModelValue
 Code = Callable[[Any, Any, list], Any]
 
 # An operator's table is dropped (and the operator called plainly) when it reaches
-# MAX_ENTRIES, or when fewer than half of its first TRIAL_CALLS calls were hits.
+# MAX_ENTRIES, or when over its first TRIAL_CALLS calls it did not pay (OpMemo.wrap).
 MAX_ENTRIES = 200_000
 TRIAL_CALLS = 2_000
 
@@ -52,14 +54,14 @@ def _kinds(v: Any) -> Any:
         return 2
     if t is tuple:
         parts: Any = tuple(_kinds(x) for x in v)
-    elif t is frozenset:
+        return _MISS if _MISS in parts else parts
+    if t is frozenset:
         parts = frozenset(_kinds(x) for x in v)
-    elif t is FnValue:
-        parts = frozenset((_kinds(k), _kinds(x)) for k, x in v.d.items())
-        return _MISS if any(_MISS in p for p in parts) else parts
-    else:
-        return _MISS
-    return _MISS if _MISS in parts else parts
+        return _MISS if _MISS in parts else parts
+    if t is FnValue:
+        pairs = [(_kinds(k), _kinds(x)) for k, x in v.d.items()]
+        return _MISS if any(_MISS in p for p in pairs) else frozenset(pairs)
+    return _MISS
 
 
 class OpMemo:
