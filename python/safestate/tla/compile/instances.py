@@ -1,0 +1,64 @@
+"""Instance-prefixed references ``I!Op(args)``: the instance's scope with its parameters
+bound.  Separate because the action compiler reuses `prefixed` with its own body compiler.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from .. import ast as A
+from ..env import Code, Env
+from ..errors import TlaError
+from ..modules import DefSym, InstanceSym, Scope
+from .closures import _prefix
+
+
+class InstancesMixin:
+    """References through ``I!`` prefixes."""
+
+    def _instance_scope(self, e: A.Prefixed, env: Env) -> Scope:
+        scope = env.scope
+        for step in e.path:
+            sym = scope.lookup(step.name)
+            if not isinstance(sym, InstanceSym):
+                raise TlaError("semantic", f"{step.name} is not an instance (in {step.name}!...)", e.loc)
+            scope = sym.scope
+        return scope
+
+    def c_Prefixed(self, e: A.Prefixed, env: Env) -> Code:
+        return self.prefixed(e, env, self.expr)
+
+    def prefixed(self, e: A.Prefixed, env: Env, compile_body: Callable) -> Any:
+        scope = env.scope
+        bindings: dict[str, Any] = {}
+        pre: list = []
+        for step in e.path:
+            sym = scope.lookup(step.name)
+            if not isinstance(sym, InstanceSym):
+                raise TlaError("semantic", f"{step.name} is not an instance (in {step.name}!...)", e.loc)
+            params = sym.inst.params
+            self._arity(step.name, len(params), step.args, e.loc)
+            b, p = self.bind_params(params, step.args, env, e.loc)
+            bindings.update({n: env.locals[n] for n in sym.let_locals if n in env.locals})
+            bindings.update(b)
+            pre.extend(p)
+            scope = sym.scope
+        sym = scope.lookup(e.name)
+        if sym is None:
+            raise self._unknown(e.name, e.loc)
+        # Operator arguments are compiled in the caller's environment, by value.
+        arg_bindings, arg_pre = self._bind_args_by_value(e.args, env)
+        fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
+        inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed)
+        pre = pre + arg_pre
+        if isinstance(sym, DefSym) and compile_body != self.expr:
+            d = sym.defn
+            self._arity(d.name, len(d.params), fake, e.loc)
+            pb, pp = self.bind_params(d.params, fake, inner_env, e.loc)
+            inst = {p: inner_env.locals[p] for p in sym.scope.instance_params if p in inner_env.locals}
+            body = compile_body(d.body, Env(sym.scope, env.frame, {**inst, **arg_bindings, **pb}, env.init_mode, env.primed))
+            return pre + pp, body
+        code = self._symbol_ref(e.name, sym, fake, inner_env, e.loc)
+        if compile_body != self.expr:
+            return pre, code
+        return _prefix(pre, code)
