@@ -20,6 +20,7 @@ from typing import Union
 
 from . import ast as A
 from .errors import Loc, TlaError, UnsupportedError
+from .intern_order import tlc_intern_order  # noqa: F401  (its import path for checker/model.py)
 from .parser import parse_text
 from .stdlib import STANDARD_MODULES, UNSUPPORTED_MODULES, Builtin
 
@@ -96,127 +97,6 @@ class ModuleLoader:
     def files(self) -> list[str]:
         """The files of every module loaded so far (the root's included)."""
         return sorted({m.file for m in self.cache.values() if m.file})
-
-
-def tlc_intern_order(loader: ModuleLoader) -> list[str]:
-    """The words and string contents of the loaded modules in the order TLC interns
-    them (which is TLC's order of strings): first the words of every file in SANY's parse order (the root
-    file, then the first unresolved EXTENDS found from the root, else the first
-    unresolved INSTANCE: `SpecObj.findNextUnresolvedExtention/Instantiation`), then
-    the contents of the string literals of every file in semantic-analysis order
-    (dependencies first: `SpecObj.calculateDependencies`).  Call it after the root
-    scope is built, so that every user module is in `loader.cache`."""
-    from .stdlib_tokens import STANDARD_TOKENS
-
-    cache = loader.cache
-
-    def deps(name: str) -> tuple[list[str], list[str], list[str]]:
-        m = cache.get(name)
-        if m is not None:
-            insts: list[str] = []
-            for u in m.units:
-                if isinstance(u, A.InstanceDef) and u.module not in insts:
-                    insts.append(u.module)
-            return [n for n, _ in m.extends], insts, list(m.submodules)
-        if name in STANDARD_TOKENS:
-            ext, inst, _ = STANDARD_TOKENS[name]
-            return list(ext), list(inst), []
-        return [], [], []
-
-    def file_of(name: str) -> str:
-        m = cache.get(name)
-        return m.file if m is not None else "<standard>/" + name
-
-    resolved: dict[str, None] = {}  # in order of resolution
-
-    def resolve(name: str) -> None:
-        resolved[name] = None
-        m = cache.get(name)
-        if m is not None:
-            for sub in m.submodules:
-                resolve(sub)
-
-    root = loader.root.name
-    resolve(root)
-    parse_files = [file_of(root)]
-
-    def find_next(extension: bool) -> str | None:
-        visited: set[str] = set()
-
-        def body(name: str) -> str | None:
-            if name in visited:
-                return None
-            visited.add(name)
-            exts, insts, inners = deps(name)
-            for n in (exts if extension else insts):
-                if n not in resolved:
-                    return n
-            for n in exts:
-                r = body(n)
-                if r is not None:
-                    return r
-            for n in insts:
-                if n in resolved:
-                    r = body(n)
-                    if r is not None:
-                        return r
-            for n in inners:
-                r = body(n)
-                if r is not None:
-                    return r
-            return None
-        return body(root)
-
-    while True:
-        nxt = find_next(True) or find_next(False)
-        if nxt is None:
-            break
-        resolve(nxt)
-        if nxt in cache or nxt in STANDARD_TOKENS:
-            f = file_of(nxt)
-            if f not in parse_files:
-                parse_files.append(f)
-
-    by_file: dict[str, tuple[list[str], list[str]]] = {}
-    names_in_file: dict[str, list[str]] = {}
-    for name in resolved:
-        f = file_of(name)
-        names_in_file.setdefault(f, []).append(name)
-        m = cache.get(name)
-        if m is not None:
-            by_file.setdefault(f, (m.token_order, m.string_order))
-        elif name in STANDARD_TOKENS:
-            by_file.setdefault(f, (list(STANDARD_TOKENS[name][2]), []))
-
-    semantic: list[str] = []
-    visiting: set[str] = set()
-
-    def calc(f: str) -> None:
-        if f in visiting:
-            return
-        visiting.add(f)
-        ext_files: list[str] = []
-        inst_files: list[str] = []
-        for name in names_in_file.get(f, []):
-            exts, insts, _ = deps(name)
-            for n in exts:
-                if n in resolved and file_of(n) != f and file_of(n) not in ext_files:
-                    ext_files.append(file_of(n))
-            for n in insts:
-                if n in resolved and file_of(n) != f and file_of(n) not in inst_files:
-                    inst_files.append(file_of(n))
-        for g in ext_files + inst_files:
-            calc(g)
-        if f not in semantic:
-            semantic.append(f)
-    calc(parse_files[0])
-
-    out: list[str] = []
-    for f in parse_files:
-        out.extend(by_file.get(f, ([], []))[0])
-    for f in semantic:
-        out.extend(by_file.get(f, ([], []))[1])
-    return out
 
 
 # ----------------------------------------------------------------- symbols
