@@ -15,6 +15,10 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .grammar3 import Gen3
 
 INT, BOOL, STR, SET, SEQ, REC, FUN = "int", "bool", "str", "set", "seq", "rec", "fun"
 TYPES = [INT, BOOL, STR, SET, SEQ, REC, FUN]
@@ -254,12 +258,45 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     and \\E with two binders; grammar 3 the constructs listed in `grammar3.py`;
     grammar 4 is grammar 3 with the operands of SUBSET and \\X parenthesised;
     grammar 5 is grammar 4 with fewer constant predicates (`state_predicate`).
-    Specs of a lower grammar are unchanged by a higher one."""
-    from .grammar3 import PSET, RECURSIVE_SUM, TYPES3, Gen3
+    Specs of a lower grammar are unchanged by a higher one.
+
+    The pieces below draw from `rng` in the order of the spec's text; keep that order
+    (a spec of a given seed and index must not change)."""
+    from .grammar3 import Gen3
     rng = random.Random(f"{seed}:{index}")
     g = Gen3(rng, grammar) if grammar >= 3 else Gen(rng, grammar)
     g3 = g if isinstance(g, Gen3) else None
     name = f"G{seed}x{index}"
+    lines, cfg_extra = _module_head(g, g3, rng, name)
+    helpers = _action_helpers(g3, rng, lines)
+    _init(g, g3, rng, lines)
+    actions = []
+    action_forms: list[tuple[str, str | None]] = []  # (name, the range of its parameter)
+    for a in range(rng.randint(1, 4)):
+        aname = f"A{a}"
+        prange = _action(g, g3, rng, aname, helpers, lines)
+        actions.append(f"\\E p \\in {prange} : {aname}(p)" if prange else aname)
+        action_forms.append((aname, prange))
+    lines.append("Next ==")
+    lines += [f"    \\/ {a}" for a in actions]
+    invs = _invariants(g, rng, lines)
+    lines.append(f"Bound == {_state_bound(g)}")
+    head = ["INIT Init", "NEXT Next"]
+    if g3 is not None:
+        head, more = _grammar3_spec(g3, rng, lines, action_forms)
+        cfg_extra += more
+    lines.append("====")
+    cfg = head + [f"INVARIANT {i}" for i in invs] + ["CONSTRAINT Bound"] + cfg_extra
+    if rng.random() < 0.3:
+        cfg.append("CHECK_DEADLOCK FALSE")
+    features = tuple(sorted(g3.features)) if g3 is not None else ()
+    return GeneratedSpec(name, "\n".join(lines) + "\n", "\n".join(cfg) + "\n", features)
+
+
+def _module_head(g: Gen, g3: Gen3 | None, rng: random.Random, name: str) -> tuple[list[str], list[str]]:
+    """The variables (drawn here), the module's first lines and, for grammar 3, its
+    constants, symmetry and recursive operator; returns (lines, cfg statements)."""
+    from .grammar3 import PSET, RECURSIVE_SUM, TYPES3
     nvars = rng.randint(1, 3)
     for i in range(nvars):
         g.vars[f"v{i}"] = rng.choice(TYPES3 if g3 else TYPES)
@@ -280,7 +317,12 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
         if rng.random() < 0.3:
             lines += RECURSIVE_SUM
             g3.recursive = True
-    # Operators whose parameters get primed (the priming class of issue 14).
+    return lines, cfg_extra
+
+
+def _action_helpers(g3: Gen3 | None, rng: random.Random, lines: list[str]) -> list[str]:
+    """Operators whose parameters get primed (the priming class of issue 14); returns
+    the names of those defined."""
     helpers = []
     if rng.random() < 0.5:
         lines.append("Set(x, val) == x' = val")
@@ -294,6 +336,11 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     if g3 is not None and rng.random() < 0.4:
         lines.append("Bump(x) == x' = (x + 1) % 4")
         helpers.append("Bump")
+    return helpers
+
+
+def _init(g: Gen, g3: Gen3 | None, rng: random.Random, lines: list[str]) -> None:
+    """Init: one conjunct per variable, a disjunction of two values in grammar 3 now and then."""
     init = []
     for v, ty in g.vars.items():
         op, val = g.init_value(ty)
@@ -305,92 +352,95 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
         init.append(f"/\\ {v} {op} {val}")
     lines.append("Init ==")
     lines += ["    " + c for c in init]
-    actions = []
-    action_forms: list[tuple[str, str | None]] = []  # (name, the range of its parameter)
-    for a in range(rng.randint(1, 4)):
-        aname = f"A{a}"
-        param = None
-        if rng.random() < 0.4:
-            param = "p"
-            g.bound.append((param, INT))
-        body = [f"/\\ {g.e_bool(2)}"] if rng.random() < 0.8 else []
-        assigned = [v for v in vs if rng.random() < 0.7] or [vs[0]]
-        for v in vs:
-            ty = g.vars[v]
-            if v not in assigned:
-                body.append(f"/\\ {'Keep(' + v + ')' if 'Keep' in helpers and rng.random() < 0.5 else 'UNCHANGED ' + v}")
-                continue
-            k = rng.randint(0, 9)
-            if g3 is not None and ty == PSET and g3.symmetric:
-                w = g.name("w")
-                op = rng.choice(["\\cup", "\\"])
-                body.append(f"/\\ \\E {w} \\in Procs : {v}' = ({v} {op} {{{w}}})")
-            elif g3 is not None and ty == INT and "Bump" in helpers and k < 3:
-                body.append(f"/\\ Bump({v})")
-                g3.use("primed_parameter")
-            elif k == 0 and ty == INT:
-                body.append(f"/\\ {v}' \\in {{0, ({g.e_int(1)}) % {MOD}}}")
-            elif k == 1:
-                body.append(f"/\\ IF {g.e_bool(1)} THEN {v}' = {g.update(v, ty, 1)} ELSE {v}' = {g.update(v, ty, 1)}")
-            elif k == 2 and ty == INT:
-                w = g.name("x")
-                body.append(f"/\\ \\E {w} \\in {g.e_set(1)} : {v}' = {w} % {MOD}")
-            elif k == 3 and "Set" in helpers:
-                body.append(f"/\\ Set({v}, {g.update(v, ty, 2)})")
-            elif k == 4:
-                w = g.name("n")
-                body.append(f"/\\ LET {w} == {g.update(v, ty, 1)} IN {v}' = {w}")
-            elif k == 5:
-                w = g.name("n")
-                body.append(f"/\\ LET {w} == {v} IN {w}' = {g.update(v, ty, 1)}")
-            elif g.grammar >= 2 and k == 6:
-                body.append(f"/\\ ({v}' = {g.update(v, ty, 1)} \\/ {v}' = {g.update(v, ty, 1)})")
-            elif g.grammar >= 2 and k == 7 and ty == STR:
-                w = g.name("s")
-                body.append(f"/\\ \\E {w} \\in {{\"c\", \"a\", \"b\"}} : {v}' = {w}")
-            elif g.grammar >= 2 and k == 7 and ty == INT:
-                w, w2 = g.name("i"), g.name("j")
-                body.append(f"/\\ \\E {w} \\in 0..1, {w2} \\in {{0, 2}} : {v}' = ({w} + {w2}) % {MOD}")
-            else:
-                body.append(f"/\\ {v}' = {g.update(v, ty, 2)}")
-        if "Moved" in helpers and rng.random() < 0.3:
-            body.append(f"/\\ Moved({rng.choice(vs)})")
-        if rng.random() < 0.2:
-            body.append(f"/\\ {g.e_bool(1)}")
-        if g3 is not None and rng.random() < 0.25:
-            body.append(f"/\\ (IF {g.state_predicate()} THEN {g.state_predicate()} ELSE {g.state_predicate()})'")
-            g3.use("if_under_prime")
-        if param:
-            g.bound.pop()
-        lines.append(f"{aname}{'(' + param + ')' if param else ''} ==")
-        lines += ["    " + c for c in body]
-        prange = f"0..{rng.randint(1, 2)}" if param else None
-        actions.append(f"\\E p \\in {prange} : {aname}(p)" if param else aname)
-        action_forms.append((aname, prange))
-    lines.append("Next ==")
-    lines += [f"    \\/ {a}" for a in actions]
+
+
+def _action(g: Gen, g3: Gen3 | None, rng: random.Random, aname: str, helpers: list[str], lines: list[str]) -> str | None:
+    """Action `aname` (with an integer parameter p now and then): a guard, an update or
+    UNCHANGED per variable, and a few extra conjuncts.  Returns the range of its
+    parameter (None without one)."""
+    vs = list(g.vars)
+    param = None
+    if rng.random() < 0.4:
+        param = "p"
+        g.bound.append((param, INT))
+    body = [f"/\\ {g.e_bool(2)}"] if rng.random() < 0.8 else []
+    assigned = [v for v in vs if rng.random() < 0.7] or [vs[0]]
+    for v in vs:
+        if v not in assigned:
+            body.append(f"/\\ {'Keep(' + v + ')' if 'Keep' in helpers and rng.random() < 0.5 else 'UNCHANGED ' + v}")
+            continue
+        body.append(_assignment(g, g3, rng, v, helpers))
+    if "Moved" in helpers and rng.random() < 0.3:
+        body.append(f"/\\ Moved({rng.choice(vs)})")
+    if rng.random() < 0.2:
+        body.append(f"/\\ {g.e_bool(1)}")
+    if g3 is not None and rng.random() < 0.25:
+        body.append(f"/\\ (IF {g.state_predicate()} THEN {g.state_predicate()} ELSE {g.state_predicate()})'")
+        g3.use("if_under_prime")
+    if param:
+        g.bound.pop()
+    lines.append(f"{aname}{'(' + param + ')' if param else ''} ==")
+    lines += ["    " + c for c in body]
+    return f"0..{rng.randint(1, 2)}" if param else None
+
+
+def _assignment(g: Gen, g3: Gen3 | None, rng: random.Random, v: str, helpers: list[str]) -> str:
+    """The conjunct of an action that gives variable `v` its next value, in one of the
+    forms below (chosen by a draw of 0..9)."""
+    from .grammar3 import PSET
+    ty = g.vars[v]
+    k = rng.randint(0, 9)
+    if g3 is not None and ty == PSET and g3.symmetric:
+        w = g.name("w")
+        op = rng.choice(["\\cup", "\\"])
+        return f"/\\ \\E {w} \\in Procs : {v}' = ({v} {op} {{{w}}})"
+    if g3 is not None and ty == INT and "Bump" in helpers and k < 3:
+        g3.use("primed_parameter")
+        return f"/\\ Bump({v})"
+    if k == 0 and ty == INT:
+        return f"/\\ {v}' \\in {{0, ({g.e_int(1)}) % {MOD}}}"
+    if k == 1:
+        return f"/\\ IF {g.e_bool(1)} THEN {v}' = {g.update(v, ty, 1)} ELSE {v}' = {g.update(v, ty, 1)}"
+    if k == 2 and ty == INT:
+        w = g.name("x")
+        return f"/\\ \\E {w} \\in {g.e_set(1)} : {v}' = {w} % {MOD}"
+    if k == 3 and "Set" in helpers:
+        return f"/\\ Set({v}, {g.update(v, ty, 2)})"
+    if k == 4:
+        w = g.name("n")
+        return f"/\\ LET {w} == {g.update(v, ty, 1)} IN {v}' = {w}"
+    if k == 5:
+        w = g.name("n")
+        return f"/\\ LET {w} == {v} IN {w}' = {g.update(v, ty, 1)}"
+    if g.grammar >= 2 and k == 6:
+        return f"/\\ ({v}' = {g.update(v, ty, 1)} \\/ {v}' = {g.update(v, ty, 1)})"
+    if g.grammar >= 2 and k == 7 and ty == STR:
+        w = g.name("s")
+        return f"/\\ \\E {w} \\in {{\"c\", \"a\", \"b\"}} : {v}' = {w}"
+    if g.grammar >= 2 and k == 7 and ty == INT:
+        w, w2 = g.name("i"), g.name("j")
+        return f"/\\ \\E {w} \\in 0..1, {w2} \\in {{0, 2}} : {v}' = ({w} + {w2}) % {MOD}"
+    return f"/\\ {v}' = {g.update(v, ty, 2)}"
+
+
+def _invariants(g: Gen, rng: random.Random, lines: list[str]) -> list[str]:
+    """Zero to two invariants (state predicates that sometimes fail); returns their names."""
     invs = []
     for i in range(rng.randint(0, 2)):
         lines.append(f"Inv{i} == {g.state_predicate()}")
         invs.append(f"Inv{i}")
+    return invs
+
+
+def _state_bound(g: Gen) -> str:
+    """The CONSTRAINT's predicate: sequences and sets of ints kept small."""
     bound = []
     for v, ty in g.vars.items():
         if ty == SEQ:
             bound.append(f"Len({v}) <= 3")
         if ty == SET:
             bound.append(f"{v} \\subseteq 0..3")
-    conj = " /\\ ".join(bound) if bound else "TRUE"
-    lines.append(f"Bound == {conj}")
-    head = ["INIT Init", "NEXT Next"]
-    if g3 is not None:
-        head, more = _grammar3_spec(g3, rng, lines, action_forms)
-        cfg_extra += more
-    lines.append("====")
-    cfg = head + [f"INVARIANT {i}" for i in invs] + ["CONSTRAINT Bound"] + cfg_extra
-    if rng.random() < 0.3:
-        cfg.append("CHECK_DEADLOCK FALSE")
-    features = tuple(sorted(g3.features)) if g3 is not None else ()
-    return GeneratedSpec(name, "\n".join(lines) + "\n", "\n".join(cfg) + "\n", features)
+    return " /\\ ".join(bound) if bound else "TRUE"
 
 
 def _grammar3_spec(g, rng: random.Random, lines: list[str],
