@@ -3,7 +3,7 @@
 
 Runs the search under cProfile until `--max-states` distinct states (or the end),
 then groups the functions' own time (tottime) by the part of the checker they
-belong to: evaluation of the spec (tla/compiler.py, tla/stdlib.py), successor
+belong to: evaluation of the spec (tla/compiler.py, tla/compile/, tla/stdlib.py), successor
 construction (tla/actions.py), value hashing and equality (tla/values.py: the
 fingerprint of a state is Python's hash of the state tuple), the search loop and
 its seen-set/queue (checker/explore.py, dict and list builtins), and the rest.
@@ -34,8 +34,8 @@ CATEGORIES: list[tuple[str, tuple[str, ...]]] = [
     ("hashing/equality (tla/values.py __hash__/__eq__)", ("values.py:__hash__", "values.py:__eq__",
                                                           "values.py:__ne__", "built-in method builtins.hash")),
     ("successor construction (tla/actions.py)", ("actions.py:",)),
-    ("evaluation (tla/compiler.py, stdlib.py, values.py)", ("compiler.py:", "stdlib.py:", "values.py:",
-                                                           "constfold.py:", "specialise.py:")),
+    ("evaluation (tla/compiler.py, compile/, stdlib.py, values.py)", ("compiler.py:", "compile/", "stdlib.py:",
+                                                                     "values.py:", "constfold.py:", "specialise.py:")),
     ("seen-set + queue + counting (checker/explore.py)", ("explore.py:",)),
     ("dict/list/array builtins (seen-set lookups, queue appends)", ("method 'get' of 'dict'",
                                                                    "method 'append'")),
@@ -58,7 +58,8 @@ def categorise(stats: pstats.Stats) -> dict[str, float]:
     out: dict[str, float] = {label: 0.0 for label, _ in CATEGORIES}
     out["other"] = 0.0
     for (file, _line, func), (_cc, _nc, tottime, _ct, _callers) in stats.stats.items():  # type: ignore[attr-defined]
-        key = f"{os.path.basename(file)}:{func}"
+        # "folder/file.py:function": the folder tells tla/compile/'s family modules apart.
+        key = f"{os.path.basename(os.path.dirname(file))}/{os.path.basename(file)}:{func}"
         for label, tests in CATEGORIES:
             if any(t in key for t in tests):
                 out[label] += tottime
