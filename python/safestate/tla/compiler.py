@@ -25,6 +25,7 @@ from .compile.binders import BindersMixin, _assign, _comprehension, _enum_checke
 from .compile.calls import CallsMixin, CompiledDef
 from .compile.closures import EMPTY, Value, _guard, _prefix, check_bool, enum
 from .compile.conditionals import ConditionalsMixin
+from .compile.expansion import ExpansionMixin
 from .compile.functions import FunctionsMixin
 from .compile.instances import InstancesMixin
 from .compile.let import LetMixin
@@ -51,9 +52,9 @@ __all__ = ["Compiler", "CompiledDef", "EMPTY", "Info", "RecursiveFunction", "SEA
 _LITERALS = (A.Num, A.Str, A.Bool)
 
 
-class Compiler(AnalysisMixin, NamesMixin, CallsMixin, InstancesMixin, LetMixin, RecursiveFunctionsMixin,
-               BindersMixin, LogicMixin, ConditionalsMixin, OperatorsMixin, SetsMixin, FunctionsMixin,
-               PrimesMixin):
+class Compiler(AnalysisMixin, NamesMixin, CallsMixin, ExpansionMixin, InstancesMixin, LetMixin,
+               RecursiveFunctionsMixin, BindersMixin, LogicMixin, ConditionalsMixin, OperatorsMixin, SetsMixin,
+               FunctionsMixin, PrimesMixin):
     """Compiles expressions of one model (fixed constants) to closures."""
 
     # Constant folding, inlining and the specialised closures (constfold.py,

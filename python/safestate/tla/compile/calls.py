@@ -1,16 +1,15 @@
 """Operator calls: user definitions (compiled once, expanded at the call site, inlined or
 memoised), LET operators with RECURSIVE calls, LAMBDA and operator arguments, built-ins.
 Separate because it holds the hooks of the specialisations (`inline.py`, `op_memo.py`)
-and the rules on when an operator is expanded instead of called.
+and the rules on when an operator is expanded (`expansion.py`) instead of called.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any
 
 from .. import ast as A
-from ..fold_memo import EXPANSION_LIMIT
-from ..env import NOTSET, UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal, SlotLocal
+from ..env import NOTSET, UNSET, Code, Env, Frame, LetOpLocal, OpLocal, SlotLocal
 from ..errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from ..modules import BuiltinSym, DefSym
 from ..inline import can_inline, inline_call
@@ -53,29 +52,6 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 class CallsMixin:
     """Calls of user, LET, LAMBDA and built-in operators."""
 
-    def enter_expansion(self, name: str, loc: Loc) -> None:
-        """One level deeper into expanded operator bodies (the caller decrements
-        `_inline_depth` when done); an expansion this deep is a recursion."""
-        self._inline_depth += 1
-        if self._inline_depth > EXPANSION_LIMIT:
-            raise UnsupportedError(f"recursive action-level operator {name}", loc)
-        if self._inline_depth > self.fold_memo.depth_peak:
-            self.fold_memo.depth_peak = self._inline_depth
-
-    def inline_let_op(self, name: str, local: LetOpLocal, args: list[A.Expr], env: Env, loc: Loc,
-                      compile_body: Callable[[A.Expr, Env], Any]) -> Any:
-        """Expand a LET operator at its call site (under a prime, or in an action)."""
-        d = local.defn
-        self._arity(name, len(d.params), args, loc)
-        self.enter_expansion(name, loc)
-        try:
-            bindings, pre = self.bind_params(d.params, args, env, loc)
-            body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings},
-                           env.init_mode, env.primed)
-            return pre, compile_body(d.body, body_env)
-        finally:
-            self._inline_depth -= 1
-
     def _arity(self, name: str, arity: int, args: list[A.Expr], loc: Loc) -> None:
         if len(args) != arity:
             raise TlaError("semantic", f"The operator {name} requires {arity} arguments, but "
@@ -97,28 +73,6 @@ class CallsMixin:
         fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(args)]
         code = self.reference(name, fake, op_env.bind_all(bindings), loc)
         return _prefix(pre, code)
-
-    def _bind_args_by_value(self, args: list[A.Expr], env: Env) -> tuple[dict, list]:
-        bindings: dict[str, Any] = {}
-        pre: list[tuple[int, Code]] = []
-        for i, a in enumerate(args):
-            slot = env.frame.alloc()
-            pre.append((slot, self.expr(a, env)))
-            bindings[f"$arg{i}"] = SlotLocal(slot, self.state_source(a, env))
-        return bindings, pre
-
-    def state_source(self, a: A.Expr, env: Env) -> tuple[A.Expr, Env] | None:
-        """`a` and its environment if `a` reads state (see `SlotLocal.source`)."""
-        if env.primed or env.init_mode:
-            return None  # already evaluated in the state that a prime would select
-        return (a, env) if self._reads_state(a, env) else None
-
-    def _reads_state(self, a: A.Expr, env: Env) -> bool:
-        if self.info(a, env).vars:
-            return True
-        # A name bound to a state-reading argument reads state too.
-        locs = [env.locals.get(n) for n in all_names(a)]
-        return any(isinstance(l, (SlotLocal, LazyLocal)) and l.source is not None for l in locs)
 
     def _inline_lambda(self, lam: A.Lambda, args: list[A.Expr], lam_env: Env, env: Env, loc: Loc) -> Code:
         self._arity("LAMBDA", len(lam.params), args, loc)
@@ -239,43 +193,6 @@ class CallsMixin:
             holder.size = frame.size
             holder.holder_only = False
         return sym.compiled  # type: ignore[return-value]
-
-    def inline_def(self, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc,
-                   compile_body: Callable[[A.Expr, Env], Any]) -> Any:
-        """Expand an operator at its call site (action-level operators, Init, instances)."""
-        d = sym.defn
-        self._arity(d.name, len(d.params), args, loc)
-        self.enter_expansion(d.name, loc)
-        try:
-            bindings, pre = self.bind_params(d.params, args, env, loc)
-            inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
-            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed)
-            if d.fn_bounds is not None:
-                body = compile_body(A.FnLit(d.loc, d.fn_bounds, d.body), body_env)
-            else:
-                body = compile_body(d.body, body_env)
-        finally:
-            self._inline_depth -= 1
-        return pre, body
-
-    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc) -> tuple[dict, list]:
-        """Bind operator parameters: by value into fresh slots (remembering an argument
-        that reads state, which a prime in the body primes), or by name for
-        action-level arguments (which the body must see unevaluated)."""
-        bindings: dict[str, Any] = {}
-        pre: list[tuple[int, Code]] = []
-        for p, a in zip(params, args):
-            if p.arity:
-                slot = env.frame.alloc()
-                pre.append((slot, self._arg(a, p.arity, env, loc)))
-                bindings[p.name] = OpLocal(slot, p.arity)
-            elif self.info(a, env).action or env.init_mode:
-                bindings[p.name] = ByNameLocal(a, env)
-            else:
-                slot = env.frame.alloc()
-                pre.append((slot, self.expr(a, env)))
-                bindings[p.name] = SlotLocal(slot, self.state_source(a, env))
-        return bindings, pre
 
     def _arg(self, a: A.Expr, arity: int, env: Env, loc: Loc) -> Code:
         """Compile an argument; operator arguments become Python callables."""
