@@ -52,11 +52,11 @@ class Materializer:
         self.parent = parent
 
     def _check(self, state: tuple, node: int) -> None:
-        m = self.stepper.model
+        key = self.stepper.key
         want = self._keys.get(node)
         if want is None:
-            want = self._keys[node] = m.key(self.g.states[node])
-        if m.key(state) != want:
+            want = self._keys[node] = key(self.g.states[node])
+        if key(state) != want:
             raise GraphMismatch(f"the successor is not the graph's node {node}")
 
     def trace(self, t: Trace) -> ConcreteTrace:
