@@ -1304,7 +1304,8 @@ public:
     // ------------------------------------------------------------ one step from a given state
     // The model side of conformance (python/safestate/conform/native_step.py): an action
     // run from a given state lists its successors (action leaf, the leaf's parameters as
-    // one interned tuple, the state), an expression evaluated in a given state, with
+    // one interned tuple, the state, its VIEW or 0xFFFFFFFF without one), an expression
+    // (or several) evaluated in a given state, with
     // `binds` (slot, value id) set first.  An evaluation error raises StepError (the
     // caller evaluates again in Python, which reports it exactly).
     py::list step(py::handle action, const std::vector<uint32_t>& state,
@@ -1334,6 +1335,20 @@ public:
         } catch (const EvalFailure& e) {
             throw StepError(e.message);
         }
+    }
+    // Several expressions in one state (an adapter's projection): one call, one conversion.
+    std::vector<uint32_t> evaluate_all(py::list exprs, const std::vector<uint32_t>& state,
+                                       const std::vector<std::pair<int64_t, uint32_t>>& binds) {
+        std::vector<uint32_t> out;
+        out.reserve(exprs.size());
+        prepare(py::none(), state, binds);
+        Ctx c{state.data(), nullptr, nullptr};
+        try {
+            for (auto x : exprs) out.push_back(eval(build(x), c));
+        } catch (const EvalFailure& e) {
+            throw StepError(e.message);
+        }
+        return out;
     }
     struct StepError : std::runtime_error {
         using std::runtime_error::runtime_error;
@@ -1368,9 +1383,12 @@ private:
         buf_.clear();
         if (lf >= 0 && size_t(lf) < leaf_params.size())
             for (int64_t s : leaf_params[size_t(lf)]) buf_.push_back(slots[size_t(s)]);
+        uint32_t params = st.mk_seq(buf_);
         py::tuple st_ids{size_t(nvars)};
         for (int i = 0; i < nvars; ++i) st_ids[size_t(i)] = py::int_(c.t[i]);
-        collected_.append(py::make_tuple(lf, st.mk_seq(buf_), st_ids));
+        Ctx sc{c.t, nullptr, nullptr};
+        uint32_t key = view ? eval(view, sc) : kUnset;  // the successor's VIEW, for the caller's check
+        collected_.append(py::make_tuple(lf, params, st_ids, key));
     }
     bool collect_ = false;
     py::list collected_;
@@ -1436,6 +1454,7 @@ PYBIND11_MODULE(_tla_native, m) {
         })
         .def("step", &Engine::step)
         .def("evaluate", &Engine::evaluate)
+        .def("evaluate_all", &Engine::evaluate_all)
         .def("set_view", [](Engine& e, py::handle v) { e.view = e.build(v); })
         .def("run", &Engine::run, py::call_guard<py::gil_scoped_release>())
         .def_readwrite("workers", &Engine::workers)

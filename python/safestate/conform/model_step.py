@@ -39,6 +39,7 @@ class ModelStepper:
         self._applied: dict[str, Callable[[tuple, Value], Value]] = {}
         self.calls = 0
         self._actions: dict[tuple[str, tuple[str, ...]], Callable[[tuple, list], list[tuple]] | None] = {}
+        self._edge_calls: dict[int, tuple[Event, Callable[[tuple, list], list[tuple]] | None, list]] = {}
         forced = os.environ.get(STEP_ENGINE_ENV) == "python"
         native = f"${STEP_ENGINE_ENV}=python" if forced else native_stepper(model)
         self.native: NativeStepper | None = None if isinstance(native, str) else native
@@ -72,18 +73,30 @@ class ModelStepper:
         action is evaluated (its parameters bound to the edge's values), not the
         whole next-state relation.  Exactly one successor is still required."""
         self.calls += 1
+        hit = self._edge_calls.get(id(event))
+        if hit is None or hit[0] is not event:
+            hit = self._edge_call(event)
+        run, args = hit[1], hit[2]
+        if run is None:
+            return self.successor(state, event)
+        found = run(state, args)
+        if len(found) != 1:
+            raise ModelStepError(f"action {event} has {len(found)} successors in this state")
+        return found[0]
+
+    def _edge_call(self, event: Event) -> tuple[Event, Callable[[tuple, list], list[tuple]] | None, list]:
+        """(event, its action compiled, its arguments in call order), kept per event object
+        (a graph's events are shared objects: a trace step finds its call by identity)."""
         names = tuple(k for k, _ in event.params)
         key = (event.action, names)
         if key not in self._actions:
             self._actions[key] = self._compile_action(event.action, names)
-        run = self._actions[key]
-        if run is None:
-            return self.successor(state, event)
         values = dict(event.params)
-        found = run(state, [values[n] for n in self._call_order(event.action, names)])
-        if len(found) != 1:
-            raise ModelStepError(f"action {event} has {len(found)} successors in this state")
-        return found[0]
+        hit = (event, self._actions[key], [values[n] for n in self._call_order(event.action, names)])
+        if len(self._edge_calls) > 100_000:
+            self._edge_calls.clear()  # probe events are made afresh: do not keep them all
+        self._edge_calls[id(event)] = hit
+        return hit
 
     def _parse(self, text: str) -> A.Expr:
         mod = parse_text(f"---- MODULE __Conform ----\n__E == {text}\n====", "<conform>")[0]
@@ -143,6 +156,20 @@ class ModelStepper:
             body = A.Name(self.model.module_loc(), name)
             ev = self.model.compiler.evaluator(body, self.model.scope)
             fn = self._defs[name] = self._native_first(name, body, (), lambda s, args: ev(s, None))
+        return fn
+
+    def definitions(self, names: tuple[str, ...]) -> Callable[[tuple], list[Value]]:
+        """f(state) -> the values of the zero-argument definitions `names` (in one call
+        to the core when it translates them all)."""
+        each = [self.definition(n) for n in names]
+        native = self.native
+        compiled = [native.expression(n, A.Name(self.model.module_loc(), n), ()) for n in names] if native else []
+        if native is None or not names or any(c is None for c in compiled):
+            return lambda state: [f(state) for f in each]
+
+        def fn(state: tuple) -> list[Value]:
+            got = native.evaluate_all(compiled, state)  # type: ignore[arg-type]
+            return got if got is not None else [f(state) for f in each]
         return fn
 
     def applied(self, op: str) -> Callable[[tuple, Value], Value]:

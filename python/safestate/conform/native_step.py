@@ -27,6 +27,7 @@ from .native_events import EventCache, leaf_slots
 
 # Identity caches are cleared past this many entries (probe events are made afresh).
 _CACHE_LIMIT = 200_000
+_NO_VIEW = 0xFFFFFFFF  # the core's "no VIEW" in a step's successors
 
 
 class NativeStepper:
@@ -37,6 +38,8 @@ class NativeStepper:
         self.engine = run.engine
         self.engine.leaf_params = slots
         self.engine.set_slots(run.nslots)
+        if run.view is not None:
+            self.engine.set_view(run.view)  # each step's successors come with their VIEW
         self.bridge = run.bridge
         self.tr = run.translator
         self.events = EventCache(model, self.bridge)
@@ -48,6 +51,7 @@ class NativeStepper:
         self._states: dict[tuple[int, ...], tuple] = {}           # ids -> the Python state
         self._values: dict[int, tuple[Value, int]] = {}           # id(value) -> (value, id)
         self._nodes: dict[Any, tuple | None] = {}                 # translated actions / operators
+        self._views: dict[tuple[int, ...], int] = {}              # ids -> VIEW id (from the core's steps)
 
     # ------------------------------------------------------------ values
     def ids(self, state: tuple) -> tuple[int, ...] | None:
@@ -128,7 +132,12 @@ class NativeStepper:
         except self.error:
             return self._fallback()
         self.calls += 1
-        return [(self.events.event(leaf, params), self.state(st)) for leaf, params, st in out]
+        return [(self.events.event(leaf, params), self._successor(st, view)) for leaf, params, st, view in out]
+
+    def _successor(self, ids: tuple[int, ...], view: int) -> tuple:
+        if view != _NO_VIEW:
+            self._views[ids] = view
+        return self.state(ids)
 
     def run_action(self, compiled: tuple, state: tuple, values: list[Value]) -> list[tuple] | None:
         """The successors of `state` under an action from `action()`, its names bound to `values`."""
@@ -141,7 +150,7 @@ class NativeStepper:
         except self.error:
             return self._fallback()
         self.calls += 1
-        return [self.state(st) for _, _, st in out]
+        return [self._successor(st, view) for _, _, st, view in out]
 
     def evaluate(self, compiled: tuple, state: tuple, values: list[Value]) -> tuple[Value] | None:
         """(value,) of an expression from `expression()` in `state`, or None."""
@@ -156,10 +165,27 @@ class NativeStepper:
         self.calls += 1
         return (self.bridge.to_python(vid),)
 
+    def evaluate_all(self, compiled: list[tuple], state: tuple) -> list[Value] | None:
+        """Several zero-argument expressions from `expression()` in `state`, in one call."""
+        ids = self.ids(state)
+        if ids is None:
+            return self._fallback()
+        try:
+            vids = self.engine.evaluate_all([c[0] for c in compiled], ids, [])
+        except self.error:
+            return self._fallback()
+        self.calls += 1
+        return list(map(self.bridge.to_python, vids))
+
     def view(self, state: tuple) -> tuple[Value] | None:
-        """(the model's VIEW of `state`,) or None (no VIEW in the core, or an error)."""
+        """(the model's VIEW of `state`,) or None (no VIEW in the core, or an error); a
+        successor's VIEW comes with the step that made it."""
         if self.run.view is None:
             return None
+        ids = self.ids(state)
+        vid = self._views.get(ids) if ids is not None else None
+        if vid is not None:
+            return (self.bridge.to_python(vid),)
         return self.evaluate((self.run.view, []), state, [])
 
     def _binds(self, state: tuple, slots: list[int], values: list[Value]) -> tuple | None:
