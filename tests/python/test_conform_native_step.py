@@ -181,3 +181,16 @@ def test_plan_key_changes_when_the_native_core_changes(state_graph, monkeypatch,
     core.write_bytes(graph_mod.NATIVE_CORE_SOURCE.read_bytes() + b"// changed\n")
     monkeypatch.setattr(graph_mod, "NATIVE_CORE_SOURCE", core)
     assert replay_plan.plan_key(h.adapter, graph, "") != before
+
+
+def test_value_ids_computed_in_python_are_the_cores():
+    """Booleans and integers are tagged ids the bridge computes itself, strings are looked
+    up once: the same ids the core's own constructors give."""
+    from safestate import _tla_native
+    from safestate.checker.native.values import ValueBridge
+    engine = _tla_native.Engine()
+    bridge = ValueBridge(engine)
+    for v in (0, 1, -1, 7, (1 << 30) - 1, -(1 << 30)):
+        assert bridge.to_native(v, None) == engine.mk_int(v)
+    assert [bridge.to_native(b, None) for b in (False, True)] == [engine.mk_bool(False), engine.mk_bool(True)]
+    assert bridge.to_native("AUTO", None) == bridge.to_native("AUTO", None) == engine.mk_str("AUTO", 0)
