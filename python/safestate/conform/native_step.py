@@ -141,29 +141,27 @@ class NativeStepper:
 
     def run_action(self, compiled: tuple, state: tuple, values: list[Value]) -> list[tuple] | None:
         """The successors of `state` under an action from `action()`, its names bound to `values`."""
-        node, slots = compiled
-        binds = self._binds(state, slots, values)
-        if binds is None:
-            return self._fallback()
-        try:
-            out = self.engine.step(node, binds[0], binds[1])
-        except self.error:
-            return self._fallback()
-        self.calls += 1
-        return [self._successor(st, view) for _, _, st, view in out]
+        out = self._call(self.engine.step, compiled, state, values)
+        return None if out is None else [self._successor(st, view) for _, _, st, view in out]
 
     def evaluate(self, compiled: tuple, state: tuple, values: list[Value]) -> tuple[Value] | None:
         """(value,) of an expression from `expression()` in `state`, or None."""
+        vid = self._call(self.engine.evaluate, compiled, state, values)
+        return None if vid is None else (self.bridge.to_python(vid),)
+
+    def _call(self, method: Any, compiled: tuple, state: tuple, values: list[Value]) -> Any:
+        """The core's `method` (step / evaluate) on a tree in `state` with its names bound
+        to `values`; None (counted as a fallback) when a value or the evaluation fails."""
         node, slots = compiled
         binds = self._binds(state, slots, values)
         if binds is None:
             return self._fallback()
         try:
-            vid = self.engine.evaluate(node, binds[0], binds[1])
+            out = method(node, binds[0], binds[1])
         except self.error:
             return self._fallback()
         self.calls += 1
-        return (self.bridge.to_python(vid),)
+        return out
 
     def evaluate_all(self, compiled: list[tuple], state: tuple) -> list[Value] | None:
         """Several zero-argument expressions from `expression()` in `state`, in one call."""
