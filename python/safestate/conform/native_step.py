@@ -32,7 +32,7 @@ _NO_VIEW = 0xFFFFFFFF  # the core's "no VIEW" in a step's successors
 
 class NativeStepper:
     def __init__(self, model: Model, run: Any, slots: list[list[int]]) -> None:
-        from .. import _tla_native
+        from .. import _tla_native  # type: ignore[attr-defined]
         self.model = model
         self.run = run
         self.engine = run.engine
@@ -195,7 +195,7 @@ class NativeStepper:
         except UnsupportedError:
             return None
 
-    def _fallback(self) -> None:
+    def _fallback(self) -> Any:
         self.fallbacks += 1
         return None
 
