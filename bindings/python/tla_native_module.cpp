@@ -1315,13 +1315,15 @@ public:
         Ctx c{state.data(), t.data(), nullptr};
         collected_ = py::list();
         collect_ = true;
+        struct Done {  // however exec ends, the engine's emits go to the search again
+            bool& flag;
+            ~Done() { flag = false; }
+        } done{collect_};
         try {
             exec(n, c);
         } catch (const EvalFailure& e) {
-            collect_ = false;
             throw StepError(e.message);
         }
-        collect_ = false;
         py::list out = collected_;
         collected_ = py::list();
         return out;
