@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import CORPUS, ERRORS, REPO, load_expected, run_safestate
+from conftest import CORPUS, ERRORS, REPO, run_safestate
 from safestate.checker.explore import CheckResult, explore_states
 from safestate.checker.model import load_model
 from safestate.checker.native.search import explore_native, native_unsupported
@@ -169,15 +169,3 @@ def test_native_engine_cli_reports_what_the_python_engine_reports() -> None:
     assert native.returncode == python.returncode == 12
     strip = lambda out: {k: v for k, v in json.loads(out).items() if k != "seconds"}  # noqa: E731
     assert strip(native.stdout) == strip(python.stdout)
-
-
-@pytest.mark.parametrize("name", ["RuntimeSupervisor"])
-def test_native_engine_gives_tlcs_counts_on_the_registered_models(name: str) -> None:
-    # TLC's figures (models/expected.json); the Python engine's run of these is covered by
-    # test_models.py and too long to repeat here.  The flagship (about 10 CPU s natively)
-    # is checked the same way by scripts/main.sh, outside the test suite's time budget.
-    want = load_expected(MODELS)[name]
-    native, error = explore_native(load_model(str(MODELS / f"{name}.tla")))
-    assert native is not None, error
-    got = (native.result, native.distinct_states, native.states_generated, native.depth)
-    assert got == (want["result"], want["distinct_states"], want["states_generated"], want["depth"])
