@@ -1322,10 +1322,10 @@ public:
         try {
             exec(n, c);
         } catch (const EvalFailure& e) {
+            collected_ = py::object();
             throw StepError(e.message);
         }
-        py::list out = collected_;
-        collected_ = py::list();
+        py::list out = py::reinterpret_steal<py::list>(collected_.release());
         return out;
     }
     uint32_t evaluate(py::handle expr, const std::vector<uint32_t>& state,
@@ -1390,10 +1390,13 @@ private:
         for (int i = 0; i < nvars; ++i) st_ids[size_t(i)] = py::int_(c.t[i]);
         Ctx sc{c.t, nullptr, nullptr};
         uint32_t key = view ? eval(view, sc) : kUnset;  // the successor's VIEW, for the caller's check
-        collected_.append(py::make_tuple(lf, params, st_ids, key));
+        py::tuple item = py::make_tuple(lf, params, st_ids, key);
+        if (PyList_Append(collected_.ptr(), item.ptr()) != 0) throw py::error_already_set();
     }
     bool collect_ = false;
-    py::list collected_;
+    // Null outside `step` (which holds the GIL): a worker engine is made and destroyed
+    // without the GIL, so no member may create or free a Python object.
+    py::object collected_;
     std::vector<uint32_t> buf_;
     std::vector<py::object> keep_;
     Fresh* fresh_ = nullptr;  // set in a worker during a level
