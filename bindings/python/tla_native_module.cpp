@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <time.h>
@@ -761,7 +762,8 @@ public:
     void exec(Node* n, Ctx& c) {
         switch (n->op) {
             case A_EMIT:
-                if (fresh_) offer(c, int(n->ints[0]));
+                if (collect_) collect(c, int(n->ints[0]), n->loc);
+                else if (fresh_) offer(c, int(n->ints[0]));
                 else on_emit(c, int(n->ints[0]));
                 return;
             case A_FALSE: return;
@@ -1299,6 +1301,61 @@ public:
         std::vector<uint32_t> out(arena.begin() + i * size_t(nvars), arena.begin() + (i + 1) * size_t(nvars));
         return py::cast(out);
     }
+    // ------------------------------------------------------------ one step from a given state
+    // The model side of conformance (python/safestate/conform/native_step.py): an action
+    // run from a given state lists its successors (action leaf, the leaf's parameters as
+    // one interned tuple, the state, its VIEW or 0xFFFFFFFF without one), an expression
+    // (or several) evaluated in a given state, with
+    // `binds` (slot, value id) set first.  An evaluation error raises StepError (the
+    // caller evaluates again in Python, which reports it exactly).
+    py::list step(py::handle action, const std::vector<uint32_t>& state,
+                  const std::vector<std::pair<int64_t, uint32_t>>& binds) {
+        Node* n = prepare(action, state, binds);
+        std::vector<uint32_t> t(size_t(nvars), kUnset);
+        Ctx c{state.data(), t.data(), nullptr};
+        collected_ = py::list();
+        collect_ = true;
+        struct Done {  // however exec ends, the engine's emits go to the search again
+            bool& flag;
+            ~Done() { flag = false; }
+        } done{collect_};
+        try {
+            exec(n, c);
+        } catch (const EvalFailure& e) {
+            collected_ = py::object();
+            throw StepError(e.message);
+        }
+        py::list out = py::reinterpret_steal<py::list>(collected_.release());
+        return out;
+    }
+    uint32_t evaluate(py::handle expr, const std::vector<uint32_t>& state,
+                      const std::vector<std::pair<int64_t, uint32_t>>& binds) {
+        Node* n = prepare(expr, state, binds);
+        Ctx c{state.data(), nullptr, nullptr};
+        try {
+            return eval(n, c);
+        } catch (const EvalFailure& e) {
+            throw StepError(e.message);
+        }
+    }
+    // Several expressions in one state (an adapter's projection): one call, one conversion.
+    std::vector<uint32_t> evaluate_all(py::list exprs, const std::vector<uint32_t>& state,
+                                       const std::vector<std::pair<int64_t, uint32_t>>& binds) {
+        std::vector<uint32_t> out;
+        out.reserve(exprs.size());
+        prepare(py::none(), state, binds);
+        Ctx c{state.data(), nullptr, nullptr};
+        try {
+            for (auto x : exprs) out.push_back(eval(build(x), c));
+        } catch (const EvalFailure& e) {
+            throw StepError(e.message);
+        }
+        return out;
+    }
+    struct StepError : std::runtime_error {
+        using std::runtime_error::runtime_error;
+    };
+
     py::tuple describe(uint32_t id) const {
         Kind k = st.kind(id);
         if (k == K_BOOL) return py::make_tuple(int(k), id == kTrue);
@@ -1309,6 +1366,37 @@ public:
     }
 
 private:
+    Node* prepare(py::handle node, const std::vector<uint32_t>& state,
+                  const std::vector<std::pair<int64_t, uint32_t>>& binds) {
+        if (state.size() != size_t(nvars)) throw std::invalid_argument("a state of the wrong length");
+        Node* n = build(node);
+        for (auto& b : binds) {
+            if (b.first < 0) throw std::invalid_argument("a negative slot");
+            if (size_t(b.first) >= slots.size()) slots.resize(size_t(b.first) + 1, kUnset);
+            slots[size_t(b.first)] = b.second;
+        }
+        return n;
+    }
+    // A successor met while `step` runs an action: every variable must be assigned
+    // (as Model.check_complete requires).
+    void collect(Ctx& c, int lf, int loc) {
+        for (int i = 0; i < nvars; ++i)
+            if (c.t[i] == kUnset) fail("successor state is not completely specified", loc);
+        buf_.clear();
+        if (lf >= 0 && size_t(lf) < leaf_params.size())
+            for (int64_t s : leaf_params[size_t(lf)]) buf_.push_back(slots[size_t(s)]);
+        uint32_t params = st.mk_seq(buf_);
+        py::tuple st_ids{size_t(nvars)};
+        for (int i = 0; i < nvars; ++i) st_ids[size_t(i)] = py::int_(c.t[i]);
+        Ctx sc{c.t, nullptr, nullptr};
+        uint32_t key = view ? eval(view, sc) : kUnset;  // the successor's VIEW, for the caller's check
+        py::tuple item = py::make_tuple(lf, params, st_ids, key);
+        if (PyList_Append(collected_.ptr(), item.ptr()) != 0) throw py::error_already_set();
+    }
+    bool collect_ = false;
+    // Null outside `step` (which holds the GIL): a worker engine is made and destroyed
+    // without the GIL, so no member may create or free a Python object.
+    py::object collected_;
     std::vector<uint32_t> buf_;
     std::vector<py::object> keep_;
     Fresh* fresh_ = nullptr;  // set in a worker during a level
@@ -1339,6 +1427,8 @@ PYBIND11_MODULE(_tla_native, m) {
     m.attr("OP_A_BIND") = int(A_BIND);
     m.attr("OP_SELECTSEQ") = int(SELECTSEQ);
     m.attr("OP_BIND_MEMO") = int(BIND_MEMO);
+    // An evaluation error of Engine.step / Engine.evaluate (the Python evaluator reports it).
+    py::register_exception<Engine::StepError>(m, "StepError");
     py::class_<Engine>(m, "Engine")
         .def(py::init<>())
         .def_readwrite("nvars", &Engine::nvars)
@@ -1367,6 +1457,9 @@ PYBIND11_MODULE(_tla_native, m) {
             e.max_memory_mb = max_mb;
             e.progress = progress;
         })
+        .def("step", &Engine::step)
+        .def("evaluate", &Engine::evaluate)
+        .def("evaluate_all", &Engine::evaluate_all)
         .def("set_view", [](Engine& e, py::handle v) { e.view = e.build(v); })
         .def("run", &Engine::run, py::call_guard<py::gil_scoped_release>())
         .def_readwrite("workers", &Engine::workers)

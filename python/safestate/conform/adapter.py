@@ -99,9 +99,9 @@ class Adapter:
         self._check_variables(stepper.model.variables)
         names = list(stepper.model.variables)
         self.index = {n: names.index(n) for n in names}
-        self._ops = [(k, stepper.definition(k)) for k in self.observed_operators]
         for op in self._ops_missing():
             raise AdapterError(f"the model has no operator {op} (adapter {type(self).__name__})")
+        self._ops = stepper.definitions(self.observed_operators)
 
     def _ops_missing(self) -> list[str]:
         ops = list(self.observed_operators) + ([self.rows_operator] if self.rows_operator else [])
@@ -132,8 +132,8 @@ class Adapter:
             rec = state[self.index[var]].d  # type: ignore[union-attr]
             for key, field in fields:
                 out[key] = plain(rec[field])
-        for key, fn in self._ops:
-            out[key] = plain(fn(state))
+        for key, v in zip(self.observed_operators, self._ops(state)):
+            out[key] = plain(v)
         return out
 
     def model_rows(self, state: tuple, event: Event) -> frozenset[str] | None:

@@ -92,6 +92,7 @@ def _run(args: argparse.Namespace) -> int:
     conformance.check_writable(args.out)
     model = load_model(model_path, cfg)
     harness = make_harness(system, model, args.core_module)
+    _progress(f"conform: the model's steps computed by {harness.stepper.engine_note}")
     core = harness.core
     if args.replay:
         return _replay_file(args, model, harness)

@@ -97,7 +97,8 @@ def _require_success(res: CheckResult) -> None:
 
 CACHE_ENV = "SAFESTATE_CACHE_DIR"
 GRAPH_ENGINE_ENV = "SAFESTATE_GRAPH_ENGINE"
-CHECKER_SOURCES = ("checker", "tla", "conform/graph.py", "conform/events.py", "conform/native_graph.py")
+CHECKER_SOURCES = ("checker", "tla", "conform/graph.py", "conform/events.py", "conform/native_graph.py",
+                   "conform/native_events.py")
 
 
 def cache_dir() -> Path:

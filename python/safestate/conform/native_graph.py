@@ -18,6 +18,7 @@ from ..checker.explore import CheckResult
 from ..checker.model import Model
 from ..tla.errors import UnsupportedError
 from .events import Event
+from .native_events import EventCache, leaf_slots
 
 
 @dataclass
@@ -42,15 +43,12 @@ def native_graph(model: Model, progress: Callable[[str], None] | None = None) ->
         run = NativeRun(model)
     except UnsupportedError as e:
         return f"{e.loc}: {e.message}" if e.loc else e.message
-    leaf_slots = []
-    for leaf, native in zip(model.leaves, run.leaf_params):
-        if [n for n, _ in leaf.params] != [n for n, _ in native]:
-            return (f"{leaf.loc}: the parameters of action {leaf.name} differ between the engines "
-                    f"({[n for n, _ in leaf.params]} and {[n for n, _ in native]})")
-        leaf_slots.append([sl for _, sl in native])
+    slots = leaf_slots(model, run)
+    if isinstance(slots, str):
+        return slots
     eng = run.engine
     eng.record_edges = True
-    eng.leaf_params = leaf_slots
+    eng.leaf_params = slots
     result, error = explore_native(model, None, progress, run, 1)
     if result is None:
         return f"the native engine stopped at an evaluation error ({error})"
@@ -68,13 +66,5 @@ def native_graph(model: Model, progress: Callable[[str], None] | None = None) ->
     graph.initial = list(range(eng.initial_count))
     src, dst, leaves, params = (array("I", b) for b in eng.edges_bytes())
     graph.src, graph.dst = src, dst
-    cache: dict[tuple[int, int], Event] = {}
-    events = graph.events
-    for key in zip(leaves, params):
-        ev = cache.get(key)
-        if ev is None:
-            leaf = model.leaves[key[0]]
-            values_ = bridge.to_python(key[1])
-            ev = cache[key] = Event.of(leaf.name, {n: v for (n, _), v in zip(leaf.params, values_)})
-        events.append(ev)
+    graph.events = list(map(EventCache(model, bridge).event, leaves, params))
     return graph

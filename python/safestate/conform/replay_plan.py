@@ -32,7 +32,8 @@ from .graph import StateGraph, cache_dir, cached_pickle, graph_key
 from .traces import ConcreteTrace
 
 # Sources whose change changes a plan (with the adapter's own file and the graph).
-PLAN_SOURCES = ("adapter.py", "cover.py", "events.py", "model_step.py", "replay_plan.py", "traces.py")
+PLAN_SOURCES = ("adapter.py", "cover.py", "events.py", "model_step.py", "native_step.py",
+                "replay_plan.py", "traces.py")
 
 
 @dataclass
@@ -167,7 +168,8 @@ def build(adapter: Adapter, traces: Iterable[ConcreteTrace], check_rows: bool = 
 
 
 def plan_key(adapter: Adapter, graph: StateGraph, options: str) -> str:
-    """A hash of what a plan is made from (the model and checker through `graph_key`)."""
+    """A hash of what a plan is made from (the model, the checker and the native core,
+    which computes the model's side, through `graph_key`)."""
     h = hashlib.sha256()
     h.update(graph_key(adapter.stepper.model).encode())
     h.update(array("i", graph.src).tobytes() + array("i", graph.dst).tobytes())

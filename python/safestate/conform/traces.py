@@ -45,6 +45,9 @@ class Materializer:
         self.parent = [-1] * len(graph.states)
         self.tree: dict[int, tuple] = {}  # node -> concrete state at the end of its tree path
         self._keys: dict[int, object] = {}
+        # (id of a concrete state, edge) -> its successor: traces share off-tree steps too
+        # (each entry keeps its source state alive, so an id is never reused).
+        self._off_tree: dict[tuple[int, int], tuple[tuple, tuple]] = {}
         # The checker found each edge's successor; only a VIEW can make it differ from the node.
         self.no_view = stepper.model.view is None
 
@@ -52,11 +55,11 @@ class Materializer:
         self.parent = parent
 
     def _check(self, state: tuple, node: int) -> None:
-        m = self.stepper.model
+        key = self.stepper.key
         want = self._keys.get(node)
         if want is None:
-            want = self._keys[node] = m.key(self.g.states[node])
-        if m.key(state) != want:
+            want = self._keys[node] = key(self.g.states[node])
+        if key(state) != want:
             raise GraphMismatch(f"the successor is not the graph's node {node}")
 
     def trace(self, t: Trace) -> ConcreteTrace:
@@ -71,8 +74,13 @@ class Materializer:
             if nxt is None and self.no_view:
                 nxt = g.states[dst]  # without a VIEW the node is the concrete state itself
             if nxt is None:
-                nxt = self.stepper.edge_successor(cur, ev)
-                self._check(nxt, dst)
+                hit = self._off_tree.get((id(cur), e))
+                if hit is not None and hit[0] is cur:
+                    nxt = hit[1]
+                else:
+                    nxt = self.stepper.edge_successor(cur, ev)
+                    self._check(nxt, dst)
+                    self._off_tree[(id(cur), e)] = (cur, nxt)
                 if on_tree:
                     self.tree[dst] = nxt
             steps.append(Step(ev, nxt, e))

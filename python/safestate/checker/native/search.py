@@ -52,6 +52,7 @@ class NativeRun:
         self.init, self.next = init, next_
         self.nslots = tr.nslots
         self.leaf_params = tr.leaf_params  # per leaf: (name, slot) of its parameters
+        self.translator = tr  # more trees for the same engine (conform/native_step.py)
 
 
 def _refuse_model(model: Model) -> None:

@@ -11,24 +11,30 @@ NOT_NATIVE = "not supported by the native engine"
 
 # Kinds as the C++ core numbers them (enum Kind).
 _BOOL, _INT, _STR, _MV, _SEQ, _FUN, _SET = range(7)
+# Ids the core gives without interning (Store: kFalse, kTrue, kIntTag).
+_FALSE, _TRUE, _INT_TAG = 0, 1, 0x80000000
 
 
 class ValueBridge:
     def __init__(self, engine: Any) -> None:
         self.engine = engine
         self._back: dict[int, Value] = {}
+        self._strings: dict[str, int] = {}  # the core interns them: each is looked up once
 
     def to_native(self, v: Value, loc: Loc) -> int:
         e = self.engine
         t = type(v)
         if t is bool:
-            return e.mk_bool(v)
+            return _TRUE if v else _FALSE
         if t is int:
             if not -(1 << 30) <= v < (1 << 30):
                 raise UnsupportedError(f"the integer {v} is {NOT_NATIVE} (31-bit integers only)", loc)
-            return e.mk_int(v)
+            return _INT_TAG | (v + (1 << 30))  # tagged inline, as Store::mk_int
         if t is str:
-            return e.mk_str(v, string_rank(v))
+            vid = self._strings.get(v)  # type: ignore[call-overload]
+            if vid is None:
+                vid = self._strings[v] = e.mk_str(v, string_rank(v))  # type: ignore[index]
+            return vid
         if t is ModelValue:
             return e.mk_model_value(v.name, string_rank(v.name))
         if t is tuple:
