@@ -31,11 +31,12 @@ def _check_json(tla: Path, *extra: str) -> dict:
 
 
 # Every model and cfg of models/expected.json is checked by both engines, except where
-# the Python engine's run costs more than the suite can pay: the flagship's CI cfg (71 CPU
-# s) is checked by the Python engine in its reduced cfg (every construct of the model, 11
-# s) and by scripts/main.sh in full; SafetyServicePeers (29 s) shares its module with
-# SafetyService.  The native engine is itself compared with the Python engine on every
-# spec it accepts (test_checker_native_engine.py).
+# the Python engine's run costs more than the suite can pay: the flagship's CI cfg (71
+# CPU s) is checked by the Python engine in its reduced cfg (every construct of the
+# model, 11 s) and in full by the main job (scripts/main.sh, the evidence step's
+# `safestate check`); SafetyServicePeers (29 s) shares its module with SafetyService.
+# The native engine is itself compared with the Python engine on every spec it accepts
+# (test_checker_native_engine.py).
 PYTHON_ENGINE_TOO_DEAR = {"SystemStateManager", "SafetyServicePeers"}
 
 
