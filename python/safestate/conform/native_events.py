@@ -18,6 +18,19 @@ if TYPE_CHECKING:
     from ..checker.native.values import ValueBridge
 
 
+def prepare_run(model: Model) -> "tuple[NativeRun, list[list[int]]] | str":
+    """The model translated for the core with its leaves' parameter slots, or why the
+    core does not take it (a construct outside its subset, with file:line:col)."""
+    from ..checker.native.search import NativeRun
+    from ..tla.errors import UnsupportedError
+    try:
+        run = NativeRun(model)
+    except UnsupportedError as e:
+        return str(e)
+    slots = leaf_slots(model, run)
+    return slots if isinstance(slots, str) else (run, slots)
+
+
 def leaf_slots(model: Model, run: "NativeRun") -> list[list[int]] | str:
     """Per leaf, the core's slots of its parameters in the Python leaf's order, or why
     the two engines' leaves do not line up (then the caller uses the Python engine)."""

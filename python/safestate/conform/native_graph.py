@@ -16,9 +16,8 @@ from typing import Callable, Iterator
 
 from ..checker.explore import CheckResult
 from ..checker.model import Model
-from ..tla.errors import UnsupportedError
 from .events import Event
-from .native_events import EventCache, leaf_slots
+from .native_events import EventCache, prepare_run
 
 
 @dataclass
@@ -38,14 +37,11 @@ def native_graph(model: Model, progress: Callable[[str], None] | None = None) ->
     """The state graph from the native core, or why it cannot build it (a construct
     outside its subset with file:line:col, or an evaluation error, which the Python
     engine then reports exactly)."""
-    from ..checker.native.search import NativeRun, explore_native
-    try:
-        run = NativeRun(model)
-    except UnsupportedError as e:
-        return f"{e.loc}: {e.message}" if e.loc else e.message
-    slots = leaf_slots(model, run)
-    if isinstance(slots, str):
-        return slots
+    from ..checker.native.search import explore_native
+    prepared = prepare_run(model)
+    if isinstance(prepared, str):
+        return prepared
+    run, slots = prepared
     eng = run.engine
     eng.record_edges = True
     eng.leaf_params = slots

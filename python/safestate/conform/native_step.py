@@ -23,7 +23,7 @@ from ..tla import ast as A
 from ..tla.errors import TlaError, UnsupportedError
 from ..tla.values import Value
 from .events import Event
-from .native_events import EventCache, leaf_slots
+from .native_events import EventCache, prepare_run
 
 # Identity caches are cleared past this many entries (probe events are made afresh).
 _CACHE_LIMIT = 200_000
@@ -124,14 +124,11 @@ class NativeStepper:
 
     # ------------------------------------------------------------ evaluation
     def transitions(self, state: tuple) -> list[tuple[Event, tuple]] | None:
-        ids = self.ids(state)
-        if ids is None or self.run.next is None:
+        if self.run.next is None:
             return self._fallback()
-        try:
-            out = self.engine.step(self.run.next, ids, [])
-        except self.error:
-            return self._fallback()
-        self.calls += 1
+        out = self._call(self.engine.step, (self.run.next, []), state, [])
+        if out is None:
+            return None
         return [(self.events.event(leaf, params), self._successor(st, view)) for leaf, params, st, view in out]
 
     def _successor(self, ids: tuple[int, ...], view: int) -> tuple:
@@ -150,8 +147,9 @@ class NativeStepper:
         return None if vid is None else (self.bridge.to_python(vid),)
 
     def _call(self, method: Any, compiled: tuple, state: tuple, values: list[Value]) -> Any:
-        """The core's `method` (step / evaluate) on a tree in `state` with its names bound
-        to `values`; None (counted as a fallback) when a value or the evaluation fails."""
+        """The core's `method` (step / evaluate / evaluate_all) on its tree(s) in `state`
+        with the slots bound to `values`; None (counted as a fallback) when a value or the
+        evaluation fails."""
         node, slots = compiled
         binds = self._binds(state, slots, values)
         if binds is None:
@@ -165,15 +163,8 @@ class NativeStepper:
 
     def evaluate_all(self, compiled: list[tuple], state: tuple) -> list[Value] | None:
         """Several zero-argument expressions from `expression()` in `state`, in one call."""
-        ids = self.ids(state)
-        if ids is None:
-            return self._fallback()
-        try:
-            vids = self.engine.evaluate_all([c[0] for c in compiled], ids, [])
-        except self.error:
-            return self._fallback()
-        self.calls += 1
-        return list(map(self.bridge.to_python, vids))
+        vids = self._call(self.engine.evaluate_all, ([c[0] for c in compiled], []), state, [])
+        return None if vids is None else list(map(self.bridge.to_python, vids))
 
     def view(self, state: tuple) -> tuple[Value] | None:
         """(the model's VIEW of `state`,) or None (no VIEW in the core, or an error); a
@@ -202,14 +193,8 @@ class NativeStepper:
 
 def native_stepper(model: Model) -> NativeStepper | str:
     """The core's stepper for `model`, or why the core does not take it."""
-    from ..checker.native.search import NativeRun
     try:
-        run = NativeRun(model)
-    except UnsupportedError as e:
-        return f"{e.loc}: {e.message}" if e.loc else e.message
+        prepared = prepare_run(model)
     except ImportError as e:
         return f"the native core is not built ({e})"
-    slots = leaf_slots(model, run)
-    if isinstance(slots, str):
-        return slots
-    return NativeStepper(model, run, slots)
+    return prepared if isinstance(prepared, str) else NativeStepper(model, *prepared)

@@ -28,7 +28,7 @@ def summary_of(tla_path: str, cfg_path: str) -> dict:
         result = REFUSED if e.kind == "unsupported" else "error"
         return {"result": result, "distinct_states": None, "states_generated": None, "depth": None,
                 "violated": None, "exit_code": exit_codes.BY_KIND.get(e.kind, exit_codes.ERROR),
-                "message": f"{e.loc}: {e.message}" if e.loc else e.message}
+                "message": str(e)}
     code = exit_codes.BY_RESULT.get(r.result)
     msg = None
     if code is None:

@@ -47,7 +47,7 @@ def check(model: Model, engine: str, workers: int = 1, graph: bool = False, max_
     except UnsupportedError as e:
         if engine == "native":
             raise
-        run = f"{e.loc}: {e.message}" if e.loc else e.message
+        run = str(e)
     if isinstance(run, str):
         why = run
         if engine == "native":
