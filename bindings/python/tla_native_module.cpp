@@ -1315,14 +1315,17 @@ public:
         Ctx c{state.data(), t.data(), nullptr};
         collected_ = py::list();
         collect_ = true;
-        struct Done {  // however exec ends, the engine's emits go to the search again
-            bool& flag;
-            ~Done() { flag = false; }
-        } done{collect_};
+        struct Done {  // however exec ends, the engine's emits go to the search again and
+                       // no list is left held (step runs with the GIL)
+            Engine& e;
+            ~Done() {
+                e.collect_ = false;
+                e.collected_ = py::object();
+            }
+        } done{*this};
         try {
             exec(n, c);
         } catch (const EvalFailure& e) {
-            collected_ = py::object();
             throw StepError(e.message);
         }
         py::list out = py::reinterpret_steal<py::list>(collected_.release());
