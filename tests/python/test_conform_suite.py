@@ -56,9 +56,11 @@ def full_run(system, model, graph, tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def wrong_build(tmp_path_factory):
-    """conform/wrong_variant/ built once: safestate_wrong._core and safestate_wrong._saf."""
-    build = tmp_path_factory.mktemp("wrong")
+def wrong_build():
+    """conform/wrong_variant/ built once: safestate_wrong._core, _saf, _press and _pro.  In
+    build/wrong_variant (incremental afterwards), not a temporary folder: ccache keys on
+    paths relative to the clone, and a new random folder per run missed it every time."""
+    build = REPO / "build" / "wrong_variant"
     subprocess.run([str(REPO / "conform" / "wrong_variant" / "build.sh"), "wrong", str(build)],
                    check=True, capture_output=True)
     return str(build)
