@@ -3,6 +3,7 @@ walk compares every step's observe line, every checked step's fired rows and a s
 QUEUE_FULL answer with the model's, reports the first disagreeing (trace, step), and the
 plan is cached on disk.  On a seeded 300-step walk of the flagship (no exploration)."""
 
+import os
 import random
 from array import array
 from pathlib import Path
@@ -137,3 +138,22 @@ def test_plan_is_built_once_then_read_from_the_disk_cache(walk, tmp_path, monkey
     assert other.lines == first.lines
     assert len(list(tmp_path.glob("SystemStateManager-plan-*.pickle"))) == 2
     assert isinstance(again.call_ids, array)
+
+
+def test_the_cache_folder_keeps_within_its_size_bound_dropping_the_least_recently_used(tmp_path, monkeypatch):
+    """Every checker commit gives new keys: without a bound the cache only grows."""
+    from safestate.conform import graph as graph_mod
+    monkeypatch.setenv("SAFESTATE_CACHE_DIR", str(tmp_path))
+    monkeypatch.setenv(graph_mod.CACHE_MAX_ENV, "1")  # 1 MiB
+    blob = b"x" * (400 * 1024)
+    for i, name in enumerate(["old", "used", "newer"]):
+        (tmp_path / f"{name}.pickle").write_bytes(blob)
+        (tmp_path / f"{name}.lock").write_bytes(b"")
+        os.utime(tmp_path / f"{name}.pickle", (1000 + i, 1000 + i))
+    assert graph_mod._read_cached(tmp_path / "used.pickle", bytes, "blob", None) is None  # not a pickle, but...
+    graph_mod.cached_pickle(tmp_path / "used.pickle", bytes, lambda: blob, "blob")  # ... rebuilt: read again is a use
+    assert graph_mod._read_cached(tmp_path / "used.pickle", bytes, "blob", None) == blob
+    graph_mod.cached_pickle(tmp_path / "new.pickle", bytes, lambda: blob, "blob")
+    left = sorted(p.name for p in tmp_path.glob("*.pickle"))
+    assert left == ["new.pickle", "used.pickle"]  # 'old' and then 'newer' (older than the read of 'used') dropped
+    assert not (tmp_path / "old.lock").exists() and not (tmp_path / "newer.lock").exists()

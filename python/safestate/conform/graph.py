@@ -112,7 +112,8 @@ def cache_dir() -> Path:
 def graph_key(model: Model) -> str:
     """A hash of the model (every .tla and .cfg beside its module, and every module it
     read from another folder), its cfg file and the checker's own sources (its
-    'version'): a change to any gives a new key."""
+    'version'): a change to any gives a new key.  Contents and file names only, never
+    absolute paths."""
     h = hashlib.sha256()
     folder = Path(model.module.file).resolve().parent
     beside = list(folder.glob("*.tla")) + list(folder.glob("*.cfg"))
@@ -120,7 +121,9 @@ def graph_key(model: Model) -> str:
     for f in sorted(beside) + sorted(elsewhere):
         h.update(f.name.encode() + b"\0" + f.read_bytes() + b"\0")
     cfg = Path(model.config.file)
-    h.update(str(cfg.resolve()).encode() + b"\0" + cfg.read_bytes())
+    # The cfg by name and text, not by its absolute path: a fresh clone in another folder
+    # (a CI run) reuses the graph of an earlier one (the graph holds no paths).
+    h.update(cfg.name.encode() + b"\0" + cfg.read_bytes())
     pkg = Path(__file__).resolve().parents[1]
     for name in CHECKER_SOURCES:
         p = pkg / name
@@ -157,9 +160,44 @@ def cached_pickle(path: Path, kind: type[T], build: Callable[[], T], what: str, 
             with open(tmp, "wb") as f:
                 pickle.dump(obj, f, protocol=pickle.HIGHEST_PROTOCOL)
             os.replace(tmp, path)
+            evict_least_recent(path.parent, keep=path)
         except OSError:
             pass  # a read-only cache only costs time
     return obj
+
+
+CACHE_MAX_ENV = "SAFESTATE_CACHE_MAX_MB"
+CACHE_MAX_MB = 1024  # about a dozen versions of every registered system's graphs and plans
+
+
+def evict_least_recent(folder: Path, keep: Path) -> None:
+    """Deletes the least recently used cache files (their modification time: a read
+    touches the file) until the folder's pickles fit in $SAFESTATE_CACHE_MAX_MB (1024);
+    `keep`, just written, stays.  Every commit of the checker gives new keys, so without
+    this the folder only grows (3.9 GB after one day of development)."""
+    try:
+        limit = int(os.environ.get(CACHE_MAX_ENV, CACHE_MAX_MB)) * 1024 * 1024
+    except ValueError:
+        limit = CACHE_MAX_MB * 1024 * 1024
+    files = []
+    for f in folder.glob("*.pickle"):
+        try:
+            st = f.stat()
+        except OSError:
+            continue  # removed by another process meanwhile
+        files.append((st.st_mtime, st.st_size, f))
+    total = sum(size for _, size, _ in files)
+    for _, size, f in sorted(files, key=lambda t: t[0]):
+        if total <= limit:
+            break
+        if f == keep:
+            continue
+        for stale in (f, f.with_suffix(".lock")):
+            try:
+                stale.unlink()
+            except OSError:
+                pass
+        total -= size
 
 
 def _read_cached(path: Path, kind: type[T], what: str, progress) -> T | None:  # type: ignore[no-untyped-def]
@@ -170,6 +208,10 @@ def _read_cached(path: Path, kind: type[T], what: str, progress) -> T | None:  #
         return None
     if not isinstance(obj, kind):
         return None
+    try:
+        os.utime(path)  # most recently used: evict_least_recent keeps it longest
+    except OSError:
+        pass
     if progress:
         progress(f"conform: {what} from the cache {path}")
     return obj
