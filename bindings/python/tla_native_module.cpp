@@ -189,10 +189,12 @@ public:
         return 0;
     }
 
-    uint32_t mk_set(std::vector<uint32_t>& el) {
-        std::sort(el.begin(), el.end(), [this](uint32_t a, uint32_t b) { return cmp(a, b) < 0; });
-        el.erase(std::unique(el.begin(), el.end()), el.end());
-        return intern(K_SET, el.data(), uint32_t(el.size()));
+    uint32_t mk_set(std::vector<uint32_t>& el) { return mk_set(el.data(), el.data() + el.size()); }
+    // The set of the ids in [b, e) (sorted and deduplicated in place).
+    uint32_t mk_set(uint32_t* b, uint32_t* e) {
+        std::sort(b, e, [this](uint32_t x, uint32_t y) { return cmp(x, y) < 0; });
+        e = std::unique(b, e);
+        return intern(K_SET, b, uint32_t(e - b));
     }
     uint32_t mk_seq(const std::vector<uint32_t>& el) { return intern(K_SEQ, el.data(), uint32_t(el.size())); }
     // A function from (key, value) pairs; canonical: a sequence when the domain is 1..n.
@@ -210,9 +212,13 @@ public:
         for (auto& p : kv) buf.push_back(p.second);
         return intern(K_FUN, buf.data(), n);
     }
+    // Equal values have equal ids (every value is interned in its canonical form), so a
+    // small set or domain is searched by id, a large one by TLC's order.
+    static constexpr uint32_t kLinear = 16;
     bool set_has(uint32_t s, uint32_t x) const {
         const uint32_t* it = items(s);
         uint32_t lo = 0, hi = len(s);
+        if (hi <= kLinear) return std::find(it, it + hi, x) != it + hi;
         while (lo < hi) {
             uint32_t mid = (lo + hi) / 2;
             int c = cmp(it[mid], x);
@@ -286,6 +292,13 @@ struct Node {
     uint32_t v = 0;
     std::vector<Node*> kids;
     Node* k = nullptr;
+    // RECLIT with distinct field names: kid i's rank among the fields in TLC's order
+    // (computed once when built, so the record is made without sorting).
+    std::vector<uint32_t> rank;
+    // FNAPP / EXCEPT: where the key was found last time (a record's field sits at the
+    // same place in every record of its shape); checked before it is used, so any value
+    // is correct.  Relaxed atomic: worker threads share the tree.
+    std::atomic<uint32_t> hint{0};
 };
 
 struct Ctx {
@@ -350,6 +363,7 @@ public:
         nodes.push_back(std::move(n));
         keep_.push_back(py::reinterpret_borrow<py::object>(obj));
         built[obj.ptr()] = raw;
+        if (raw->op == RECLIT) rank_fields(raw);
         fold(raw);
         return raw;
     }
@@ -378,22 +392,44 @@ public:
             fail("Attempted to check equality of values of different kinds", loc);
         return false;
     }
-    uint32_t apply(uint32_t f, uint32_t x, int loc) const {
+    uint32_t apply(uint32_t f, uint32_t x, int loc, std::atomic<uint32_t>* hint = nullptr) const {
+        uint32_t i = value_index(f, x, loc, hint);
+        return st.items(f)[i];
+    }
+    // Where f(x) is among f's items (a function's values follow its n keys); fails as
+    // applying f to x fails.
+    uint32_t value_index(uint32_t f, uint32_t x, int loc, std::atomic<uint32_t>* hint) const {
         Kind k = st.kind(f);
         if (k == K_SEQ) {
             if (Store::is_int(x)) {
                 int64_t i = Store::int_of(x);
-                if (i >= 1 && i <= int64_t(st.len(f))) return st.items(f)[i - 1];
+                if (i >= 1 && i <= int64_t(st.len(f))) return uint32_t(i - 1);
             }
             fail("Attempted to apply a sequence to an argument outside its domain", loc);
         }
         if (k != K_FUN) fail("Attempted to apply a non-function", loc);
         const uint32_t* it = st.items(f);
-        uint32_t n = st.len(f), lo = 0, hi = n;
+        uint32_t n = st.len(f);
+        if (hint) {
+            uint32_t h = hint->load(std::memory_order_relaxed);
+            if (h < n && it[h] == x) return n + h;
+        }
+        if (n <= Store::kLinear) {  // equal keys have equal ids
+            for (uint32_t i = 0; i < n; ++i)
+                if (it[i] == x) {
+                    if (hint) hint->store(i, std::memory_order_relaxed);
+                    return n + i;
+                }
+            fail("Attempted to apply a function to an argument outside its domain", loc);
+        }
+        uint32_t lo = 0, hi = n;
         while (lo < hi) {
             uint32_t mid = (lo + hi) / 2;
             int c = st.cmp(it[mid], x);
-            if (c == 0) return it[n + mid];
+            if (c == 0) {
+                if (hint) hint->store(mid, std::memory_order_relaxed);
+                return n + mid;
+            }
             if (c < 0) lo = mid + 1; else hi = mid;
         }
         fail("Attempted to apply a function to an argument outside its domain", loc);
@@ -609,9 +645,14 @@ public:
                 return want ? kFalse : kTrue;
             }
             case SETENUM: {
-                std::vector<uint32_t> el;
-                for (Node* k : n->kids) el.push_back(eval(k, c));
-                return st.mk_set(el);
+                size_t base = stk_.size();
+                for (Node* k : n->kids) {
+                    uint32_t v = eval(k, c);
+                    stk_.push_back(v);
+                }
+                uint32_t out = st.mk_set(stk_.data() + base, stk_.data() + stk_.size());
+                stk_.resize(base);
+                return out;
             }
             case SETFILTER: {
                 uint32_t s = set(n->kids[0], c);
@@ -639,38 +680,100 @@ public:
                     if (b == nb) return st.mk_set(el);
                 }
             }
-            case FNAPP: return apply(eval(n->kids[0], c), eval(n->kids[1], c), n->loc);
+            case FNAPP: {
+                uint32_t f = eval(n->kids[0], c);
+                return apply(f, eval(n->kids[1], c), n->loc, &n->hint);
+            }
             case FNLIT: {
+                // The domain's elements are distinct and in TLC's order: the keys need no
+                // sorting; a sequence when the domain is 1..n (as mk_fun makes it).
                 uint32_t s = set(n->kids[0], c);
-                std::vector<std::pair<uint32_t, uint32_t>> kv;
-                for (uint32_t i = 0; i < st.len(s); ++i) {
-                    uint32_t x = st.items(s)[i];
-                    slots[size_t(n->ints[0])] = x;
-                    kv.emplace_back(x, eval(n->kids[1], c));
+                uint32_t nk = st.len(s);
+                const uint32_t* keys = st.items(s);
+                bool seq = true;
+                for (uint32_t i = 0; i < nk && seq; ++i)
+                    seq = Store::is_int(keys[i]) && Store::int_of(keys[i]) == int64_t(i) + 1;
+                size_t base = stk_.size();
+                if (!seq) stk_.insert(stk_.end(), keys, keys + nk);
+                size_t vals = stk_.size();
+                stk_.resize(vals + nk);
+                for (uint32_t i = 0; i < nk; ++i) {
+                    slots[size_t(n->ints[0])] = keys[i];
+                    uint32_t v = eval(n->kids[1], c);
+                    stk_[vals + i] = v;
                 }
-                return st.mk_fun(kv);
+                uint32_t out = st.intern(seq ? K_SEQ : K_FUN, stk_.data() + base, nk);
+                stk_.resize(base);
+                return out;
             }
             case RECLIT: {
+                size_t nf = n->kids.size();
+                if (nf != 0 && n->rank.size() == nf) {  // keys, then values, in TLC's order
+                    size_t base = stk_.size();
+                    stk_.resize(base + 2 * nf);
+                    for (size_t i = 0; i < nf; ++i) stk_[base + n->rank[i]] = uint32_t(n->ints[i]);
+                    for (size_t i = 0; i < nf; ++i) {
+                        uint32_t v = eval(n->kids[i], c);
+                        stk_[base + nf + n->rank[i]] = v;
+                    }
+                    uint32_t out = st.intern(K_FUN, stk_.data() + base, uint32_t(nf));
+                    stk_.resize(base);
+                    return out;
+                }
                 std::vector<std::pair<uint32_t, uint32_t>> kv;
                 for (size_t i = 0; i < n->kids.size(); ++i) kv.emplace_back(uint32_t(n->ints[i]), eval(n->kids[i], c));
                 return st.mk_fun(kv);
             }
             case TUPLE: {
-                std::vector<uint32_t> el;
-                for (Node* k : n->kids) el.push_back(eval(k, c));
-                return st.mk_seq(el);
+                size_t base = stk_.size();
+                for (Node* k : n->kids) {
+                    uint32_t v = eval(k, c);
+                    stk_.push_back(v);
+                }
+                uint32_t out = st.intern(K_SEQ, stk_.data() + base, uint32_t(stk_.size() - base));
+                stk_.resize(base);
+                return out;
             }
             case EXCEPT: {
                 // ints: the @ slot, then per update its path depth; kids: base, then per
                 // update its keys and its value.
+                // The updates go into one copy of f's items, interned once at the end (the
+                // same value as interning after each update: the keys never change).
                 uint32_t f = eval(n->kids[0], c);
+                Kind k = st.kind(f);
                 size_t pos = 1;
+                int at_slot = int(n->ints[0]);
+                if (k != K_FUN && k != K_SEQ) {  // an error once a key is evaluated, or f itself
+                    for (size_t u = 1; u < n->ints.size(); ++u) {
+                        size_t depth = size_t(n->ints[u]);
+                        f = except_path(n, c, f, pos, depth, n->kids[pos + depth], at_slot);
+                        pos += depth + 1;
+                    }
+                    return f;
+                }
+                uint32_t len = st.len(f);
+                size_t base = stk_.size();
+                stk_.insert(stk_.end(), st.items(f), st.items(f) + (k == K_FUN ? 2 * len : len));
                 for (size_t u = 1; u < n->ints.size(); ++u) {
                     size_t depth = size_t(n->ints[u]);
-                    f = except_path(n, c, f, pos, depth, n->kids[pos + depth], int(n->ints[0]));
+                    Node* val = n->kids[pos + depth];
+                    uint32_t key = eval(n->kids[pos], c);
+                    size_t at = base + value_index(f, key, n->loc, &n->hint);
+                    uint32_t old = stk_[at], nv;
+                    if (depth == 1) {
+                        uint32_t saved = slots[size_t(at_slot)];
+                        slots[size_t(at_slot)] = old;
+                        nv = eval(val, c);
+                        slots[size_t(at_slot)] = saved;
+                    } else {
+                        nv = except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
+                    }
+                    stk_[at] = nv;
                     pos += depth + 1;
                 }
-                return f;
+                uint32_t out = st.intern(k, stk_.data() + base, len);
+                stk_.resize(base);
+                return out;
             }
             case DOMAIN: return domain(eval(n->kids[0], c), n->loc);
             case LEN: return Store::mk_int(st.len(seq_of(eval(n->kids[0], c), n->loc, "Len")), n->loc);
@@ -875,6 +978,24 @@ public:
     }
     bool member_in(uint32_t x, Node* sd, Ctx& c) { return member_sd(x, sd, c); }
 
+    // A record literal's fields in TLC's order, when its names are distinct strings.
+    void rank_fields(Node* n) {
+        size_t nf = n->ints.size();
+        std::vector<uint32_t> order(nf);
+        for (size_t i = 0; i < nf; ++i) {
+            uint32_t key = uint32_t(n->ints[i]);
+            if (Store::is_int(key) || key >= st.vals.size() || st.kind(key) != K_STR) return;
+            order[i] = uint32_t(i);
+        }
+        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+            return st.cmp(uint32_t(n->ints[a]), uint32_t(n->ints[b])) < 0;
+        });
+        for (size_t i = 1; i < nf; ++i)
+            if (n->ints[order[i]] == n->ints[order[i - 1]]) return;
+        n->rank.assign(nf, 0);
+        for (size_t r = 0; r < nf; ++r) n->rank[order[r]] = uint32_t(r);
+    }
+
     // ------------------------------------------------------------ folding constants
     void fold(Node* n) {
         if (n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) return;
@@ -1075,6 +1196,7 @@ public:
     }
 
     void run() {
+        stk_.clear();
         std::vector<uint32_t> t(size_t(nvars), kUnset);
         try {
             try {
@@ -1372,6 +1494,7 @@ private:
     Node* prepare(py::handle node, const std::vector<uint32_t>& state,
                   const std::vector<std::pair<int64_t, uint32_t>>& binds) {
         if (state.size() != size_t(nvars)) throw std::invalid_argument("a state of the wrong length");
+        stk_.clear();
         Node* n = build(node);
         for (auto& b : binds) {
             if (b.first < 0) throw std::invalid_argument("a negative slot");
@@ -1401,6 +1524,10 @@ private:
     // without the GIL, so no member may create or free a Python object.
     py::object collected_;
     std::vector<uint32_t> buf_;
+    // Scratch of the expression being evaluated: each user appends its items at the end
+    // and truncates back (indices, not pointers, are held across a nested eval, which
+    // may grow it).  An evaluation error leaves items behind: cleared at each entry.
+    std::vector<uint32_t> stk_;
     std::vector<py::object> keep_;
     Fresh* fresh_ = nullptr;  // set in a worker during a level
     const Engine* master_ = nullptr;
