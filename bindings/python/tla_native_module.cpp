@@ -62,6 +62,18 @@ inline uint64_t mix(uint64_t h, uint64_t x) {
     return h ^ (h >> 32);
 }
 
+// The hash of an id array: one xor and one multiply per id (a bijection of the running
+// hash for each id), the high bits folded into the low ones at the end (tables index by
+// the low bits).  Only a table's probe order depends on it, never a result.
+inline uint64_t hash_ids(uint64_t seed, const uint32_t* x, size_t n) {
+    constexpr uint64_t kMul = 0x9e3779b97f4a7c15ULL;
+    uint64_t h = (seed + n) * kMul;
+    for (size_t i = 0; i < n; ++i) h = (h ^ x[i]) * kMul;
+    h ^= h >> 32;
+    h *= 0xff51afd7ed558ccdULL;
+    return h ^ (h >> 29);
+}
+
 struct Val {
     Kind kind;
     uint32_t off, len;  // off: a string's index in Store::names
@@ -131,9 +143,8 @@ public:
 
     // Interns a sequence, function (keys then values) or set whose items are canonical.
     uint32_t intern(Kind k, const uint32_t* it, uint32_t n) {
-        uint64_t h = mix(k, n);
-        for (uint32_t i = 0; i < (k == K_FUN ? 2 * n : n); ++i) h = mix(h, it[i]);
         uint32_t cnt = k == K_FUN ? 2 * n : n;
+        uint64_t h = hash_ids(uint64_t(k) << 32 | n, it, cnt);
         std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
         if (concurrent) lock.lock();
         size_t mask = table_.size() - 1;
@@ -289,6 +300,7 @@ struct Node {
     int op = 0;
     int loc = 0;
     std::vector<int64_t> ints;
+    int64_t a = 0;  // ints[0] (a variable's or slot's index), read without the indirection
     uint32_t v = 0;
     std::vector<Node*> kids;
     Node* k = nullptr;
@@ -356,6 +368,7 @@ public:
         n->op = t[0].cast<int>();
         n->loc = t[1].cast<int>();
         for (auto x : t[2].cast<py::tuple>()) n->ints.push_back(x.cast<int64_t>());
+        if (!n->ints.empty()) n->a = n->ints[0];
         n->v = t[3].cast<uint32_t>();
         for (auto x : t[4].cast<py::tuple>()) n->kids.push_back(build(x));
         n->k = build(t[5]);
@@ -479,16 +492,16 @@ public:
     uint32_t except_path(Node* n, Ctx& c, uint32_t f, size_t pos, size_t depth, Node* val, int at_slot) {
         uint32_t key = eval(n->kids[pos], c);
         uint32_t old = apply(f, key, n->loc);
-        uint32_t nv;
-        if (depth == 1) {
-            uint32_t saved = slots[size_t(at_slot)];
-            slots[size_t(at_slot)] = old;
-            nv = eval(val, c);
-            slots[size_t(at_slot)] = saved;
-        } else {
-            nv = except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
-        }
-        return update(f, key, nv, n->loc);
+        return update(f, key, except_value(n, c, old, pos, depth, val, at_slot), n->loc);
+    }
+    // The new value at the end of the path whose first key is kids[pos] (old: its value).
+    uint32_t except_value(Node* n, Ctx& c, uint32_t old, size_t pos, size_t depth, Node* val, int at_slot) {
+        if (depth > 1) return except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
+        uint32_t saved = slots[size_t(at_slot)];
+        slots[size_t(at_slot)] = old;
+        uint32_t nv = eval(val, c);
+        slots[size_t(at_slot)] = saved;
+        return nv;
     }
     bool member_sd(uint32_t x, Node* sd, Ctx& c) {
         switch (sd->op) {
@@ -544,7 +557,17 @@ public:
         }
     }
 
-    uint32_t eval(Node* n, Ctx& c) {
+    // The leaves (a constant, a variable, a bound name) without a call of the big
+    // evaluator: most nodes are leaves, and its entry and exit cost more than they do.
+    __attribute__((always_inline)) uint32_t eval(Node* n, Ctx& c) {
+        switch (n->op) {
+            case CONST: return n->v;
+            case VAR: return c.s[n->a];
+            case SLOT: case AT: return slots[size_t(n->a)];
+            default: return eval_node(n, c);
+        }
+    }
+    uint32_t eval_node(Node* n, Ctx& c) {
         switch (n->op) {
             case CONST: return n->v;
             case VAR: return c.s[n->ints[0]];
@@ -759,15 +782,7 @@ public:
                     Node* val = n->kids[pos + depth];
                     uint32_t key = eval(n->kids[pos], c);
                     size_t at = base + value_index(f, key, n->loc, &n->hint);
-                    uint32_t old = stk_[at], nv;
-                    if (depth == 1) {
-                        uint32_t saved = slots[size_t(at_slot)];
-                        slots[size_t(at_slot)] = old;
-                        nv = eval(val, c);
-                        slots[size_t(at_slot)] = saved;
-                    } else {
-                        nv = except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
-                    }
+                    uint32_t nv = except_value(n, c, stk_[at], pos, depth, val, at_slot);
                     stk_[at] = nv;
                     pos += depth + 1;
                 }
@@ -1057,9 +1072,7 @@ public:
     }
     int key_len() const { return view ? 1 : nvars; }
     uint64_t key_hash(const uint32_t* x) const {
-        uint64_t h = 0x12345;
-        for (int i = 0; i < key_len(); ++i) h = mix(h, x[i]);
-        return h;
+        return hash_ids(0x12345, x, size_t(key_len()));
     }
     static size_t shard_of(uint64_t h) { return (h >> 40) % Fresh::kShards; }
     // Index of the state, or -1 after adding it to the seen-set (then the caller stores it).
