@@ -194,6 +194,7 @@ public:
     }
     int cmp_items(const uint32_t* x, const uint32_t* y, uint32_t n) const {
         for (uint32_t i = 0; i < n; ++i) {
+            if (x[i] == y[i]) continue;  // equal ids: equal values (records of one shape share their keys)
             int c = cmp(x[i], y[i]);
             if (c) return c;
         }
@@ -225,7 +226,7 @@ public:
     }
     // Equal values have equal ids (every value is interned in its canonical form), so a
     // small set or domain is searched by id, a large one by TLC's order.
-    static constexpr uint32_t kLinear = 16;
+    static constexpr uint32_t kLinear = 32;
     bool set_has(uint32_t s, uint32_t x) const {
         const uint32_t* it = items(s);
         uint32_t lo = 0, hi = len(s);
@@ -633,16 +634,31 @@ public:
                 return member_sd(x, n->kids[1], c) == (n->ints[0] == 0) ? kTrue : kFalse;
             }
             case CUP: case CAP: case DIFF: {
+                // Both operands are sorted in TLC's order: a union is their merge, an
+                // intersection or difference a subsequence of the first (no sorting).
                 uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
-                std::vector<uint32_t> el;
+                const uint32_t *x = st.items(a), *y = st.items(b);
+                uint32_t na = st.len(a), nb = st.len(b);
+                if (n->op == CUP && nb == 0) return a;
+                if (n->op == CUP && na == 0) return b;
+                size_t base = stk_.size();
                 if (n->op == CUP) {
-                    el.assign(st.items(a), st.items(a) + st.len(a));
-                    el.insert(el.end(), st.items(b), st.items(b) + st.len(b));
+                    uint32_t i = 0, j = 0;
+                    while (i < na && j < nb) {
+                        int o = x[i] == y[j] ? 0 : st.cmp(x[i], y[j]);
+                        stk_.push_back(o <= 0 ? x[i] : y[j]);
+                        if (o <= 0) ++i;
+                        if (o >= 0) ++j;
+                    }
+                    stk_.insert(stk_.end(), x + i, x + na);
+                    stk_.insert(stk_.end(), y + j, y + nb);
                 } else {
-                    for (uint32_t i = 0; i < st.len(a); ++i)
-                        if (st.set_has(b, st.items(a)[i]) == (n->op == CAP)) el.push_back(st.items(a)[i]);
+                    for (uint32_t i = 0; i < na; ++i)
+                        if (st.set_has(b, x[i]) == (n->op == CAP)) stk_.push_back(x[i]);
                 }
-                return st.mk_set(el);
+                uint32_t out = st.intern(K_SET, stk_.data() + base, uint32_t(stk_.size() - base));
+                stk_.resize(base);
+                return out;
             }
             case SUBSETEQ: {
                 uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
