@@ -399,7 +399,7 @@ public:
         if (st.kind(v) != K_SET) fail("a finite set was expected", n->loc);
         return v;
     }
-    bool equal(uint32_t a, uint32_t b, int loc) const {
+    __attribute__((always_inline)) bool equal(uint32_t a, uint32_t b, int loc) const {
         if (a == b) return true;
         Kind ka = st.kind(a), kb = st.kind(b);
         if (Store::cls(ka) != Store::cls(kb) && ka != K_MV && kb != K_MV)
@@ -721,7 +721,13 @@ public:
             }
             case FNAPP: {
                 uint32_t f = eval(n->kids[0], c);
-                return apply(f, eval(n->kids[1], c), n->loc, &n->hint);
+                uint32_t x = eval(n->kids[1], c);
+                if (!Store::is_int(f)) {  // a record's field where it was last time: no call
+                    const Val& v = st.vals[f];
+                    uint32_t h = n->hint.load(std::memory_order_relaxed);
+                    if (v.kind == K_FUN && h < v.len && v.data[h] == x) return v.data[v.len + h];
+                }
+                return apply(f, x, n->loc, &n->hint);
             }
             case FNLIT: {
                 // The domain's elements are distinct and in TLC's order: the keys need no
@@ -842,13 +848,24 @@ public:
             case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
             case BIND: bind(n, c); return eval(n->kids.back(), c);
             case BIND_MEMO: {
-                MemoKey key{n, {}};
-                for (size_t i = 0; i < n->ints.size(); ++i) key.args.push_back(eval(n->kids[i], c));
-                auto it = memo_.find(key);
-                if (it != memo_.end()) return it->second;
-                for (size_t i = 0; i < n->ints.size(); ++i) slots[size_t(n->ints[i])] = key.args[i];
+                // The arguments on the scratch stack; the lookup reuses one key (no
+                // allocation unless the call is new).
+                size_t na = n->ints.size(), base = stk_.size();
+                for (size_t i = 0; i < na; ++i) {
+                    uint32_t a = eval(n->kids[i], c);
+                    stk_.push_back(a);
+                }
+                probe_.node = n;
+                probe_.args.assign(stk_.begin() + ptrdiff_t(base), stk_.end());
+                auto it = memo_.find(probe_);
+                if (it != memo_.end()) {
+                    stk_.resize(base);
+                    return it->second;
+                }
+                for (size_t i = 0; i < na; ++i) slots[size_t(n->ints[i])] = stk_[base + i];
                 uint32_t v = eval(n->kids.back(), c);
-                memo_.emplace(std::move(key), v);
+                memo_.emplace(MemoKey{n, std::vector<uint32_t>(stk_.begin() + ptrdiff_t(base), stk_.begin() + ptrdiff_t(base + na))}, v);
+                stk_.resize(base);
                 return v;
             }
             case CHOOSE: {  // the first element in TLC's order that satisfies the predicate
@@ -999,6 +1016,7 @@ public:
         }
     };
     std::unordered_map<MemoKey, uint32_t, MemoHash> memo_;
+    MemoKey probe_;
 
     // An operator's arguments, evaluated into its parameters' slots (ints) before the body.
     void bind(Node* n, Ctx& c) {
