@@ -49,6 +49,12 @@ else
   log ".venv is up to date"
 fi
 
+# Byte-compile the package, the tests and the systems' adapters: with PYTHONDONTWRITEBYTECODE
+# set (it is, on these machines) Python never writes a .pyc, so each `safestate` subprocess
+# compiled every module it imports from source (0.18 -> 0.07 CPU s per CLI run; the tests
+# start several hundred).  Only stale files are rewritten (__pycache__ is git-ignored).
+"$VPY" -m compileall -q -j 0 python tests/python systems conform/cpp_mutants >/dev/null
+
 # 3. The C++ build tree (library, GoogleTest tests, benchmarks).  -O2 without -g: the
 # same code as RelWithDebInfo (GCC's -g does not change code generation), compiled in
 # ~25% less CPU (the Boost.Beast bridge: 45 s -> 33 s).  bench/run_bench.py and the

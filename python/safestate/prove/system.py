@@ -178,10 +178,10 @@ class System:
         """The concrete value of every tracked variable at step i (None: the template state,
         its successor when `primed`)."""
         from .values import evaluate
-        pairs = list(zip(self.cur_leaves, self.state(i))) if i is not None else []
+        rename = self._renaming("at", i) if i is not None else None  # the pairs checked once, not per term
 
         def ev(t: z3.ExprRef) -> z3.ExprRef:
-            return model.eval(z3.substitute(t, pairs) if pairs else t, model_completion=True)
+            return model.eval(rename(t) if rename is not None else t, model_completion=True)
         state = self.nxt if primed else self.cur
         return {v: evaluate(state[v], ev, self.strings) for v in self.variables}
 
