@@ -62,6 +62,18 @@ inline uint64_t mix(uint64_t h, uint64_t x) {
     return h ^ (h >> 32);
 }
 
+// The hash of an id array: one xor and one multiply per id (a bijection of the running
+// hash for each id), the high bits folded into the low ones at the end (tables index by
+// the low bits).  Only a table's probe order depends on it, never a result.
+inline uint64_t hash_ids(uint64_t seed, const uint32_t* x, size_t n) {
+    constexpr uint64_t kMul = 0x9e3779b97f4a7c15ULL;
+    uint64_t h = (seed + n) * kMul;
+    for (size_t i = 0; i < n; ++i) h = (h ^ x[i]) * kMul;
+    h ^= h >> 32;
+    h *= 0xff51afd7ed558ccdULL;
+    return h ^ (h >> 29);
+}
+
 struct Val {
     Kind kind;
     uint32_t off, len;  // off: a string's index in Store::names
@@ -131,9 +143,8 @@ public:
 
     // Interns a sequence, function (keys then values) or set whose items are canonical.
     uint32_t intern(Kind k, const uint32_t* it, uint32_t n) {
-        uint64_t h = mix(k, n);
-        for (uint32_t i = 0; i < (k == K_FUN ? 2 * n : n); ++i) h = mix(h, it[i]);
         uint32_t cnt = k == K_FUN ? 2 * n : n;
+        uint64_t h = hash_ids(uint64_t(k) << 32 | n, it, cnt);
         std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
         if (concurrent) lock.lock();
         size_t mask = table_.size() - 1;
@@ -183,16 +194,19 @@ public:
     }
     int cmp_items(const uint32_t* x, const uint32_t* y, uint32_t n) const {
         for (uint32_t i = 0; i < n; ++i) {
+            if (x[i] == y[i]) continue;  // equal ids: equal values (records of one shape share their keys)
             int c = cmp(x[i], y[i]);
             if (c) return c;
         }
         return 0;
     }
 
-    uint32_t mk_set(std::vector<uint32_t>& el) {
-        std::sort(el.begin(), el.end(), [this](uint32_t a, uint32_t b) { return cmp(a, b) < 0; });
-        el.erase(std::unique(el.begin(), el.end()), el.end());
-        return intern(K_SET, el.data(), uint32_t(el.size()));
+    uint32_t mk_set(std::vector<uint32_t>& el) { return mk_set(el.data(), el.data() + el.size()); }
+    // The set of the ids in [b, e) (sorted and deduplicated in place).
+    uint32_t mk_set(uint32_t* b, uint32_t* e) {
+        std::sort(b, e, [this](uint32_t x, uint32_t y) { return cmp(x, y) < 0; });
+        e = std::unique(b, e);
+        return intern(K_SET, b, uint32_t(e - b));
     }
     uint32_t mk_seq(const std::vector<uint32_t>& el) { return intern(K_SEQ, el.data(), uint32_t(el.size())); }
     // A function from (key, value) pairs; canonical: a sequence when the domain is 1..n.
@@ -210,9 +224,13 @@ public:
         for (auto& p : kv) buf.push_back(p.second);
         return intern(K_FUN, buf.data(), n);
     }
+    // Equal values have equal ids (every value is interned in its canonical form), so a
+    // small set or domain is searched by id, a large one by TLC's order.
+    static constexpr uint32_t kLinear = 32;
     bool set_has(uint32_t s, uint32_t x) const {
         const uint32_t* it = items(s);
         uint32_t lo = 0, hi = len(s);
+        if (hi <= kLinear) return std::find(it, it + hi, x) != it + hi;
         while (lo < hi) {
             uint32_t mid = (lo + hi) / 2;
             int c = cmp(it[mid], x);
@@ -283,9 +301,17 @@ struct Node {
     int op = 0;
     int loc = 0;
     std::vector<int64_t> ints;
+    int64_t a = 0;  // ints[0] (a variable's or slot's index), read without the indirection
     uint32_t v = 0;
     std::vector<Node*> kids;
     Node* k = nullptr;
+    // RECLIT with distinct field names: kid i's rank among the fields in TLC's order
+    // (computed once when built, so the record is made without sorting).
+    std::vector<uint32_t> rank;
+    // FNAPP / EXCEPT: where the key was found last time (a record's field sits at the
+    // same place in every record of its shape); checked before it is used, so any value
+    // is correct.  Relaxed atomic: worker threads share the tree.
+    std::atomic<uint32_t> hint{0};
 };
 
 struct Ctx {
@@ -343,6 +369,7 @@ public:
         n->op = t[0].cast<int>();
         n->loc = t[1].cast<int>();
         for (auto x : t[2].cast<py::tuple>()) n->ints.push_back(x.cast<int64_t>());
+        if (!n->ints.empty()) n->a = n->ints[0];
         n->v = t[3].cast<uint32_t>();
         for (auto x : t[4].cast<py::tuple>()) n->kids.push_back(build(x));
         n->k = build(t[5]);
@@ -350,6 +377,7 @@ public:
         nodes.push_back(std::move(n));
         keep_.push_back(py::reinterpret_borrow<py::object>(obj));
         built[obj.ptr()] = raw;
+        if (raw->op == RECLIT) rank_fields(raw);
         fold(raw);
         return raw;
     }
@@ -371,29 +399,51 @@ public:
         if (st.kind(v) != K_SET) fail("a finite set was expected", n->loc);
         return v;
     }
-    bool equal(uint32_t a, uint32_t b, int loc) const {
+    __attribute__((always_inline)) bool equal(uint32_t a, uint32_t b, int loc) const {
         if (a == b) return true;
         Kind ka = st.kind(a), kb = st.kind(b);
         if (Store::cls(ka) != Store::cls(kb) && ka != K_MV && kb != K_MV)
             fail("Attempted to check equality of values of different kinds", loc);
         return false;
     }
-    uint32_t apply(uint32_t f, uint32_t x, int loc) const {
+    uint32_t apply(uint32_t f, uint32_t x, int loc, std::atomic<uint32_t>* hint = nullptr) const {
+        uint32_t i = value_index(f, x, loc, hint);
+        return st.items(f)[i];
+    }
+    // Where f(x) is among f's items (a function's values follow its n keys); fails as
+    // applying f to x fails.
+    uint32_t value_index(uint32_t f, uint32_t x, int loc, std::atomic<uint32_t>* hint) const {
         Kind k = st.kind(f);
         if (k == K_SEQ) {
             if (Store::is_int(x)) {
                 int64_t i = Store::int_of(x);
-                if (i >= 1 && i <= int64_t(st.len(f))) return st.items(f)[i - 1];
+                if (i >= 1 && i <= int64_t(st.len(f))) return uint32_t(i - 1);
             }
             fail("Attempted to apply a sequence to an argument outside its domain", loc);
         }
         if (k != K_FUN) fail("Attempted to apply a non-function", loc);
         const uint32_t* it = st.items(f);
-        uint32_t n = st.len(f), lo = 0, hi = n;
+        uint32_t n = st.len(f);
+        if (hint) {
+            uint32_t h = hint->load(std::memory_order_relaxed);
+            if (h < n && it[h] == x) return n + h;
+        }
+        if (n <= Store::kLinear) {  // equal keys have equal ids
+            for (uint32_t i = 0; i < n; ++i)
+                if (it[i] == x) {
+                    if (hint) hint->store(i, std::memory_order_relaxed);
+                    return n + i;
+                }
+            fail("Attempted to apply a function to an argument outside its domain", loc);
+        }
+        uint32_t lo = 0, hi = n;
         while (lo < hi) {
             uint32_t mid = (lo + hi) / 2;
             int c = st.cmp(it[mid], x);
-            if (c == 0) return it[n + mid];
+            if (c == 0) {
+                if (hint) hint->store(mid, std::memory_order_relaxed);
+                return n + mid;
+            }
             if (c < 0) lo = mid + 1; else hi = mid;
         }
         fail("Attempted to apply a function to an argument outside its domain", loc);
@@ -443,16 +493,16 @@ public:
     uint32_t except_path(Node* n, Ctx& c, uint32_t f, size_t pos, size_t depth, Node* val, int at_slot) {
         uint32_t key = eval(n->kids[pos], c);
         uint32_t old = apply(f, key, n->loc);
-        uint32_t nv;
-        if (depth == 1) {
-            uint32_t saved = slots[size_t(at_slot)];
-            slots[size_t(at_slot)] = old;
-            nv = eval(val, c);
-            slots[size_t(at_slot)] = saved;
-        } else {
-            nv = except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
-        }
-        return update(f, key, nv, n->loc);
+        return update(f, key, except_value(n, c, old, pos, depth, val, at_slot), n->loc);
+    }
+    // The new value at the end of the path whose first key is kids[pos] (old: its value).
+    uint32_t except_value(Node* n, Ctx& c, uint32_t old, size_t pos, size_t depth, Node* val, int at_slot) {
+        if (depth > 1) return except_path(n, c, old, pos + 1, depth - 1, val, at_slot);
+        uint32_t saved = slots[size_t(at_slot)];
+        slots[size_t(at_slot)] = old;
+        uint32_t nv = eval(val, c);
+        slots[size_t(at_slot)] = saved;
+        return nv;
     }
     bool member_sd(uint32_t x, Node* sd, Ctx& c) {
         switch (sd->op) {
@@ -508,7 +558,17 @@ public:
         }
     }
 
-    uint32_t eval(Node* n, Ctx& c) {
+    // The leaves (a constant, a variable, a bound name) without a call of the big
+    // evaluator: most nodes are leaves, and its entry and exit cost more than they do.
+    __attribute__((always_inline)) uint32_t eval(Node* n, Ctx& c) {
+        switch (n->op) {
+            case CONST: return n->v;
+            case VAR: return c.s[n->a];
+            case SLOT: case AT: return slots[size_t(n->a)];
+            default: return eval_node(n, c);
+        }
+    }
+    uint32_t eval_node(Node* n, Ctx& c) {
         switch (n->op) {
             case CONST: return n->v;
             case VAR: return c.s[n->ints[0]];
@@ -574,16 +634,31 @@ public:
                 return member_sd(x, n->kids[1], c) == (n->ints[0] == 0) ? kTrue : kFalse;
             }
             case CUP: case CAP: case DIFF: {
+                // Both operands are sorted in TLC's order: a union is their merge, an
+                // intersection or difference a subsequence of the first (no sorting).
                 uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
-                std::vector<uint32_t> el;
+                const uint32_t *x = st.items(a), *y = st.items(b);
+                uint32_t na = st.len(a), nb = st.len(b);
+                if (n->op == CUP && nb == 0) return a;
+                if (n->op == CUP && na == 0) return b;
+                size_t base = stk_.size();
                 if (n->op == CUP) {
-                    el.assign(st.items(a), st.items(a) + st.len(a));
-                    el.insert(el.end(), st.items(b), st.items(b) + st.len(b));
+                    uint32_t i = 0, j = 0;
+                    while (i < na && j < nb) {
+                        int o = x[i] == y[j] ? 0 : st.cmp(x[i], y[j]);
+                        stk_.push_back(o <= 0 ? x[i] : y[j]);
+                        if (o <= 0) ++i;
+                        if (o >= 0) ++j;
+                    }
+                    stk_.insert(stk_.end(), x + i, x + na);
+                    stk_.insert(stk_.end(), y + j, y + nb);
                 } else {
-                    for (uint32_t i = 0; i < st.len(a); ++i)
-                        if (st.set_has(b, st.items(a)[i]) == (n->op == CAP)) el.push_back(st.items(a)[i]);
+                    for (uint32_t i = 0; i < na; ++i)
+                        if (st.set_has(b, x[i]) == (n->op == CAP)) stk_.push_back(x[i]);
                 }
-                return st.mk_set(el);
+                uint32_t out = st.intern(K_SET, stk_.data() + base, uint32_t(stk_.size() - base));
+                stk_.resize(base);
+                return out;
             }
             case SUBSETEQ: {
                 uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
@@ -609,9 +684,14 @@ public:
                 return want ? kFalse : kTrue;
             }
             case SETENUM: {
-                std::vector<uint32_t> el;
-                for (Node* k : n->kids) el.push_back(eval(k, c));
-                return st.mk_set(el);
+                size_t base = stk_.size();
+                for (Node* k : n->kids) {
+                    uint32_t v = eval(k, c);
+                    stk_.push_back(v);
+                }
+                uint32_t out = st.mk_set(stk_.data() + base, stk_.data() + stk_.size());
+                stk_.resize(base);
+                return out;
             }
             case SETFILTER: {
                 uint32_t s = set(n->kids[0], c);
@@ -639,38 +719,98 @@ public:
                     if (b == nb) return st.mk_set(el);
                 }
             }
-            case FNAPP: return apply(eval(n->kids[0], c), eval(n->kids[1], c), n->loc);
-            case FNLIT: {
-                uint32_t s = set(n->kids[0], c);
-                std::vector<std::pair<uint32_t, uint32_t>> kv;
-                for (uint32_t i = 0; i < st.len(s); ++i) {
-                    uint32_t x = st.items(s)[i];
-                    slots[size_t(n->ints[0])] = x;
-                    kv.emplace_back(x, eval(n->kids[1], c));
+            case FNAPP: {
+                uint32_t f = eval(n->kids[0], c);
+                uint32_t x = eval(n->kids[1], c);
+                if (!Store::is_int(f)) {  // a record's field where it was last time: no call
+                    const Val& v = st.vals[f];
+                    uint32_t h = n->hint.load(std::memory_order_relaxed);
+                    if (v.kind == K_FUN && h < v.len && v.data[h] == x) return v.data[v.len + h];
                 }
-                return st.mk_fun(kv);
+                return apply(f, x, n->loc, &n->hint);
+            }
+            case FNLIT: {
+                // The domain's elements are distinct and in TLC's order: the keys need no
+                // sorting; a sequence when the domain is 1..n (as mk_fun makes it).
+                uint32_t s = set(n->kids[0], c);
+                uint32_t nk = st.len(s);
+                const uint32_t* keys = st.items(s);
+                bool seq = true;
+                for (uint32_t i = 0; i < nk && seq; ++i)
+                    seq = Store::is_int(keys[i]) && Store::int_of(keys[i]) == int64_t(i) + 1;
+                size_t base = stk_.size();
+                if (!seq) stk_.insert(stk_.end(), keys, keys + nk);
+                size_t vals = stk_.size();
+                stk_.resize(vals + nk);
+                for (uint32_t i = 0; i < nk; ++i) {
+                    slots[size_t(n->ints[0])] = keys[i];
+                    uint32_t v = eval(n->kids[1], c);
+                    stk_[vals + i] = v;
+                }
+                uint32_t out = st.intern(seq ? K_SEQ : K_FUN, stk_.data() + base, nk);
+                stk_.resize(base);
+                return out;
             }
             case RECLIT: {
+                size_t nf = n->kids.size();
+                if (nf != 0 && n->rank.size() == nf) {  // keys, then values, in TLC's order
+                    size_t base = stk_.size();
+                    stk_.resize(base + 2 * nf);
+                    for (size_t i = 0; i < nf; ++i) stk_[base + n->rank[i]] = uint32_t(n->ints[i]);
+                    for (size_t i = 0; i < nf; ++i) {
+                        uint32_t v = eval(n->kids[i], c);
+                        stk_[base + nf + n->rank[i]] = v;
+                    }
+                    uint32_t out = st.intern(K_FUN, stk_.data() + base, uint32_t(nf));
+                    stk_.resize(base);
+                    return out;
+                }
                 std::vector<std::pair<uint32_t, uint32_t>> kv;
                 for (size_t i = 0; i < n->kids.size(); ++i) kv.emplace_back(uint32_t(n->ints[i]), eval(n->kids[i], c));
                 return st.mk_fun(kv);
             }
             case TUPLE: {
-                std::vector<uint32_t> el;
-                for (Node* k : n->kids) el.push_back(eval(k, c));
-                return st.mk_seq(el);
+                size_t base = stk_.size();
+                for (Node* k : n->kids) {
+                    uint32_t v = eval(k, c);
+                    stk_.push_back(v);
+                }
+                uint32_t out = st.intern(K_SEQ, stk_.data() + base, uint32_t(stk_.size() - base));
+                stk_.resize(base);
+                return out;
             }
             case EXCEPT: {
                 // ints: the @ slot, then per update its path depth; kids: base, then per
                 // update its keys and its value.
+                // The updates go into one copy of f's items, interned once at the end (the
+                // same value as interning after each update: the keys never change).
                 uint32_t f = eval(n->kids[0], c);
+                Kind k = st.kind(f);
                 size_t pos = 1;
+                int at_slot = int(n->ints[0]);
+                if (k != K_FUN && k != K_SEQ) {  // an error once a key is evaluated, or f itself
+                    for (size_t u = 1; u < n->ints.size(); ++u) {
+                        size_t depth = size_t(n->ints[u]);
+                        f = except_path(n, c, f, pos, depth, n->kids[pos + depth], at_slot);
+                        pos += depth + 1;
+                    }
+                    return f;
+                }
+                uint32_t len = st.len(f);
+                size_t base = stk_.size();
+                stk_.insert(stk_.end(), st.items(f), st.items(f) + (k == K_FUN ? 2 * len : len));
                 for (size_t u = 1; u < n->ints.size(); ++u) {
                     size_t depth = size_t(n->ints[u]);
-                    f = except_path(n, c, f, pos, depth, n->kids[pos + depth], int(n->ints[0]));
+                    Node* val = n->kids[pos + depth];
+                    uint32_t key = eval(n->kids[pos], c);
+                    size_t at = base + value_index(f, key, n->loc, &n->hint);
+                    uint32_t nv = except_value(n, c, stk_[at], pos, depth, val, at_slot);
+                    stk_[at] = nv;
                     pos += depth + 1;
                 }
-                return f;
+                uint32_t out = st.intern(k, stk_.data() + base, len);
+                stk_.resize(base);
+                return out;
             }
             case DOMAIN: return domain(eval(n->kids[0], c), n->loc);
             case LEN: return Store::mk_int(st.len(seq_of(eval(n->kids[0], c), n->loc, "Len")), n->loc);
@@ -708,13 +848,24 @@ public:
             case CARD: return Store::mk_int(st.len(set(n->kids[0], c)), n->loc);
             case BIND: bind(n, c); return eval(n->kids.back(), c);
             case BIND_MEMO: {
-                MemoKey key{n, {}};
-                for (size_t i = 0; i < n->ints.size(); ++i) key.args.push_back(eval(n->kids[i], c));
-                auto it = memo_.find(key);
-                if (it != memo_.end()) return it->second;
-                for (size_t i = 0; i < n->ints.size(); ++i) slots[size_t(n->ints[i])] = key.args[i];
+                // The arguments on the scratch stack; the lookup reuses one key (no
+                // allocation unless the call is new).
+                size_t na = n->ints.size(), base = stk_.size();
+                for (size_t i = 0; i < na; ++i) {
+                    uint32_t a = eval(n->kids[i], c);
+                    stk_.push_back(a);
+                }
+                probe_.node = n;
+                probe_.args.assign(stk_.begin() + ptrdiff_t(base), stk_.end());
+                auto it = memo_.find(probe_);
+                if (it != memo_.end()) {
+                    stk_.resize(base);
+                    return it->second;
+                }
+                for (size_t i = 0; i < na; ++i) slots[size_t(n->ints[i])] = stk_[base + i];
                 uint32_t v = eval(n->kids.back(), c);
-                memo_.emplace(std::move(key), v);
+                memo_.emplace(MemoKey{n, std::vector<uint32_t>(stk_.begin() + ptrdiff_t(base), stk_.begin() + ptrdiff_t(base + na))}, v);
+                stk_.resize(base);
                 return v;
             }
             case CHOOSE: {  // the first element in TLC's order that satisfies the predicate
@@ -865,6 +1016,7 @@ public:
         }
     };
     std::unordered_map<MemoKey, uint32_t, MemoHash> memo_;
+    MemoKey probe_;
 
     // An operator's arguments, evaluated into its parameters' slots (ints) before the body.
     void bind(Node* n, Ctx& c) {
@@ -874,6 +1026,24 @@ public:
         }
     }
     bool member_in(uint32_t x, Node* sd, Ctx& c) { return member_sd(x, sd, c); }
+
+    // A record literal's fields in TLC's order, when its names are distinct strings.
+    void rank_fields(Node* n) {
+        size_t nf = n->ints.size();
+        std::vector<uint32_t> order(nf);
+        for (size_t i = 0; i < nf; ++i) {
+            uint32_t key = uint32_t(n->ints[i]);
+            if (Store::is_int(key) || key >= st.vals.size() || st.kind(key) != K_STR) return;
+            order[i] = uint32_t(i);
+        }
+        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+            return st.cmp(uint32_t(n->ints[a]), uint32_t(n->ints[b])) < 0;
+        });
+        for (size_t i = 1; i < nf; ++i)
+            if (n->ints[order[i]] == n->ints[order[i - 1]]) return;
+        n->rank.assign(nf, 0);
+        for (size_t r = 0; r < nf; ++r) n->rank[order[r]] = uint32_t(r);
+    }
 
     // ------------------------------------------------------------ folding constants
     void fold(Node* n) {
@@ -936,9 +1106,7 @@ public:
     }
     int key_len() const { return view ? 1 : nvars; }
     uint64_t key_hash(const uint32_t* x) const {
-        uint64_t h = 0x12345;
-        for (int i = 0; i < key_len(); ++i) h = mix(h, x[i]);
-        return h;
+        return hash_ids(0x12345, x, size_t(key_len()));
     }
     static size_t shard_of(uint64_t h) { return (h >> 40) % Fresh::kShards; }
     // Index of the state, or -1 after adding it to the seen-set (then the caller stores it).
@@ -1075,6 +1243,7 @@ public:
     }
 
     void run() {
+        stk_.clear();
         std::vector<uint32_t> t(size_t(nvars), kUnset);
         try {
             try {
@@ -1372,6 +1541,7 @@ private:
     Node* prepare(py::handle node, const std::vector<uint32_t>& state,
                   const std::vector<std::pair<int64_t, uint32_t>>& binds) {
         if (state.size() != size_t(nvars)) throw std::invalid_argument("a state of the wrong length");
+        stk_.clear();
         Node* n = build(node);
         for (auto& b : binds) {
             if (b.first < 0) throw std::invalid_argument("a negative slot");
@@ -1401,6 +1571,10 @@ private:
     // without the GIL, so no member may create or free a Python object.
     py::object collected_;
     std::vector<uint32_t> buf_;
+    // Scratch of the expression being evaluated: each user appends its items at the end
+    // and truncates back (indices, not pointers, are held across a nested eval, which
+    // may grow it).  An evaluation error leaves items behind: cleared at each entry.
+    std::vector<uint32_t> stk_;
     std::vector<py::object> keep_;
     Fresh* fresh_ = nullptr;  // set in a worker during a level
     const Engine* master_ = nullptr;

@@ -26,7 +26,7 @@ BENCH = REPO / "bench" / "specs"
 ACCEPTED = {
     CORPUS: ["AllAssigned", "ConstraintEdge", "Constraints", "DropParam", "InitViolation", "JugPuzzle",
              "Latin1Comment", "NaiveMutex", "RecordAssignment", "RecordEnumeration", "SelectSeqTests", "TrafficView",
-             "TwoPhase", "VendingMachine"],
+             "TwoPhase", "VendingMachine", "WideRecords"],
     REALWORLD: ["Bakery", "DieHard", "DiningPhilosophers", "HourClock", "InfixOperators", "NestedExcept",
                 "Peterson", "RaftElection", "Semaphore", "TCommit", "TheoremsAndProofs"],
     MODELS: ["HydraulicPressFlat", "PLCopenAxis", "Protection"],
