@@ -6,6 +6,7 @@ Every frame the bridge sends is validated against the schema as it arrives.
 from __future__ import annotations
 
 import json
+import socket
 import time
 from pathlib import Path
 from typing import Any, Callable
@@ -20,9 +21,12 @@ Message = dict[str, Any]
 
 
 class LinkClient:
-    def __init__(self, ws_url: str, timeout: float = 10.0) -> None:
+    def __init__(self, ws_url: str, timeout: float = 10.0, receive_buffer: int | None = None) -> None:
+        """`receive_buffer`: a fixed socket receive buffer in bytes (the kernel's automatic
+        sizing off), for a client that must not read and see the bridge's backlog grow."""
         self.timeout = timeout
-        self.ws = websocket.create_connection(ws_url, timeout=timeout)
+        opts = ((socket.SOL_SOCKET, socket.SO_RCVBUF, receive_buffer),) if receive_buffer else ()
+        self.ws = websocket.create_connection(ws_url, timeout=timeout, sockopt=opts)
         self.hello = self.next()
         assert self.hello["type"] == "hello"
         self._id = 100
