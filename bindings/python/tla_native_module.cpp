@@ -568,16 +568,14 @@ public:
             default: return eval_node(n, c);
         }
     }
+    // Every node but the leaves, which eval() reads itself (its only caller).
     uint32_t eval_node(Node* n, Ctx& c) {
         switch (n->op) {
-            case CONST: return n->v;
-            case VAR: return c.s[n->ints[0]];
             case PVAR: {
                 uint32_t v = c.t ? c.t[n->ints[0]] : kUnset;
                 if (v == kUnset) fail("a primed variable is read before it is assigned", n->loc);
                 return v;
             }
-            case SLOT: case AT: return slots[size_t(n->ints[0])];
             case LETREF: {
                 uint32_t& sl = slots[size_t(n->ints[0])];
                 if (sl == kUnset) sl = eval(n->kids[0], c);
