@@ -192,8 +192,8 @@ def test_a_flooding_controller_keeps_control_while_it_heartbeats_and_excess_requ
     heartbeats: its answers pile up, yet the bridge keeps reading it, so every heartbeat
     arrives and control (and operator_link_ok) outlasts the 1 s lease. Each request is
     answered: by its result, or counted in a `busy` frame once the client reads.  (10,000
-    before session 8: on this machine the bridge took over a second to work through them,
-    so the heartbeats queued behind the flood in TCP could miss the lease.)
+    before session 8; with the fixed receive buffer 3,000 still back the answers up, and
+    the TCP backoff described above showed up more often with 10,000.)
     """
     n = 3_000
     operator.ws.sock.settimeout(30)  # a bridge that stopped reading would block the send: fail, not hang
