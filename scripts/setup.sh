@@ -41,7 +41,9 @@ stamp_src=$( (git ls-files -co --exclude-standard -- pyproject.toml CMakeLists.t
   | sort | xargs -r sha1sum 2>/dev/null | sha1sum | cut -d' ' -f1)
 if [ ! -f .setup-stamp ] || [ "$(cat .setup-stamp)" != "$stamp_src" ]; then
   log "installing the safestate Python package into .venv (builds the C++ binding)"
-  "$VPY" -m pip install -q --upgrade pip >/dev/null
+  # Current build tools first: a new venv's setuptools cannot build an sdist into a wheel
+  # without the `wheel` package, and --no-build-isolation builds with these.
+  "$VPY" -m pip install -q --upgrade pip setuptools wheel >/dev/null
   "$VPY" -m pip install -q scikit-build-core pybind11 >/dev/null
   "$VPY" -m pip install -q --no-build-isolation -e ".[test]"
   echo "$stamp_src" > .setup-stamp
@@ -55,13 +57,11 @@ fi
 # start several hundred).  Only stale files are rewritten (__pycache__ is git-ignored).
 "$VPY" -m compileall -q -j 0 python tests/python systems conform/cpp_mutants >/dev/null
 
-# 3. The C++ build tree (library, GoogleTest tests, benchmarks).  -O2 without -g: the
-# same code as RelWithDebInfo (GCC's -g does not change code generation), compiled in
-# ~25% less CPU (the Boost.Beast bridge: 45 s -> 33 s).  bench/run_bench.py and the
-# coverage build configure their own trees.
+# 3. The C++ build tree (library, GoogleTest tests, benchmarks): CMakePresets.json's `dev`
+# preset.  bench/run_bench.py and the coverage build configure their own trees.
 if [ ! -f build/cpp/build.ninja ] || ! grep -q '^CMAKE_CXX_FLAGS_RELEASE:STRING=-O2 -DNDEBUG$' build/cpp/CMakeCache.txt; then
-  log "configuring build/cpp"
-  cmake -S . -B build/cpp -G Ninja -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" >/dev/null
+  log "configuring build/cpp (preset dev)"
+  cmake --preset dev >/dev/null
 fi
 log "building build/cpp"
 cmake --build build/cpp -j"$(nproc)" | grep -vE '^\[[0-9]+/[0-9]+\]' || true

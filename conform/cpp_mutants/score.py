@@ -54,18 +54,34 @@ from mutate import REPO, Mutant, affected, prepare, translation_units  # noqa: E
 TARGETS = ("src/*.cpp", "include/safestate/*.hpp")
 
 
+def ensure_generator() -> Path:
+    """The `mutate` command of universalmutator, installed into this venv on first use from
+    pyproject.toml's `cppmutation` extra (kept out of the default install: its dependency
+    chain builds an sdist, and no other step needs it)."""
+    tool = Path(sys.executable).parent / "mutate"
+    if tool.exists():
+        return tool
+    extra = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))["project"]["optional-dependencies"]["cppmutation"]
+    print(f"installing the C++ mutant generator: {' '.join(extra)}", file=sys.stderr, flush=True)
+    r = subprocess.run([sys.executable, "-m", "pip", "install", "-q", *extra], capture_output=True, text=True)
+    if r.returncode != 0 or not tool.exists():
+        sys.exit(f"error: could not install {' '.join(extra)} (pyproject.toml, extra `cppmutation`):\n{r.stderr[-2000:]}")
+    return tool
+
+
 def generate(files: list[Path], work: Path) -> list[Mutant]:
     """universalmutator's mutants of each file, as exact substitutions (the changed line
     with enough surrounding lines to occur once in the original)."""
     out: list[Mutant] = []
     stems = [f.stem for f in files]
+    tool = ensure_generator()
     for f in files:
         # src/machine_state.cpp and include/safestate/machine_state.hpp share a stem: their
         # ids (CMake target names) must not collide
         prefix = f"um_{f.stem}" if stems.count(f.stem) == 1 else f"um_{f.stem}_{f.suffix[1:]}"
         d = work / f.name
         d.mkdir(parents=True, exist_ok=True)
-        subprocess.run([str(Path(sys.executable).parent / "mutate"), str(f), "cpp", "--noCheck", "--mutantDir", str(d)],
+        subprocess.run([str(tool), str(f), "cpp", "--noCheck", "--mutantDir", str(d)],
                        check=True, capture_output=True, cwd=d)
         orig = f.read_text(encoding="utf-8").splitlines(keepends=True)
         text = "".join(orig)
