@@ -46,6 +46,8 @@ exit codes (every subcommand):
         or binding module, unwritable output path): one line on stderr, no traceback
   12    an invariant is violated (check: TLC's code; prove: a counterexample)
   10/11/13/14  check: assumption / deadlock / liveness / Assert failure (TLC's codes)
+  13    prove: an invariant is ill-defined (a reachable evaluation TLA+ leaves undefined,
+        named with file:line:col and a trace)
   20    conform: the C++ disagrees with the model (a mismatch)
   21    conform: no mismatch, but the evidence is incomplete (a transition not covered,
         a table row never taken or a declared-unreachable row fired)
