@@ -35,6 +35,7 @@ from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token
 from .cfg import Config, ConfigEntry, parse_config
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
+from .int_range import check_numerals
 from .symmetry import SymmetryReduction, permutation_group
 from .temporal import Fairness, Obligation, TemporalCompiler
 
@@ -235,6 +236,7 @@ def _load_model(tla_path: str, cfg_path: str | None) -> Model:
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
     check_modules(module, loader)
+    check_numerals(loader.cache.values())
     register_token_order(tlc_intern_order(loader))
     constants, overrides = _constants(config, scope, module)
     compiler = Compiler(constants, overrides)

@@ -58,6 +58,17 @@ def _worker_main(model: Model, me: int, n: int, folder: str, conn: Connection, m
         conn.close()
 
 
+def shared_memory_dir() -> str | None:
+    """Where the workers' batch files go: $SAFESTATE_SHM_DIR, else /dev/shm (RAM), else
+    the temporary folder.  The coordinator removes its folder on every exit but SIGKILL
+    (`_expand_all`'s `finally`; SIGTERM is turned into an exception by the CLI, and
+    `deep_stack` forwards Ctrl-C and SIGTERM to the search thread)."""
+    env = os.environ.get("SAFESTATE_SHM_DIR")
+    if env:
+        return env
+    return "/dev/shm" if os.path.isdir("/dev/shm") else None
+
+
 class _Fallback(Exception):
     """The sharded search failed (a worker crashed): search again with one worker."""
 
@@ -71,11 +82,12 @@ class ParallelExplorer(Explorer):
         # (the search's critical path: what wall time would be on idle cores).
         self.worker_cpu = [0.0] * workers
         self.critical_cpu = 0.0
+        self.distinct_so_far = 0
 
     def _expand_all(self) -> None:
         if not self.states:
             return
-        folder = tempfile.mkdtemp(prefix="safestate-bfs-", dir="/dev/shm" if os.path.isdir("/dev/shm") else None)
+        folder = tempfile.mkdtemp(prefix="safestate-bfs-", dir=shared_memory_dir())
         ctx = multiprocessing.get_context("fork")
         conns: list[Connection] = []
         procs = []
@@ -140,6 +152,7 @@ class ParallelExplorer(Explorer):
     def _coordinate(self, conns: list[Connection]) -> None:
         distinct, depth = len(self.states), 1
         while True:
+            self.distinct_so_far = distinct  # for an interrupted search's report
             expanded = self._gather(conns)  # phase 1: (flagged, memory exceeded, generated, CPU s)
             if self._memory_exceeded(conns, expanded, distinct, depth):
                 return
