@@ -44,6 +44,7 @@ exit codes (every subcommand):
         evidence: a step failed (the package is still written) / --verify found a difference
   2     usage or input error (bad argument, missing or malformed file, unknown system
         or binding module, unwritable output path): one line on stderr, no traceback
+  3     check --tlc: TLC could not be run (TLA2TOOLS_JAR not a TLC jar, java failed)
   12    an invariant is violated (check: TLC's code; prove: a counterexample)
   10/11/13/14  check: assumption / deadlock / liveness / Assert failure (TLC's codes)
   20    conform: the C++ disagrees with the model (a mismatch)
@@ -52,8 +53,12 @@ exit codes (every subcommand):
   75/76 check: evaluation error in the next-state relation / an invariant
   150/151  check: TLA+ module / .cfg error (file:line:col on stderr)
   153   check: memory limit reached
-  130   interrupted
-  255   check: internal error
+  74    check: stdout or the --itf/--graph file could not be written (full disk);
+        the verdict is printed first
+  130   interrupted (check --json: one object, "result": "interrupted", counts so far)
+  143   terminated (SIGTERM)
+  255   check: internal error, or where TLC exits with 255 (a malformed .cfg, a number
+        beyond TLC's 32-bit integers)
 """
 
 
