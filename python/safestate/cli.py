@@ -13,7 +13,7 @@ import os
 import sys
 
 from . import __version__
-from .errors import closed_stdout_exit
+from .errors import SafestateError, closed_stdout_exit, one_line
 
 # name -> (module, one-line help).
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
@@ -55,6 +55,7 @@ exit codes (every subcommand):
   153   check: memory limit reached
   74    check: stdout or the --itf/--graph file could not be written (full disk);
         the verdict is printed first
+  124   evidence --verify: no difference, but a re-run check reached --check-timeout
   130   interrupted (check --json: one object, "result": "interrupted", counts so far)
   143   terminated (SIGTERM)
   255   check: internal error, or where TLC exits with 255 (a malformed .cfg, a number
@@ -100,7 +101,11 @@ def main(argv: list[str] | None = None) -> int:
         module.add_arguments(p)
         p.set_defaults(run=module.run)
     args = parser.parse_args(argv)
-    _resolve_system_names(args)
+    try:
+        _resolve_system_names(args)
+    except SafestateError as e:  # a malformed manifest of the system named
+        print(f"error: {one_line(e)}", file=sys.stderr)
+        return 2
     try:
         return int(args.run(args))
     except BrokenPipeError:  # a subcommand without its own guard; `... | head` is not an error

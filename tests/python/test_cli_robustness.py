@@ -183,3 +183,174 @@ def test_the_exit_code_table_lists_the_output_failure_code(capsys) -> None:
     assert "\n  74 " in out and "\n  3 " in out
     docs = (Path(__file__).resolve().parents[2] / "docs" / "index.md").read_text(encoding="utf-8")
     assert "| 74 " in docs or "`74`" in docs
+
+
+# ---------------------------------------------------------------- 6/7: located errors, TLC's codes
+LEVEL_CASES = {
+    # name: (definitions, cfg, TLC's exit code, text of the one error line)
+    "PrimedInit": ("Init == x' = 0\nNext == x' = x", "INIT Init\nNEXT Next\n", 75, "PrimedInit.tla:4:9:"),
+    "ActionInvariant": ("Init == x = 0\nNext == x' = 1 - x\nInv == x' = x", "INIT Init\nNEXT Next\nINVARIANT Inv\n",
+                        76, "is an action"),
+    "TemporalInvariant": ("Init == x = 0\nNext == x' = 1 - x\nInv == [](x = 0)",
+                          "INIT Init\nNEXT Next\nINVARIANT Inv\n", 76, "is a temporal formula"),
+    "ActionConstraint": ("Init == x = 0\nNext == x' = 1 - x\nC == x' = x", "INIT Init\nNEXT Next\nCONSTRAINT C\n",
+                         75, "is an action"),
+    "TemporalConstraint": ("Init == x = 0\nNext == x' = 1 - x\nC == [](x = 0)",
+                           "INIT Init\nNEXT Next\nCONSTRAINT C\n", 75, "is a temporal formula"),
+    "SpecIsInit": ("Init == x = 0\nNext == x' = 1 - x", "SPECIFICATION Init\n", 75, "no next-state action"),
+    "SymmetryNotASet": ("Init == x = 0\nNext == x' = 1 - x\nSym == 3", "INIT Init\nNEXT Next\nSYMMETRY Sym\n",
+                        255, "must specify a set of functions"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(LEVEL_CASES))
+def test_an_ill_levelled_or_ill_typed_cfg_entry_gives_tlcs_exit_code(tla_dir, name: str) -> None:
+    defs, cfg, code, text = LEVEL_CASES[name]
+    tla = tla_dir(name, f"---- MODULE {name} ----\nEXTENDS Naturals\nVARIABLE x\n{defs}\n====\n", cfg)
+    p = run_safestate("check", str(tla))
+    assert p.returncode == code, p.stdout + p.stderr
+    errors = [x for x in lines(p.stderr) if "error:" in x]
+    assert len(errors) == 1 and text in errors[0] and f"{name}.tla:" in errors[0], p.stderr
+
+
+def test_a_latin1_comment_in_the_cfg_is_accepted_as_tlc_does_and_a_binary_cfg_is_located(tla_dir) -> None:
+    tla = counter(tla_dir, "Latin")
+    cfg = tla.with_suffix(".cfg")
+    cfg.write_bytes(b"INIT Init \\* caf\xe9\nNEXT Next\nCONSTANT N = 3\nINVARIANT Inv\n")
+    p = run_safestate("check", str(tla), "--json")
+    assert p.returncode == 0, p.stderr
+    assert json.loads(p.stdout)["distinct_states"] == 3
+    cfg.write_bytes(b"INIT Init\nNEXT \x00\xff\xfe\n")
+    p = run_safestate("check", str(tla))
+    assert p.returncode == 255 and "Latin.cfg:2:6:" in p.stderr and "Traceback" not in p.stderr, p.stderr
+
+
+def test_a_missing_file_is_named_without_a_fake_position(tla_dir, tmp_path) -> None:
+    p = run_safestate("check", str(tmp_path / "NoSuch.tla"))
+    assert p.returncode == 150 and ":0:0" not in p.stderr and "NoSuch.tla" in p.stderr, p.stderr
+    p = run_safestate("check", str(counter(tla_dir)), "--config", str(tmp_path / "none.cfg"), "--json")
+    assert p.returncode == 151 and ":0:0" not in p.stderr, p.stderr
+    err = json.loads(p.stdout)["error"]
+    assert err["file"].endswith("none.cfg") and err["line"] is None
+
+
+def test_a_negative_max_memory_is_a_usage_error(tla_dir) -> None:
+    p = run_safestate("check", str(counter(tla_dir)), "--max-memory", "-5")
+    assert p.returncode == 2 and "--max-memory" in p.stderr, p.stderr
+
+
+def test_a_tla2tools_jar_that_is_not_tlc_is_its_own_error_not_a_disagreement(tla_dir, tmp_path) -> None:
+    bogus = tmp_path / "tla2tools.jar"
+    bogus.write_text("not a jar")
+    env = dict(os.environ, TLA2TOOLS_JAR=str(bogus))
+    env["PYTHONPATH"] = str(PYTHON_DIR) + os.pathsep + env.get("PYTHONPATH", "")
+    p = subprocess.run([sys.executable, "-m", "safestate.cli", "check", str(counter(tla_dir)), "--tlc"],
+                       capture_output=True, text=True, env=env, timeout=300)
+    assert p.returncode == 3, p.stderr
+    assert "DISAGREES" not in p.stderr and "not a jar" in p.stderr
+
+
+# ---------------------------------------------------------------- 6: the registry and the evidence manifest
+REPO = Path(__file__).resolve().parents[2]
+AXIS = f'''name = "Axis"
+design = "{REPO}/docs/design/system-state-manager.md"
+model = "{REPO}/models/PLCopenAxis.tla"
+configs = ["{REPO}/models/PLCopenAxis.cfg"]
+'''
+BROKEN = {
+    "toml": ('name = "Broken"\nmodel = [\n', "system.toml:3:1: malformed TOML"),
+    "wrong type": ('name = "Broken"\ndesign = "d"\nmodel = 3\nconfigs = ["c.cfg"]\n', "system.toml:3: 'model' must be a str"),
+    "no configs": ('name = "Broken"\ndesign = "d"\nmodel = "m.tla"\nconfigs = []\n', "'configs' is empty"),
+    "steps not a number": ('name = "Broken"\ndesign = "d"\nmodel = "m.tla"\nconfigs = ["c.cfg"]\n'
+                           '[conformance]\nbinding = "b"\nadapter = "a.py"\nclass = "A"\nhypothesis_steps = "many"\n',
+                           "malformed manifest"),
+    "not UTF-8": ('name = "Br\udcffoken"\n', "system.toml:1: the manifest is not UTF-8"),
+}
+
+
+def _registry(tmp: Path, broken: str) -> Path:
+    d = tmp / "systems"
+    (d / "Axis").mkdir(parents=True)
+    (d / "Axis" / "system.toml").write_text(AXIS, encoding="utf-8")
+    (d / "Broken").mkdir()
+    (d / "Broken" / "system.toml").write_bytes(broken.encode("utf-8", "surrogateescape"))
+    return d
+
+
+@pytest.mark.parametrize("case", sorted(BROKEN))
+def test_a_malformed_manifest_breaks_only_its_own_system(case, tmp_path, capsys, monkeypatch) -> None:
+    from safestate.cli import main
+    text, located = BROKEN[case]
+    monkeypatch.setenv("SAFESTATE_SYSTEMS", str(_registry(tmp_path, text)))
+    assert main(["check", "Axis"]) == 0, capsys.readouterr().err
+    capsys.readouterr()
+    for argv in (["check", "Broken"], ["prove", "Broken"], ["conform", "Broken"]):
+        code = main(argv)
+        err = capsys.readouterr().err
+        assert code == 2, f"{argv}: {err}"
+        assert "Traceback" not in err
+        errors = [x for x in lines(err) if x.startswith("error:")]
+        assert len(errors) == 1 and located in errors[0] and "Broken" in errors[0], f"{argv}: {err}"
+    assert main(["systems"]) == 2
+    out, err = capsys.readouterr()
+    assert "Axis" in out and located in err
+
+
+def _package(tmp: Path, manifest: str) -> Path:
+    pkg = tmp / "pkg"
+    pkg.mkdir()
+    (pkg / "manifest.json").write_text(manifest, encoding="utf-8")
+    return pkg
+
+
+@pytest.mark.parametrize("manifest, text", [
+    ("[1, 2]", "not an object"),
+    ('{"inputs": {}, "outputs": {}}', "'root'"),
+    ('{"root": "/", "inputs": [], "outputs": {}}', "'inputs'"),
+    ('{"root": "/", "inputs": {}, "outputs": {}, "checks": [{"system": 1}]}', "checks[0]"),
+    ("[" * 100000 + "]" * 100000, "not a JSON manifest"),
+])
+def test_a_malformed_evidence_manifest_is_a_located_difference_not_a_traceback(manifest, text, tmp_path, capsys) -> None:
+    from safestate.cli import main
+    code = main(["evidence", "--verify", str(_package(tmp_path, manifest))])
+    out, err = capsys.readouterr()
+    assert code == 1, out + err
+    assert "manifest.json" in out and text in out and "internal error" not in out + err
+
+
+def test_evidence_verify_stops_a_check_at_its_time_limit_and_says_so(tmp_path, capsys) -> None:
+    spec = tmp_path / "Endless.tla"
+    spec.write_text("---- MODULE Endless ----\nEXTENDS Naturals\nVARIABLE x\nInit == x = 0\nNext == x' = x + 1\n====\n")
+    (tmp_path / "Endless.cfg").write_text("INIT Init\nNEXT Next\n")
+    doc = {"root": str(tmp_path), "inputs": {}, "outputs": {},
+           "checks": [{"system": "Endless", "model": "Endless.tla", "cfg": "Endless.cfg", "result": "success"}]}
+    from safestate.cli import main
+    code = main(["evidence", "--verify", str(_package(tmp_path, json.dumps(doc))), "--check-timeout", "3"])
+    out, err = capsys.readouterr()
+    assert code == 124, out + err
+    assert "TIMEOUT: check Endless: timed out after 3 s" in out and "not verified" in out
+
+
+def test_conform_of_a_system_without_conformance_is_a_usage_error(capsys, monkeypatch) -> None:
+    from safestate.cli import main
+    monkeypatch.chdir(REPO)
+    assert main(["conform", "PLCopenAxis"]) == 2
+    err = capsys.readouterr().err
+    assert "no [conformance] section" in err and "AssertionError" not in err
+
+
+def test_conform_refuses_deeply_nested_json_with_a_located_line(tmp_path, capsys, monkeypatch) -> None:
+    from safestate.cli import main
+    deep = tmp_path / "deep.json"
+    deep.write_text("[" * 100000 + "]" * 100000)
+    monkeypatch.chdir(REPO)
+    assert main(["conform", "SystemStateManager", "--replay", str(deep)]) == 2
+    err = capsys.readouterr().err
+    assert "deep.json: malformed" in err and "nested too deeply" in err and "internal error" not in err
+
+
+def test_prove_rejects_a_negative_depth_as_a_usage_error(capsys) -> None:
+    from safestate.cli import main
+    with pytest.raises(SystemExit) as e:
+        main(["prove", str(REPO / "models" / "PLCopenAxis.tla"), "--depth", "-1"])
+    assert e.value.code == 2 and "--depth" in capsys.readouterr().err
