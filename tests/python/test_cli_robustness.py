@@ -354,3 +354,38 @@ def test_prove_rejects_a_negative_depth_as_a_usage_error(capsys) -> None:
     with pytest.raises(SystemExit) as e:
         main(["prove", str(REPO / "models" / "PLCopenAxis.tla"), "--depth", "-1"])
     assert e.value.code == 2 and "--depth" in capsys.readouterr().err
+
+
+# ---------------------------------------------------------------- 7: parse errors that say what was expected
+HEAD = "---- MODULE E ----\nEXTENDS Naturals\nVARIABLE x\n"
+PARSE_CASES = {
+    # name: (module text, position, text the message must contain)
+    "missing ====": (HEAD + "Init == x = 0\nNext == x' = x\n", "5:15", "expected a line ===="),
+    "empty body before a definition": (HEAD + "Init ==\nNext == x' = x\n====\n", "5:1",
+                                       "definition of Init (line 4) has no body"),
+    "empty body at the end": (HEAD + "Init == x = 0\nNext == x' = x\nInv ==\n====\n", "7:1",
+                              "definition of Inv (line 6) has no body"),
+    "empty file": ("", "1:1", "the file is empty"),
+    "no module header": ("VARIABLE x\nInit == x = 0\n====\n", "1:1", "expected a module header"),
+    "operator without operand at the end": (HEAD + "Init == x = 0\nNext == x' = x\nInv == x \\in\n====\n", "7:1",
+                                            "expected an expression after '\\in' (line 6, column 10)"),
+    "operand missing before a definition": (HEAD + "Init == x = 0 +\nNext == x' = x\n====\n", "5:6",
+                                            "expected an operand after '+'"),
+    "stray closing bracket": (HEAD + "Init == x = 0\nNext == x' = x )\n====\n", "5:16",
+                              "')' without a matching opening bracket"),
+    "trailing comma": (HEAD + "Init == x \\in {1, }\nNext == x' = x\n====\n", "4:19",
+                       "expected an expression after ',', found '}'"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(PARSE_CASES))
+def test_a_parse_error_says_what_was_expected_where_the_parse_stops(tmp_path, name: str) -> None:
+    text, where, says = PARSE_CASES[name]
+    (tmp_path / "E.tla").write_text(text, encoding="utf-8")
+    (tmp_path / "E.cfg").write_text("INIT Init\nNEXT Next\n")
+    p = run_safestate("check", str(tmp_path / "E.tla"))
+    assert p.returncode == 150, p.stderr
+    errors = [x for x in lines(p.stderr) if "error:" in x]
+    assert len(errors) == 1, p.stderr
+    assert f"E.tla:{where}: error: parse error:" in errors[0] and says in errors[0], errors[0]
+    assert "unexpected input" not in errors[0]
