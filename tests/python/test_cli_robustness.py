@@ -389,3 +389,21 @@ def test_a_parse_error_says_what_was_expected_where_the_parse_stops(tmp_path, na
     assert len(errors) == 1, p.stderr
     assert f"E.tla:{where}: error: parse error:" in errors[0] and says in errors[0], errors[0]
     assert "unexpected input" not in errors[0]
+
+
+@pytest.mark.parametrize("expr, shown", [("x + 1", "2147483647+1"), ("x * 2", "2147483647*2"),
+                                         ("0 - x - 10", "-2147483647-10"), ("2 ^ 40", "2^40")])
+def test_arithmetic_beyond_tlcs_32_bit_ints_is_tlcs_overflow_error(tla_dir, expr: str, shown: str) -> None:
+    """TLC's Naturals: "Overflow when computing a+b" (EC.TLC_MODULE_OVERFLOW), exit 255
+    while computing successors -- never a number TLC cannot hold."""
+    tla = tla_dir("Over", f"""---- MODULE Over ----
+EXTENDS Integers
+VARIABLE x
+Init == x = 2147483640
+Next == x' = IF x < 2147483647 THEN x + 1 ELSE {expr}
+====
+""", "INIT Init\nNEXT Next\n")
+    p = run_safestate("check", str(tla), "--json")
+    assert p.returncode == 255, p.stdout + p.stderr
+    doc = json.loads(p.stdout)
+    assert doc["result"] == "error" and doc["error"]["message"] == f"Overflow when computing {shown}"
