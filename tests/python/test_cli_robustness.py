@@ -407,3 +407,12 @@ Next == x' = IF x < 2147483647 THEN x + 1 ELSE {expr}
     assert p.returncode == 255, p.stdout + p.stderr
     doc = json.loads(p.stdout)
     assert doc["result"] == "error" and doc["error"]["message"] == f"Overflow when computing {shown}"
+
+
+def test_the_evidence_package_is_not_built_without_a_system_whose_manifest_is_broken(tmp_path) -> None:
+    """Tolerating a broken manifest must not leave its system out of the evidence unnoticed."""
+    from safestate.evidence.build import select_systems
+    from safestate.systems.registry import RegistryError
+    d = _registry(tmp_path, BROKEN["toml"][0])
+    with pytest.raises(RegistryError, match="system.toml:3:1"):
+        select_systems(d.parent, [])
