@@ -209,6 +209,8 @@ def _json_error(e: TlaError, seconds: float, counts: CheckResult | None = None) 
 
 
 def _run(args: argparse.Namespace, start: float) -> int:
+    from .explore import RUNNING
+    RUNNING.clear()  # an interrupted search reports its own counts, not an earlier one's
     workers = args.workers
     model = load_model(args.model, args.config)
     progress = None if args.json else print_progress

@@ -481,7 +481,7 @@ def counts_so_far() -> dict[str, int]:
     if not RUNNING:
         return {"distinct_states": 0, "states_generated": 0, "depth": 0, "left_on_queue": 0}
     e = RUNNING[0]
-    distinct = int(getattr(e, "distinct_so_far", len(e.states)))
+    distinct = max(int(getattr(e, "distinct_so_far", 0)), len(e.states))
     return {"distinct_states": distinct, "states_generated": e.generated, "depth": e.max_level,
             "left_on_queue": max(0, distinct - e.head)}
 
