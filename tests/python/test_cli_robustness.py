@@ -375,6 +375,8 @@ PARSE_CASES = {
                               "')' without a matching opening bracket"),
     "trailing comma": (HEAD + "Init == x \\in {1, }\nNext == x' = x\n====\n", "4:19",
                        "expected an expression after ',', found '}'"),
+    "two operands in the last definition": (HEAD + "Init == x = 0\nNext == x' = x x\n====\n", "5:16",
+                                            "unexpected 'x' after 'x'"),
 }
 
 

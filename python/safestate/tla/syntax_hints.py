@@ -157,6 +157,9 @@ def explain_unexpected(file: str, data: bytes, start: int, snippet: str, whole_m
             p = _loc(file, data, last.start(1) + tail.start(1))
             return (f"parse error: expected an expression after {_q(tail.group(1).decode('utf-8', 'replace'))} "
                     f"(line {p.line}, column {p.column}), found the end of the module (====)", _loc(file, data, end))
+        inner = _localise(data, end)
+        if inner is not None:
+            return explain_unexpected(file, data, inner, _word_at(data, inner), False)
         return f"parse error: unexpected input {_q(snippet)}", _loc(file, data, start)
     if data[start - 1:start + 1] == b"==":
         start -= 1  # recovery split the `==` of the next definition
@@ -237,3 +240,24 @@ def _skip_blank(data: bytes, pos: int) -> int:
         else:
             break
     return pos
+
+
+def _localise(data: bytes, end: int) -> int | None:
+    """Where the parse really fails when tree-sitter's recovery gave up on the whole
+    module: the error in the last definition (before ====) recovers once another
+    definition follows it, so parse again with a dummy one inserted there."""
+    try:
+        import tree_sitter
+        import tree_sitter_tlaplus
+    except ImportError:
+        return None
+    probe = data[:end] + b"\nSafestateProbe__ == TRUE\n" + data[end:]
+    root = tree_sitter.Parser(tree_sitter.Language(tree_sitter_tlaplus.language())).parse(probe).root_node
+    stack = [root]
+    while stack:
+        n = stack.pop()
+        if (n.type == "ERROR" or n.is_missing) and n.start_byte < end:
+            return None if n.start_point == root.start_point else n.start_byte
+        if n.has_error:
+            stack.extend(reversed(n.children))
+    return None
