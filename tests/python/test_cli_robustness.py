@@ -85,12 +85,12 @@ Next == /\\ x' = x + 1
 """, "INIT Init\nNEXT Next\n")
 
 
-def _start(*args: str, env_extra: dict[str, str] | None = None) -> subprocess.Popen:
+def _start(*args: str, env_extra: dict[str, str] | None = None, new_session: bool = False) -> subprocess.Popen:
     env = dict(os.environ)
     env["PYTHONPATH"] = str(PYTHON_DIR) + os.pathsep + env.get("PYTHONPATH", "")
     env.update(env_extra or {})
     return subprocess.Popen([sys.executable, "-m", "safestate.cli", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env)
+                            stderr=subprocess.PIPE, text=True, env=env, start_new_session=new_session)
 
 
 def _wait_for(p: subprocess.Popen, text: str) -> list[str]:
@@ -118,16 +118,23 @@ def test_ctrl_c_with_json_still_writes_one_json_object_with_the_counts_so_far(tl
 
 @pytest.mark.skipif(len(os.sched_getaffinity(0)) < 2, reason="one core: --workers 2 is capped at one worker")
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
-def test_the_parallel_search_leaves_no_shared_memory_behind_when_stopped(tla_dir, tmp_path, sig, code) -> None:
+@pytest.mark.parametrize("group", [False, True], ids=["to the coordinator", "to the process group (Ctrl-C)"])
+def test_the_parallel_search_leaves_no_shared_memory_behind_when_stopped(tla_dir, tmp_path, sig, code,
+                                                                          group) -> None:
     shm = tmp_path / "shm"
     shm.mkdir()
-    p = _start("check", str(_parallel_spec(tla_dir)), "--workers", "2", env_extra={"SAFESTATE_SHM_DIR": str(shm)})
+    p = _start("check", str(_parallel_spec(tla_dir)), "--workers", "2", env_extra={"SAFESTATE_SHM_DIR": str(shm)},
+               new_session=group)
     _wait_for(p, "under way")
     assert list(shm.iterdir()), "the parallel search should have its folder while it runs"
-    p.send_signal(sig)
+    if group:
+        os.killpg(p.pid, sig)
+    else:
+        p.send_signal(sig)
     out, err = p.communicate(timeout=120)
     assert p.returncode == code, err
     assert "Traceback" not in err
+    assert "searching again with one worker" not in err  # the workers leave stopping to the coordinator
     assert list(shm.iterdir()) == []
 
 
