@@ -193,6 +193,11 @@ def test_the_exit_code_table_lists_the_output_failure_code(capsys) -> None:
 
 
 # ---------------------------------------------------------------- 6/7: located errors, TLC's codes
+# The exit codes are TLC 1.8.0's, measured (tla2tools.jar built from tlaplus/tlaplus):
+# 75 "In evaluation, the identifier x is either undefined..." (primed Init, action
+# CONSTRAINT), 76 "The invariant Inv is not a state predicate", 75 "TLC encountered a
+# temporal formula" (temporal CONSTRAINT), 75 "No next state actions defined",
+# 255 "The symmetry operator must specify a set of functions" (RuntimeException).
 LEVEL_CASES = {
     # name: (definitions, cfg, TLC's exit code, text of the one error line)
     "PrimedInit": ("Init == x' = 0\nNext == x' = x", "INIT Init\nNEXT Next\n", 75, "PrimedInit.tla:4:9:"),
@@ -364,19 +369,21 @@ def test_prove_rejects_a_negative_depth_as_a_usage_error(capsys) -> None:
 
 
 # ---------------------------------------------------------------- 7: parse errors that say what was expected
+# Positions are SANY's (TLC 1.8.0's "Encountered ... at line L, column C"), but for the
+# empty file (SANY: line 0, column 0).
 HEAD = "---- MODULE E ----\nEXTENDS Naturals\nVARIABLE x\n"
 PARSE_CASES = {
     # name: (module text, position, text the message must contain)
     "missing ====": (HEAD + "Init == x = 0\nNext == x' = x\n", "5:15", "expected a line ===="),
     "empty body before a definition": (HEAD + "Init ==\nNext == x' = x\n====\n", "5:1",
                                        "definition of Init (line 4) has no body"),
-    "empty body at the end": (HEAD + "Init == x = 0\nNext == x' = x\nInv ==\n====\n", "7:1",
+    "empty body at the end": (HEAD + "Init == x = 0\nNext == x' = x\nInv ==\n====\n", "6:1",
                               "definition of Inv (line 6) has no body"),
     "empty file": ("", "1:1", "the file is empty"),
     "no module header": ("VARIABLE x\nInit == x = 0\n====\n", "1:1", "expected a module header"),
     "operator without operand at the end": (HEAD + "Init == x = 0\nNext == x' = x\nInv == x \\in\n====\n", "7:1",
                                             "expected an expression after '\\in' (line 6, column 10)"),
-    "operand missing before a definition": (HEAD + "Init == x = 0 +\nNext == x' = x\n====\n", "5:6",
+    "operand missing before a definition": (HEAD + "Init == x = 0 +\nNext == x' = x\n====\n", "5:1",
                                             "expected an operand after '+'"),
     "stray closing bracket": (HEAD + "Init == x = 0\nNext == x' = x )\n====\n", "5:16",
                               "')' without a matching opening bracket"),

@@ -146,9 +146,12 @@ def explain_unexpected(file: str, data: bytes, start: int, snippet: str, whole_m
     if empty is not None and (whole_module or empty[1] <= start):
         name, at, nxt = empty
         o = _loc(file, data, at)
-        what = "the end of the module (====)" if data.startswith(b"====", nxt) else _q(_word_at(data, nxt))
+        at_end = data.startswith(b"====", nxt)
+        what = "the end of the module (====)" if at_end else _q(_word_at(data, nxt))
+        # SANY points at the next definition, or at the empty one itself before ====.
+        where = _loc(file, data, data.rfind(b"\n", 0, at) + 1) if at_end else _loc(file, data, nxt)
         return (f"parse error: the definition of {name} (line {o.line}) has no body: expected an expression "
-                f"after '==', found {what}", _loc(file, data, nxt))
+                f"after '==', found {what}", where)
     if whole_module:
         end = _module_end(data)
         last = _TOKEN_BEFORE.search(data[:end].rstrip())
@@ -185,7 +188,7 @@ def explain_unexpected(file: str, data: bytes, start: int, snippet: str, whole_m
         where = _loc(file, data, last.start(1))
         return (f"parse error: the expression ending at line {where.line} is unfinished: expected an operand "
                 f"after {_q(last.group(1).decode('utf-8', 'replace'))} before the definition of "
-                f"{new_def.group(1).decode()} starts", _loc(file, data, start))
+                f"{new_def.group(1).decode()} starts", _loc(file, data, line_start))
     if found[:1] in (")", "]", "}") or found.startswith(">>"):
         return (f"parse error: {_q(found[:2] if found.startswith('>>') else found[:1])} without a matching "
                 f"opening bracket", _loc(file, data, start))
