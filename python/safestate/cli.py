@@ -13,7 +13,7 @@ import os
 import sys
 
 from . import __version__
-from .errors import closed_stdout_exit
+from .errors import SafestateError, closed_stdout_exit, one_line
 
 # name -> (module, one-line help).
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
@@ -44,6 +44,7 @@ exit codes (every subcommand):
         evidence: a step failed (the package is still written) / --verify found a difference
   2     usage or input error (bad argument, missing or malformed file, unknown system
         or binding module, unwritable output path): one line on stderr, no traceback
+  3     check --tlc: TLC could not be run (TLA2TOOLS_JAR not a TLC jar, java failed)
   12    an invariant is violated (check: TLC's code; prove: a counterexample)
   10/11/13/14  check: assumption / deadlock / liveness / Assert failure (TLC's codes)
   13    prove: an invariant is ill-defined (a reachable evaluation TLA+ leaves undefined,
@@ -54,8 +55,13 @@ exit codes (every subcommand):
   75/76 check: evaluation error in the next-state relation / an invariant
   150/151  check: TLA+ module / .cfg error (file:line:col on stderr)
   153   check: memory limit reached
-  130   interrupted
-  255   check: internal error
+  74    check: stdout or the --itf/--graph file could not be written (full disk);
+        the verdict is printed first
+  124   evidence --verify: no difference, but a re-run check reached --check-timeout
+  130   interrupted (check --json: one object, "result": "interrupted", counts so far)
+  143   terminated (SIGTERM)
+  255   check: internal error, or where TLC exits with 255 (a malformed .cfg, a number
+        beyond TLC's 32-bit integers)
 """
 
 
@@ -97,7 +103,11 @@ def main(argv: list[str] | None = None) -> int:
         module.add_arguments(p)
         p.set_defaults(run=module.run)
     args = parser.parse_args(argv)
-    _resolve_system_names(args)
+    try:
+        _resolve_system_names(args)
+    except SafestateError as e:  # a malformed manifest of the system named
+        print(f"error: {one_line(e)}", file=sys.stderr)
+        return 2
     try:
         return int(args.run(args))
     except BrokenPipeError:  # a subcommand without its own guard; `... | head` is not an error

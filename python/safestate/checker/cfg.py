@@ -68,8 +68,10 @@ def _tokenize(text: str, file: str) -> list[_Tok]:
     while pos < len(text):
         m = _TOKEN.match(text, pos)
         if m is None:
-            raise TlaError("config", f"unexpected character {text[pos]!r} in configuration file",
-                           Loc(file, line, pos - line_start + 1))
+            what = ("a byte that is not UTF-8 text" if text[pos] == "\ufffd"
+                    else f"unexpected character {text[pos]!r}")
+            raise TlaError("config", f"{what} in configuration file (expected a keyword, a name, a number, "
+                           f"a string or one of = <- {{ }} , )", Loc(file, line, pos - line_start + 1))
         s = m.group(0)
         if not (s.isspace() or s.startswith("\\*") or s.startswith("(*")):
             toks.append(_Tok(s, Loc(file, line, pos - line_start + 1)))
@@ -81,13 +83,20 @@ def _tokenize(text: str, file: str) -> list[_Tok]:
     return toks
 
 
+# TLC's ints are Java ints: ModelConfig reads a number with Integer.parseInt, which
+# throws for anything larger (TLC: "TLC threw an unexpected exception", exit 255).
+TLC_MAX_INT = 2**31 - 1
+
+
 def parse_config(path: str) -> Config:
     try:
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
+        with open(path, "rb") as f:
+            data = f.read()
     except OSError as e:
         raise TlaError("config", f"cannot read configuration file: {e.strerror}", Loc(path, 0, 0)) from None
-    return parse_config_text(text, path)
+    # As TLC's reader (a UTF-8 InputStreamReader): a byte that is not UTF-8 becomes
+    # U+FFFD, harmless in a comment, an unexpected character elsewhere.
+    return parse_config_text(data.decode("utf-8", errors="replace"), path)
 
 
 def parse_config_text(text: str, file: str) -> Config:
@@ -182,6 +191,10 @@ def _value(toks: list[_Tok], i: int, const: str, inside: str | None = None) -> t
                        f"It was expecting {expected}, but did not find it. (TLC 1.8.0 reads no tuple or negative "
                        f"number in a .cfg: define the value in the spec and write {const} <- ItsName)", t.loc)
     if re.match(r"\d+$", s):
+        if len(s.lstrip("0")) > 10 or int(s) > TLC_MAX_INT:
+            raise TlaError("config", f"the number {s} in the value of constant {const} is too big for TLC, whose "
+                           f"integers are 32-bit (at most {TLC_MAX_INT}); TLC stops with "
+                           f"NumberFormatException: For input string: \"{s}\"", t.loc)
         return int(s), i + 1
     if s.startswith('"'):
         return re.sub(r"\\(.)", r"\1", s[1:-1]), i + 1

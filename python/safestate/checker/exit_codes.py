@@ -14,6 +14,10 @@ ERROR_SYSTEM = 153           # memory limit reached
 ERROR = 255                  # internal error
 USAGE = 2                    # an unusable argument (unwritable --itf/--graph): `safestate --help`
 SECOND_OPINION_DISAGREES = 1  # `--tlc`: TLC's verdict or counts differ from ours
+SECOND_OPINION_FAILED = 3    # `--tlc`: TLC could not be run (TLA2TOOLS_JAR not a working jar)
+OUTPUT_FAILED = 74           # stdout, --itf or --graph could not be written (sysexits' EX_IOERR)
+INTERRUPTED = 130            # Ctrl-C (128 + SIGINT)
+TERMINATED = 143             # SIGTERM (128 + SIGTERM)
 
 BY_KIND = {
     "syntax": ERROR_SPEC_PARSE,
@@ -28,6 +32,8 @@ BY_KIND = {
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,
     "memory": ERROR_SYSTEM,
+    "integer too big": ERROR,    # a numeral beyond 32 bits: TLC's EC.TLC_INTEGER_TOO_BIG has no exit status of its own
+    "general": ERROR,            # TLC's Assert.fail(message): EC.GENERAL, exit 255
 }
 
 BY_RESULT = {

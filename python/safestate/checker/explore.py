@@ -452,6 +452,7 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
     cpu_start = time.process_time()
+    RUNNING[:] = [explorer]
     result = call_with_deep_stack(explorer.run)
     if workers > 1:
         result.parallel = explorer.cpu_report(time.process_time() - cpu_start)  # type: ignore[attr-defined]
@@ -467,6 +468,22 @@ def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memo
         _check_postcondition(model, result)
     result.seconds = time.monotonic() - start
     return result
+
+
+# The search under way (one at a time per process): what `counts_so_far` reads when the
+# search is interrupted (Ctrl-C with --json still reports how far it got).
+RUNNING: list[Explorer] = []
+
+
+def counts_so_far() -> dict[str, int]:
+    """Distinct and generated states, depth and queue of the search under way (zeros
+    before it started)."""
+    if not RUNNING:
+        return {"distinct_states": 0, "states_generated": 0, "depth": 0, "left_on_queue": 0}
+    e = RUNNING[0]
+    distinct = max(int(getattr(e, "distinct_so_far", 0)), len(e.states))
+    return {"distinct_states": distinct, "states_generated": e.generated, "depth": e.max_level,
+            "left_on_queue": max(0, distinct - e.head)}
 
 
 STATE_LEVEL_KINDS = ("eventually", "leadsto", "infinitely", "stable", "stays", "init_always", "init_eventually",

@@ -35,6 +35,7 @@ from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token
 from .cfg import Config, ConfigEntry, parse_config
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
+from .int_range import check_numerals
 from .symmetry import SymmetryReduction, permutation_group
 from .temporal import Fairness, Obligation, TemporalCompiler
 
@@ -235,6 +236,7 @@ def _load_model(tla_path: str, cfg_path: str | None) -> Model:
     loader = ModuleLoader(module)
     scope, var_syms = build_root_scope(module, loader)
     check_modules(module, loader)
+    check_numerals(loader.cache.values())
     register_token_order(tlc_intern_order(loader))
     constants, overrides = _constants(config, scope, module)
     compiler = Compiler(constants, overrides)
@@ -421,14 +423,22 @@ def _lookup_def(model: Model, entry: ConfigEntry, what: str) -> DefSym:
     return sym
 
 
+# TLC's exit status for a cfg entry above state level: an INVARIANT is its
+# TLC_INVARIANT_VIOLATED_LEVEL (76, SpecProcessor.processConfigInvariants); a CONSTRAINT
+# is not level-checked, it fails to evaluate on the first state (75).
+_LEVEL_KIND = {"invariant": "invariant eval", "constraint": "eval"}
+
+
 def _predicate(model: Model, entry: ConfigEntry, what: str, action: bool = False, boolean: bool = True) -> Named:
     sym = _lookup_def(model, entry, what)
     if sym.defn.params:
         raise TlaError("config", f"The {what} {entry.name} must be an operator without arguments.", entry.loc)
     info = model.compiler.def_info(sym)
-    if info.action and not action:
-        raise TlaError("config", f"The {what} {entry.name} is an action; only state predicates are allowed here.",
-                       sym.defn.loc)
+    temporal = what in _LEVEL_KIND and TemporalCompiler(model).is_temporal(sym.defn.body, sym.scope)
+    if (info.action or temporal) and not action:
+        level = "a temporal formula" if temporal else "an action"
+        raise TlaError(_LEVEL_KIND.get(what, "config"), f"The {what} {entry.name} is {level}; only state "
+                       f"predicates are allowed here.", sym.defn.loc)
     code, size = model.compiler.compile_unit(A.Name(sym.defn.loc, entry.name), model.scope)
     loc = sym.defn.loc
     if boolean and not info.vars and not info.action:
@@ -531,7 +541,12 @@ def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
 
     visit(sym.defn.body, 0)
     if not nexts:
-        raise TlaError("config", f"The specification {entry.name} has no [][Next]_vars conjunct.", sym.defn.loc)
+        cfg = model.config
+        # TLC: with an invariant or property to check, TLC_CONFIG_MISSING_NEXT (151);
+        # without, TLC_STATES_AND_NO_NEXT_ACTION after the initial states (75).
+        kind = "config" if cfg.invariants or cfg.properties else "eval"
+        raise TlaError(kind, f"The specification {entry.name} has no [][Next]_vars conjunct: no next-state "
+                       f"action to generate successor states from.", sym.defn.loc)
     if len(nexts) > 1:
         raise UnsupportedError("a specification with several [][Next]_v conjuncts", sym.defn.loc)
     if not inits:
@@ -544,7 +559,14 @@ def _symmetry(model: Model, entry: ConfigEntry) -> SymmetryReduction:
     sym = _lookup_def(model, entry, "symmetry")
     fn = model.compiler.evaluator(A.Name(sym.defn.loc, entry.name), model.scope)
     perms = []
-    for p in as_set(fn(None, None)):
+    value = fn(None, None)
+    try:
+        elements = as_set(value)
+    except TlaError:
+        # TLC: Assert.fail("The symmetry operator must specify a set of functions."), exit 255.
+        raise TlaError("general", f"The symmetry operator {entry.name} must specify a set of functions "
+                       f"(permutations of model values); it is {fmt(value)}", sym.defn.loc) from None
+    for p in elements:
         if type(p) is FnValue:
             perms.append(dict(p.d))
         elif type(p) is tuple and not p:

@@ -27,10 +27,13 @@ Results are those of one worker, by construction:
 
 from __future__ import annotations
 
+import atexit
+import functools
 import multiprocessing
 import os
 import pickle
 import shutil
+import signal
 import sys
 import tempfile
 import time
@@ -47,6 +50,11 @@ from .shard_worker import ShardWorker
 
 def _worker_main(model: Model, me: int, n: int, folder: str, conn: Connection, max_memory_mb: float,
                  initial: list[tuple]) -> None:
+    # Ctrl-C (sent to the whole process group) and SIGTERM are the coordinator's to
+    # handle: it stops the workers by closing their pipes and removes the shared folder.
+    # A worker dying of them first would look like a crash (a sequential restart).
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
     try:
         ShardWorker(model, me, n, folder, conn, max_memory_mb).run(initial)
     except BaseException as e:  # a defect: the coordinator searches again with one worker
@@ -56,6 +64,17 @@ def _worker_main(model: Model, me: int, n: int, folder: str, conn: Connection, m
             pass
     finally:
         conn.close()
+
+
+def shared_memory_dir() -> str | None:
+    """Where the workers' batch files go: $SAFESTATE_SHM_DIR, else /dev/shm (RAM), else
+    the temporary folder.  The coordinator removes its folder on every exit but SIGKILL
+    (`_expand_all`'s `finally`; SIGTERM is turned into an exception by the CLI, and
+    `deep_stack` forwards Ctrl-C and SIGTERM to the search thread)."""
+    env = os.environ.get("SAFESTATE_SHM_DIR")
+    if env:
+        return env
+    return "/dev/shm" if os.path.isdir("/dev/shm") else None
 
 
 class _Fallback(Exception):
@@ -71,11 +90,14 @@ class ParallelExplorer(Explorer):
         # (the search's critical path: what wall time would be on idle cores).
         self.worker_cpu = [0.0] * workers
         self.critical_cpu = 0.0
+        self.distinct_so_far = 0
 
     def _expand_all(self) -> None:
         if not self.states:
             return
-        folder = tempfile.mkdtemp(prefix="safestate-bfs-", dir="/dev/shm" if os.path.isdir("/dev/shm") else None)
+        folder = tempfile.mkdtemp(prefix="safestate-bfs-", dir=shared_memory_dir())
+        remove = functools.partial(shutil.rmtree, folder, ignore_errors=True)
+        atexit.register(remove)
         ctx = multiprocessing.get_context("fork")
         conns: list[Connection] = []
         procs = []
@@ -96,15 +118,26 @@ class ParallelExplorer(Explorer):
                 print(f"safestate check: the parallel search failed ({why}); searching again with one worker",
                       file=sys.stderr, flush=True)
                 self._restart_sequential(initial)
-        finally:
-            for c in conns:
-                c.close()
+        except BaseException:
+            # Stopped (Ctrl-C, SIGTERM, an error of ours): the workers are mid-level and
+            # hold copies of every pipe, so closing ours would not end them -- kill them.
             for proc in procs:
-                proc.join(timeout=10)
-                if proc.is_alive():
-                    proc.kill()
-                    proc.join()
-            shutil.rmtree(folder, ignore_errors=True)
+                proc.kill()
+            raise
+        finally:
+            # Ctrl-C or SIGTERM may arrive in here too (forwarded to this thread): the
+            # folder is removed whatever happens, and at exit if even that is cut short.
+            try:
+                for c in conns:
+                    c.close()
+                for proc in procs:
+                    proc.join(timeout=10)
+                    if proc.is_alive():
+                        proc.kill()
+                        proc.join()
+            finally:
+                shutil.rmtree(folder, ignore_errors=True)
+                atexit.unregister(remove)
         if self.outcome is None and self.head < len(self.states):
             Explorer._expand_all(self)  # the level replayed sequentially, and any after it
 
@@ -140,6 +173,7 @@ class ParallelExplorer(Explorer):
     def _coordinate(self, conns: list[Connection]) -> None:
         distinct, depth = len(self.states), 1
         while True:
+            self.distinct_so_far = distinct  # for an interrupted search's report
             expanded = self._gather(conns)  # phase 1: (flagged, memory exceeded, generated, CPU s)
             if self._memory_exceeded(conns, expanded, distinct, depth):
                 return

@@ -71,7 +71,8 @@ def run(args: argparse.Namespace) -> int:
 
 def make_harness(system: System, model: Model, core_module: str | None = None) -> Harness:
     """The model stepper and the system's adapter over its binding (or `core_module`)."""
-    assert system.conformance is not None
+    if system.conformance is None:
+        raise UsageError(f"{system.manifest}: system {system.name} has no [conformance] section")
     core = load_core(core_module or os.environ.get(CORE_ENV) or system.conformance.binding)
     stepper = ModelStepper(model)
     adapter: Adapter = system.load_adapter_class()(core, stepper)
@@ -89,6 +90,10 @@ def _run(args: argparse.Namespace) -> int:
         if v is not None and not os.path.isfile(v):
             raise UsageError(f"{v}: --{opt} file does not exist")
     system, model_path, cfg = resolve_system(args.model, args.config)
+    if system.conformance is None:
+        raise UsageError(f"{system.manifest}: system {system.name} has no [conformance] section (no C++ binding "
+                         f"and adapter): nothing to check its model against; `safestate systems --with-conformance` "
+                         f"lists the systems that have one")
     conformance.check_writable(args.out)
     model = load_model(model_path, cfg)
     harness = make_harness(system, model, args.core_module)

@@ -15,5 +15,9 @@ def load_json(path: str, what: str) -> Any:
             return json.load(f)
         except json.JSONDecodeError as e:
             raise UsageError(f"{path}:{e.lineno}:{e.colno}: malformed {what} JSON: {e.msg}") from None
+        except RecursionError:
+            # json's decoder recurses per bracket: thousands of them are no trace or graph.
+            raise UsageError(f"{path}: malformed {what} JSON: nested too deeply (an ITF trace or state graph "
+                             f"is a few levels deep)") from None
         except UnicodeDecodeError as e:
             raise UsageError(f"{path}: {what} is not UTF-8 text ({e.reason})") from None

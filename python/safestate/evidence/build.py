@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import UsageError
-from ..systems.registry import System, load_all
+from ..systems.registry import System, load_all, scan
 from . import diagrams, junit, manifest, render, sources, traces
 from .collect import Runner, StepResult
 from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_ok,
@@ -89,7 +89,11 @@ def find_requirements(root: Path) -> Path | None:
 
 
 def select_systems(root: Path, names: list[str]) -> list[System]:
-    every = load_all(root / "systems")
+    # The package covers every system: an unreadable manifest stops the build (exit 2)
+    # rather than leaving its system out of the evidence unnoticed.
+    every, broken = scan(root / "systems")
+    if broken:
+        raise broken[0]
     if not names:
         return every
     known = {s.name: s for s in every}

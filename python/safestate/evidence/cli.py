@@ -11,11 +11,12 @@ manifest.json (SHA-256 of every input and output, tool versions, machine, date).
 Prints the package's path and its gap count.
 
 --verify DIR re-hashes the inputs and outputs and re-runs the model check of each CI
-cfg; it prints every difference.
+cfg (each stopped after --check-timeout seconds); it prints every difference.
 
 Exit codes: 0 built (or verified) and every step succeeded; 1 a step failed (a check,
 proof, conformance, mutant or test; the package is still written, with the failure
-in it) / --verify found a difference; 2 usage or input error.
+in it) / --verify found a difference; 2 usage or input error; 124 --verify found no
+difference but a re-run check timed out (not verified).
 """
 
 from __future__ import annotations
@@ -28,7 +29,9 @@ from pathlib import Path
 from ..errors import run_guarded
 from ..systems.registry import registry_dir
 from .build import Options, build, find_requirements
-from .verify import verify
+from .verify import CHECK_TIMEOUT_SECONDS, verify
+
+TIMED_OUT = 124  # --verify: no difference, but a re-run check reached --check-timeout (as timeout(1))
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -44,8 +47,21 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--coverage", action="store_true",
                    help="also gcovr branch coverage of the flagship's C++ under conformance (slow)")
     p.add_argument("--verify", metavar="DIR", help="verify the package DIR instead of building one")
+    p.add_argument("--check-timeout", type=_seconds, default=CHECK_TIMEOUT_SECONDS, metavar="SECONDS",
+                   help=f"with --verify: stop a re-run model check after this long and report it as timed out "
+                   f"(exit 124; default {CHECK_TIMEOUT_SECONDS:g})")
     p.add_argument("--root", metavar="DIR", help="with --verify: the repository whose inputs to re-hash "
                    "(default: the one recorded in the manifest)")
+
+
+def _seconds(text: str) -> float:
+    try:
+        t = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, not {text!r}") from None
+    if not t > 0:
+        raise argparse.ArgumentTypeError(f"must be more than 0, not {text}")
+    return t
 
 
 def _log(msg: str) -> None:
@@ -58,11 +74,21 @@ def run(args: argparse.Namespace) -> int:
 
 def _run(args: argparse.Namespace) -> int:
     if args.verify:
-        diffs = verify(Path(args.verify), Path(args.root).resolve() if args.root else None, _log)
+        timeouts: list[str] = []
+        diffs = verify(Path(args.verify), Path(args.root).resolve() if args.root else None, _log,
+                       timeout=args.check_timeout, timeouts=timeouts)
         for d in diffs:
             print(d)
-        print(f"{args.verify}: {'verified, no difference' if not diffs else f'{len(diffs)} difference(s)'}")
-        return 1 if diffs else 0
+        for t in timeouts:
+            print(f"TIMEOUT: {t}")
+        if diffs:
+            print(f"{args.verify}: {len(diffs)} difference(s)")
+            return 1
+        if timeouts:
+            print(f"{args.verify}: not verified: {len(timeouts)} check(s) timed out")
+            return TIMED_OUT
+        print(f"{args.verify}: verified, no difference")
+        return 0
     root = registry_dir().parent.resolve()
     req = Path(args.requirements) if args.requirements else find_requirements(root)
     if req is None:

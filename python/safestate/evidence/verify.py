@@ -21,8 +21,34 @@ def _resolve(base: Path, name: str) -> Path:
     return p if p.is_absolute() else base / p
 
 
-def verify(package: Path, root: Path | None, log: Callable[[str], None] = print) -> list[str]:
-    """Every difference, one line each (empty: the package is what it says)."""
+# A recorded model check re-run by --verify that takes longer than this is stopped and
+# reported as timed out (`safestate evidence --check-timeout`).
+CHECK_TIMEOUT_SECONDS = 600.0
+
+
+def _shape(mpath: Path, doc: object) -> str | None:
+    """What is wrong with the manifest's structure (None: what verify reads is there)."""
+    if not isinstance(doc, dict):
+        return f"the manifest is a JSON {type(doc).__name__}, not an object"
+    if not isinstance(doc.get("root"), str):
+        return "'root' (the repository's path) is missing or not a string"
+    for key in ("inputs", "outputs"):
+        table = doc.get(key)
+        if not isinstance(table, dict) or not all(isinstance(v, str) for v in table.values()):
+            return f"'{key}' must be an object of file name -> SHA-256 string"
+    checks = doc.get("checks", [])
+    if not isinstance(checks, list):
+        return "'checks' must be a list"
+    for i, c in enumerate(checks):
+        if not isinstance(c, dict) or not all(isinstance(c.get(k), str) for k in ("system", "model", "cfg")):
+            return f"checks[{i}] must be an object with the strings 'system', 'model' and 'cfg'"
+    return None
+
+
+def verify(package: Path, root: Path | None, log: Callable[[str], None] = print,
+           timeout: float = CHECK_TIMEOUT_SECONDS, timeouts: list[str] | None = None) -> list[str]:
+    """Every difference, one line each (empty: the package is what it says).  A check
+    that runs out of `timeout` seconds is no difference: it goes to `timeouts`."""
     mpath = package / NAME
     if not mpath.is_file():
         raise UsageError(f"{package}: no {NAME}: not an evidence package")
@@ -30,6 +56,11 @@ def verify(package: Path, root: Path | None, log: Callable[[str], None] = print)
         doc = json.loads(mpath.read_text(encoding="utf-8"))
     except json.JSONDecodeError as e:
         return [f"{mpath}:{e.lineno}:{e.colno}: not valid JSON ({e.msg})"]
+    except (UnicodeDecodeError, RecursionError) as e:
+        return [f"{mpath}: not a JSON manifest ({type(e).__name__})"]
+    wrong = _shape(mpath, doc)
+    if wrong:
+        return [f"{mpath}: malformed manifest: {wrong}"]
     base = root or Path(doc["root"])
     diffs: list[str] = []
     for name, digest in doc["inputs"].items():
@@ -51,9 +82,17 @@ def verify(package: Path, root: Path | None, log: Callable[[str], None] = print)
             diffs.append(f"output {rel}: not in the manifest")
     for c in doc.get("checks", []):
         log(f"verify: model check of {c['system']} ({c['model']} with {c['cfg']})")
-        run = subprocess.run(safestate_argv("check", str(_resolve(base, c["model"])), "--config",
-                                          str(_resolve(base, c["cfg"])), "--json"),
-                           capture_output=True, text=True, cwd=base)
+        try:
+            run = subprocess.run(safestate_argv("check", str(_resolve(base, c["model"])), "--config",
+                                              str(_resolve(base, c["cfg"])), "--json"),
+                               capture_output=True, text=True, cwd=base, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            line = f"check {c['system']}: timed out after {timeout:g} s (raise it with --check-timeout)"
+            if timeouts is None:
+                diffs.append(line)
+            else:
+                timeouts.append(line)
+            continue
         try:
             got = json.loads(run.stdout.strip().splitlines()[-1])
         except (json.JSONDecodeError, IndexError):

@@ -9,11 +9,12 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
+import sys
 from pathlib import Path
 from typing import Any
 
 from ..errors import SafestateError
-from .registry import System, load_all, registry_dir
+from .registry import System, registry_dir, scan
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -74,7 +75,14 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    systems = [s for s in load_all() if s.conformance is not None or not args.with_conformance]
+    every, broken = scan()
+    code = _listing(args, [s for s in every if s.conformance is not None or not args.with_conformance])
+    for e in broken:  # the others are listed; each unreadable manifest is one line and exit 2
+        print(f"error: {e}", file=sys.stderr)
+    return 2 if broken else code
+
+
+def _listing(args: argparse.Namespace, systems: list[System]) -> int:
     if args.names:
         print("\n".join(s.name for s in systems))
         return 0

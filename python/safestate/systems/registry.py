@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import re
 import sys
 import tomllib
 from dataclasses import dataclass, field
@@ -25,6 +26,16 @@ MANIFEST = "system.toml"
 
 class RegistryError(SafestateError):
     """A manifest is missing, malformed or names something that is not there."""
+
+    folder: str | None = None  # systems/<folder>/ of the manifest, when it is one
+
+
+def _line_of(text: str, key: str) -> int | None:
+    """The line (1-based) where `key = ...` is written, if it is."""
+    for i, line in enumerate(text.splitlines(), 1):
+        if re.match(rf"\s*{re.escape(key)}\s*=", line):
+            return i
+    return None
 
 
 @dataclass
@@ -103,15 +114,36 @@ def registry_dir(start: Path | None = None) -> Path:
     return Path(__file__).resolve().parents[3] / "systems"
 
 
-def load_all(directory: Path | None = None) -> list[System]:
+def scan(directory: Path | None = None) -> tuple[list[System], list[RegistryError]]:
+    """Every system whose manifest reads, and the error of each one that does not: a
+    malformed manifest breaks its own system only."""
     d = directory or registry_dir()
-    return [load_manifest(p) for p in sorted(d.glob(f"*/{MANIFEST}"))]
+    systems: list[System] = []
+    broken: list[RegistryError] = []
+    for p in sorted(d.glob(f"*/{MANIFEST}")):
+        try:
+            systems.append(load_manifest(p))
+        except RegistryError as e:
+            e.folder = p.parent.name
+            broken.append(e)
+    return systems, broken
+
+
+def load_all(directory: Path | None = None) -> list[System]:
+    """The systems whose manifest reads (`scan` also gives the broken ones)."""
+    return scan(directory)[0]
 
 
 def find(name: str, directory: Path | None = None) -> System | None:
-    for s in load_all(directory):
+    """The system `name`; its manifest's error when the manifest in systems/<name>/
+    does not read."""
+    systems, broken = scan(directory)
+    for s in systems:
         if s.name == name:
             return s
+    for e in broken:
+        if e.folder == name:
+            raise e
     return None
 
 
@@ -134,16 +166,44 @@ def _req(doc: dict[str, Any], key: str, typ: type, where: Path) -> Any:
 
 
 def load_manifest(path: Path) -> System:
+    """The manifest at `path`; a RegistryError naming the file (and line, when known)."""
     try:
-        with open(path, "rb") as f:
-            doc = tomllib.load(f)
+        data = path.read_bytes()
+        text = data.decode("utf-8")
+        doc = tomllib.loads(text)
+    except OSError as e:
+        raise RegistryError(f"{path}: cannot read the manifest ({e.strerror or e})") from None
+    except UnicodeDecodeError as e:
+        line = data[:e.start].count(b"\n") + 1
+        raise RegistryError(f"{path}:{line}: the manifest is not UTF-8 text (TOML must be)") from None
     except tomllib.TOMLDecodeError as e:
-        raise RegistryError(f"{path}: {e}") from None
+        m = re.search(r"\(at line (\d+), column (\d+)\)", str(e))
+        if m:
+            where = f"{path}:{m.group(1)}:{m.group(2)}"
+        else:  # "(at end of document)": the line after the last
+            where = f"{path}:{text.count(chr(10)) + 1}:1" if "end of document" in str(e) else str(path)
+        msg = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", str(e))
+        raise RegistryError(f"{where}: malformed TOML: {msg}") from None
+    try:
+        return _system(path, doc)
+    except (TypeError, ValueError, IndexError, AttributeError) as e:
+        raise RegistryError(f"{path}: malformed manifest ({e})") from None
+    except RegistryError as e:
+        key = re.search(r"'(\w+)' must be", str(e))
+        at = _line_of(text, key.group(1)) if key else None
+        if at is None:
+            raise
+        raise RegistryError(str(e).replace(f"{path}:", f"{path}:{at}:", 1)) from None
+
+
+def _system(path: Path, doc: dict[str, Any]) -> System:
     root = path.parent.parent.parent
     rel = lambda p: root / p  # noqa: E731
     conf = None
     if "conformance" in doc:
         c = doc["conformance"]
+        if not isinstance(c, dict):
+            raise RegistryError(f"{path}: 'conformance' must be a table ([conformance]), got {type(c).__name__}")
         where = Path(f"{path} [conformance]")
         conf = Conformance(binding=_req(c, "binding", str, where),
                            adapter=path.parent / _req(c, "adapter", str, where),
@@ -151,14 +211,17 @@ def load_manifest(path: Path) -> System:
                            config=rel(c["config"]) if "config" in c else None,
                            hypothesis_steps=int(c.get("hypothesis_steps", 0)),
                            test_hypothesis_steps=int(c.get("test_hypothesis_steps", 0)))
+    name, design, model = (_req(doc, k, str, path) for k in ("name", "design", "model"))
     configs = [rel(p) for p in _req(doc, "configs", list, path)]
+    if not configs and "ci_config" not in doc:
+        raise RegistryError(f"{path}: 'configs' is empty: a system needs at least one .cfg")
     return System(
-        name=_req(doc, "name", str, path),
+        name=name,
         summary=doc.get("summary", ""),
         manifest=path,
         root=root,
-        design=rel(_req(doc, "design", str, path)),
-        model=rel(_req(doc, "model", str, path)),
+        design=rel(design),
+        model=rel(model),
         configs=configs,
         ci_config=rel(doc["ci_config"]) if "ci_config" in doc else configs[0],
         proofs=rel(doc["proofs"]) if "proofs" in doc else None,
@@ -183,8 +246,10 @@ def resolve_system(arg: str, config: str | None = None, directory: Path | None =
         return system, arg, config
     system = find(arg, directory)
     if system is None:
-        names = ", ".join(s.name for s in load_all(directory)) or "none"
-        raise RegistryError(f"{arg}: not a registered system (registered: {names}) and not a .tla file")
+        systems, broken = scan(directory)
+        names = ", ".join(s.name for s in systems) or "none"
+        unread = f"; unreadable manifests: {', '.join(str(e.folder) for e in broken)}" if broken else ""
+        raise RegistryError(f"{arg}: not a registered system (registered: {names}{unread}) and not a .tla file")
     cfg = config or str(system.conformance.config if system.conformance and system.conformance.config
                         else system.ci_config)
     return system, str(system.model), cfg

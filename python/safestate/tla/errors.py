@@ -20,6 +20,9 @@ class Loc:
     column: int
 
     def __str__(self) -> str:
+        # Line 0: the file as a whole (it is missing or unreadable), no position in it.
+        if self.line <= 0:
+            return self.file
         return f"{self.file}:{self.line}:{self.column}"
 
 

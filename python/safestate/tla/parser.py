@@ -166,7 +166,10 @@ class _Converter:
                     if hint is not None:
                         raise TlaError("syntax", hint[0], hint[1])
                 snippet = self.text(n).strip().splitlines()[0][:40] if self.text(n).strip() else ""
-                raise self.syntax(f"parse error: unexpected input {snippet!r}", n)
+                from .syntax_hints import explain_unexpected
+                msg, where = explain_unexpected(self.file, self.data, n.start_byte, snippet,
+                                                n.start_point == root.start_point)
+                raise TlaError("syntax", msg, where)
             if n.has_error:
                 stack.extend(reversed(n.children))
         raise TlaError("syntax", "parse error", self.loc(root))

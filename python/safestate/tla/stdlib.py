@@ -71,16 +71,35 @@ def _seq(v: Value, op: str) -> tuple:
 # ----------------------------------------------------------------- Naturals / Integers
 
 
+# TLC's integers are Java ints; its Naturals/Integers check +, -, * and ^ for overflow
+# (EvalException TLC_MODULE_OVERFLOW, "Overflow when computing a+b"): the result of any
+# of them outside this range is that error, never a larger number.
+TLC_MIN_INT, TLC_MAX_INT = -(2**31), 2**31 - 1
+
+
+def overflow(a: int, op: str, b: int) -> ModuleEvalError:
+    return ModuleEvalError(f"Overflow when computing {a}{op}{b}")
+
+
+def _in_range(r: int, a: int, op: str, b: int) -> int:
+    if TLC_MIN_INT <= r <= TLC_MAX_INT:
+        return r
+    raise overflow(a, op, b)
+
+
 def plus(a: Value, b: Value) -> int:
-    return _int(a, "+") + _int(b, "+")
+    x, y = _int(a, "+"), _int(b, "+")
+    return _in_range(x + y, x, "+", y)
 
 
 def minus(a: Value, b: Value) -> int:
-    return _int(a, "-") - _int(b, "-")
+    x, y = _int(a, "-"), _int(b, "-")
+    return _in_range(x - y, x, "-", y)
 
 
 def times(a: Value, b: Value) -> int:
-    return _int(a, "*") * _int(b, "*")
+    x, y = _int(a, "*"), _int(b, "*")
+    return _in_range(x * y, x, "*", y)
 
 
 def power(a: Value, b: Value) -> int:
@@ -89,7 +108,9 @@ def power(a: Value, b: Value) -> int:
         raise EvalError(f"Attempted to compute {a}^{b}: the exponent must be a natural number")
     if a == 0 and b == 0:
         raise EvalError("0^0 is undefined")
-    return a ** b
+    if abs(a) > 1 and b > 32:  # beyond 32 bits whatever a is: no need to compute a huge power
+        raise overflow(a, "^", b)
+    return _in_range(a ** b, a, "^", b)
 
 
 def div(a: Value, b: Value) -> int:

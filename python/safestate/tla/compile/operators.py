@@ -15,7 +15,8 @@ from ..env import Code, Env
 from ..errors import EvalError, JavaOverrideError, Loc, UnsupportedError
 from ..modules import BuiltinSym, DefSym
 from ..specialise import eq_code, member_const
-from ..stdlib import NATURALS, cap, cup, domain, non_integer_error, setminus, subseteq, union
+from ..stdlib import (NATURALS, TLC_MAX_INT, TLC_MIN_INT, cap, cup, domain, non_integer_error, overflow, setminus,
+                      subseteq, union)
 from ..values import IntervalSet, LazySet, PowerSet, as_set, fmt, member, values_equal
 from .closures import Value, check_bool, _guard, _python_error, _need_set
 
@@ -33,6 +34,9 @@ _CORE_BINARY: dict[str, Callable[[Value, Value], Value]] = {
 
 
 def _int_op(op: str, f: Callable[[int, int], Value]) -> Callable[[Code, Code, Loc], Code]:
+    if op in ("+", "-", "*"):
+        return _arith_op(op, f)
+
     def make(a: Code, b: Code, loc: Loc) -> Code:
         def slow(x: Value, y: Value) -> Value:
             first = type(x) is not int
@@ -52,6 +56,40 @@ def _int_op(op: str, f: Callable[[int, int], Value]) -> Callable[[Code, Code, Lo
             y = b(s, t, L)
             if type(x) is int and type(y) is int:
                 return f(x, y)
+            return slow(x, y)
+        return code
+    return make
+
+
+def _arith_op(op: str, f: Callable[[int, int], int]) -> Callable[[Code, Code, Loc], Code]:
+    """`_int_op` for + - *: the result must fit TLC's 32-bit ints (its overflow error
+    otherwise), checked with one chained comparison on the fast path."""
+    lo, hi = TLC_MIN_INT, TLC_MAX_INT
+
+    def make(a: Code, b: Code, loc: Loc) -> Code:
+        def slow(x: Value, y: Value) -> Value:
+            if type(x) is int and type(y) is int:
+                raise overflow(x, op, y).with_loc(loc)
+            first = type(x) is not int
+            raise non_integer_error(op, x if first else y, first).with_loc(loc)
+        c = const_value(b)
+        if type(c) is int:
+            def code_c(s: Any, t: Any, L: list) -> Value:
+                x = a(s, t, L)
+                if type(x) is int:
+                    r = f(x, c)
+                    if lo <= r <= hi:
+                        return r
+                return slow(x, c)
+            return code_c
+
+        def code(s: Any, t: Any, L: list) -> Value:
+            x = a(s, t, L)
+            y = b(s, t, L)
+            if type(x) is int and type(y) is int:
+                r = f(x, y)
+                if lo <= r <= hi:
+                    return r
             return slow(x, y)
         return code
     return make

@@ -20,7 +20,8 @@ class PrimesMixin:
 
     def c_Prime(self, e: A.Prime, env: Env) -> Code:
         if env.init_mode:
-            raise TlaError("semantic", "primed variable in the initial predicate", e.loc)
+            # TLC evaluates Init and fails there (exit 75), not in SANY (150).
+            raise TlaError("eval", "primed variable in the initial predicate", e.loc)
         arg = e.arg
         if isinstance(arg, A.Name) and arg.name not in env.locals:
             sym = env.scope.lookup(arg.name)
