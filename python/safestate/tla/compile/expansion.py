@@ -37,7 +37,7 @@ class ExpansionMixin:
         try:
             bindings, pre = self.bind_params(d.params, args, env, loc)
             body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings},
-                           env.init_mode, env.primed)
+                           env.init_mode, env.primed, enabled_cut=env.enabled_cut)
             return pre, compile_body(d.body, body_env)
         finally:
             self._inline_depth -= 1
@@ -51,7 +51,8 @@ class ExpansionMixin:
         try:
             bindings, pre = self.bind_params(d.params, args, env, loc)
             inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
-            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed)
+            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed,
+                           enabled_cut=env.enabled_cut)
             if d.fn_bounds is not None:
                 body = compile_body(A.FnLit(d.loc, d.fn_bounds, d.body), body_env)
             else:
