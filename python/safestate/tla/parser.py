@@ -590,12 +590,13 @@ class _Converter:
 
     def x_let_in(self, n: Node, loc: Loc) -> A.Expr:
         defs: list[A.OpDef | A.InstanceDef] = []
+        recursive: list[str] = []
         for d in n.children_by_field_name("definitions"):
             if d.type == "recursive_declaration":
-                continue  # LET operators may refer to themselves; nothing to record
-            if d.type in ("operator_definition", "function_definition", "module_definition"):
+                recursive.extend(self.decl(i).name for i in self.named(d))
+            elif d.type in ("operator_definition", "function_definition", "module_definition"):
                 defs.append(self.definition(d, False))
-        return A.Let(loc, defs, self.expr(n.child_by_field_name("expression")))
+        return A.Let(loc, defs, self.expr(n.child_by_field_name("expression")), recursive)
 
     def x_conj_list(self, n: Node, loc: Loc) -> A.Expr:
         return A.And(loc, [self.expr(self.named(i)[-1]) for i in self.named(n) if i.type == "conj_item"])
