@@ -453,6 +453,25 @@ def _constant_predicate(entry: ConfigEntry, what: str, code: Any, size: int) -> 
 # ---------------------------------------------------------------------- Init / Next
 
 
+def _not_constant(model: Model, sym: DefSym, entry: ConfigEntry, what: str) -> None:
+    """TLC evaluates every constant-level definition at start-up and then finds a
+    value, not an operator, under an INIT or NEXT that reads no variable
+    (`SpecProcessor.processConfigInitAndNext`): ``Init == FALSE`` is "The initial
+    predicate Init cannot be a constant." (exit 151), not a model without states.
+    A definition whose evaluation fails stays an operator, as in TLC."""
+    if sym.defn.params or sym.defn.fn_bounds is not None:
+        return
+    info = model.compiler.def_info(sym)
+    if info.vars or info.action:
+        return
+    code, size = model.compiler.compile_unit(A.Name(sym.defn.loc, entry.name), model.scope)
+    try:
+        code(None, None, [None] * size)
+    except TlaError:
+        return
+    raise TlaError("config", f"The {what} {entry.name} cannot be a constant.", entry.loc)
+
+
 def _compile_behaviour(model: Model) -> None:
     cfg = model.config
     if cfg.specification is not None:
@@ -471,8 +490,8 @@ def _compile_behaviour(model: Model) -> None:
         if cfg.next is None:
             raise TlaError("config", "The configuration file did not specify the next state predicate.",
                            Loc(cfg.file, 1, 1))
-        _lookup_def(model, cfg.init, "initial predicate")
-        _lookup_def(model, cfg.next, "next-state relation")
+        _not_constant(model, _lookup_def(model, cfg.init, "initial predicate"), cfg.init, "initial predicate")
+        _not_constant(model, _lookup_def(model, cfg.next, "next-state relation"), cfg.next, "next state action")
         init = A.Name(cfg.init.loc, cfg.init.name)
         nxt = A.Name(cfg.next.loc, cfg.next.name)
     model.next_name = nxt.name if isinstance(nxt, A.Name) else "Next"

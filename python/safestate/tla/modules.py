@@ -193,6 +193,8 @@ def _fill(scope: Scope, mod: A.Module, substs: dict[str, SubstSym] | None,
         else:
             scope.names[c.name] = ConstSym(c.name, c.arity, c.loc)
     for v in mod.variables:
+        if isinstance(scope.names.get(v.name), (VarSym, SubstSym)):
+            continue  # declared again: the same variable (SANY only warns)
         if substs is not None:
             scope.names[v.name] = substs[v.name]
         else:

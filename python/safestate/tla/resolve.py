@@ -103,6 +103,10 @@ class _Resolver:
         for name in mod.recursive:
             visible[name] = None
         own: dict[str, Loc] = {}
+        # VARIABLE and CONSTANT names declared so far: SANY only warns when one is
+        # declared again as the same kind ("Multiple declarations or definitions for
+        # symbol x"), and TLC checks the module with one such variable or constant.
+        params: dict[str, tuple[str, int]] = {}
 
         def declare(name: str, arity: int | None, loc: Loc) -> None:
             if name in own and name not in mod.recursive:
@@ -113,7 +117,10 @@ class _Resolver:
 
         for item in sorted(_items(mod), key=lambda it: (it[0].line, it[0].column)):
             loc, kind, node = item
-            if kind == "param":
+            if kind in ("variable", "constant"):
+                if params.get(node.name) == (kind, node.arity):
+                    continue
+                params[node.name] = (kind, node.arity)
                 declare(node.name, node.arity, loc)
             elif kind == "def":
                 if node.fn_bounds is not None:
@@ -259,7 +266,8 @@ def _unknown(name: str, loc: Loc) -> TlaError:
 
 def _items(mod: A.Module) -> list[tuple[Loc, str, Any]]:
     """The module's declarations, definitions and statements, each with its position."""
-    out: list[tuple[Loc, str, Any]] = [(p.loc, "param", p) for p in mod.constants + mod.variables]
+    out: list[tuple[Loc, str, Any]] = [(p.loc, "constant", p) for p in mod.constants]
+    out += [(p.loc, "variable", p) for p in mod.variables]
     for u in mod.units:
         out.append((u.loc, "def" if isinstance(u, A.OpDef) else "instance", u))
     for a in mod.assumes:
