@@ -26,6 +26,7 @@ from .compiler import _assign as assign_binder
 from .env import UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
+from .fold_memo import EXPANSION_LIMIT
 from .specialise import var_read
 from .values import LazySet, member, values_equal
 
@@ -325,7 +326,7 @@ class ActionCompiler:
             return self.recursive_action(sym, args, env, e.loc, k)
         if not isinstance(sym, DefSym) or sym.defn.fn_bounds is not None or sym.recursive:
             return None
-        if self.c._inline_depth > 40:
+        if self.c._inline_depth > EXPANSION_LIMIT:
             return None
         pre, code = self.c.inline_def(sym, args, env, e.loc, lambda b, benv: self.action(b, benv, k))
         return _prefix_act(pre, code)
