@@ -490,8 +490,8 @@ def _compile_behaviour(model: Model) -> None:
         if cfg.next is None:
             raise TlaError("config", "The configuration file did not specify the next state predicate.",
                            Loc(cfg.file, 1, 1))
-        _not_constant(model, _lookup_def(model, cfg.init, "initial predicate"), cfg.init, "initial predicate")
-        _not_constant(model, _lookup_def(model, cfg.next, "next-state relation"), cfg.next, "next state action")
+        _lookup_def(model, cfg.init, "initial predicate")
+        _lookup_def(model, cfg.next, "next-state relation")
         init = A.Name(cfg.init.loc, cfg.init.name)
         nxt = A.Name(cfg.next.loc, cfg.next.name)
     model.next_name = nxt.name if isinstance(nxt, A.Name) else "Next"
@@ -517,6 +517,11 @@ def _compile_behaviour(model: Model) -> None:
         return emit
     model._next = ac.split(nxt, Env(model.scope, next_frame), model.next_name, nxt.loc, [], make_k)
     model._next_size = next_frame.size
+    if cfg.specification is None:
+        # After compiling them: the analysis must not be the first to meet a LET's
+        # INSTANCE (it would fix the instance's scope without the names bound there).
+        _not_constant(model, _lookup_def(model, cfg.init, "initial predicate"), cfg.init, "initial predicate")
+        _not_constant(model, _lookup_def(model, cfg.next, "next-state relation"), cfg.next, "next state action")
 
 
 def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:
