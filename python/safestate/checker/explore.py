@@ -282,6 +282,7 @@ class Explorer:
             key = m.key(st)
             found = self.seen.get(key)
             if found is None:
+                m.check_storable(key if m.view is not None else st, None)
                 idx = self._add(st, key, -1, -1, 1)
                 self.initial.append(idx)
             else:
@@ -371,6 +372,7 @@ class Explorer:
                 key = m.key(st) if keyed else st
                 idx = seen_get(key, -1)
                 if idx < 0:
+                    m.check_storable(key if m.view is not None else st, leaf)
                     idx = self._add(st, key, i, leaf, next_level)
                     if runtime is not None:
                         runtime.pending = 1

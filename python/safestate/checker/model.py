@@ -35,6 +35,7 @@ from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token
 from .cfg import Config, ConfigEntry, parse_config
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
+from .storable import check_storable
 from .symmetry import SymmetryReduction, permutation_group
 from .temporal import Fairness, Obligation, TemporalCompiler
 
@@ -137,6 +138,15 @@ class Model:
         raise TlaError("eval", f"Successor state is not completely specified by action {lf.name} of the "
                        f"next-state relation. The following variable{plural} not defined: "
                        f"{', '.join(missing)}.", lf.loc)
+
+    def check_storable(self, st: tuple, leaf: int | None) -> None:
+        """TLC's error for a new state holding a value it cannot fingerprint (storable.py)."""
+        if leaf is not None:
+            loc = self.leaves[leaf].loc
+        else:
+            sym = self.scope.lookup(self.init_expr.name) if isinstance(self.init_expr, A.Name) else None
+            loc = sym.defn.loc if isinstance(sym, DefSym) else self.module_loc()
+        check_storable(st, self.variables, loc)
 
     def module_loc(self) -> Loc:
         return Loc(self.module.file, 1, 1)
