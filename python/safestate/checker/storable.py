@@ -56,6 +56,9 @@ def unstorable(v: Any) -> str | None:
 def check_storable(st: tuple, names: list[str], loc: Loc) -> None:
     """Raise TLC's evaluation error if a variable of the state `st` cannot be stored."""
     for name, v in zip(names, st):
+        t = type(v)
+        if t is int or t is str or t is bool:
+            continue
         bad = unstorable(v)
         if bad is not None:
             try:

@@ -1,7 +1,7 @@
 """Functions, records and tuples: literals, application, function and record sets, field
 access, and EXCEPT with its ``@``.  Tuples are functions on 1..n, so they live here too.
 
-A function literal over an infinite domain (``[i \in Int |-> i + 2]``) is a lazy
+A function literal over an infinite domain (``[i \\in Int |-> i + 2]``) is a lazy
 function value, as TLC's FcnLambdaValue: applied pointwise (domain membership, then the
 body), ``DOMAIN`` is the infinite set; TLC fails only where it must enumerate it (the
 value stored in a state, see checker/storable.py).
