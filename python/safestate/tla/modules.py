@@ -241,9 +241,9 @@ def _fill(scope: Scope, mod: A.Module, substs: dict[str, SubstSym] | None,
     # A named ASSUME or THEOREM (``ASSUME A1 == N > 0``) is an operator without
     # arguments whose body is its statement: TLC evaluates ``A1`` in an expression.
     statements = [(a.name, a.expr, a.loc) for a in mod.assumes] + list(mod.theorems)
-    for name, expr, loc in statements:
-        if name is not None and name not in scope.names:
-            scope.names[name] = DefSym(A.OpDef(name, [], expr, loc), scope, False)
+    for label, expr, at in statements:
+        if label is not None and label not in scope.names:
+            scope.names[label] = DefSym(A.OpDef(label, [], expr, at), scope, False)
 
 
 def _add_builtins(scope: Scope, module: dict[str, Builtin]) -> None:
