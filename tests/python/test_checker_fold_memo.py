@@ -93,9 +93,15 @@ Next == /\\ x' = IF z = 0 THEN Ratio(0) ELSE 1
 
 def test_expansion_depth_limit_still_applies_to_a_memoised_constant(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """A constant folded at a shallow site and met again 60 expansions deep is refused there
-    as before (the memo does not skip the depth check of its expansion).  The action
-    compiler compiles Init's conjuncts last first: D5(1) is folded before D61(1)."""
+    """A constant folded at a shallow site and met again deeper than the expansion depth
+    limit is refused there as before (the memo does not skip the depth check of its
+    expansion).  The limit, a guard for the Python stack (5000 nested definitions), is set
+    to 60 here.  The action compiler compiles Init's conjuncts last first: D5(1) is folded
+    before D61(1)."""
+    from safestate.tla import actions, fold_memo
+    from safestate.tla.compile import expansion
+    for module in (fold_memo, expansion, actions):
+        monkeypatch.setattr(module, "EXPANSION_LIMIT", 60)
     chain = "\n".join(f"D{i}(a) == D{i - 1}(a)" for i in range(1, 62))
     tla = _write(tmp_path, "Deep", f"""
 D0(a) == a + 1
@@ -106,4 +112,4 @@ Init == /\\ z = 0
 Next == UNCHANGED <<x, y, z>>""")
     fast = _observe(tla, True, monkeypatch)
     assert fast == _observe(tla, False, monkeypatch)
-    assert fast[0] == "load error" and "recursive action-level operator" in fast[2], fast
+    assert fast[0] == "load error" and "expanded at a depth of more than 60 nested definitions" in fast[2], fast

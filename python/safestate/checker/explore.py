@@ -91,6 +91,10 @@ class _Stop(Exception):
     """Ends the search: a violation, a deadlock or an error was recorded."""
 
 
+# Values every state can hold: a state of these only needs no fingerprint check.
+_PLAIN = frozenset((int, str, bool))
+
+
 def step_params(m: Model, state: tuple, leaf: int, want: tuple) -> dict:
     """The parameters of the step `state` -> `want` by action `leaf`: the successors
     are generated again up to that step only, so an action after it that fails to
@@ -282,6 +286,8 @@ class Explorer:
             key = m.key(st)
             found = self.seen.get(key)
             if found is None:
+                if not _PLAIN.issuperset(map(type, st)):
+                    m.check_storable(key if m.view is not None else st, None)
                 idx = self._add(st, key, -1, -1, 1)
                 self.initial.append(idx)
             else:
@@ -347,6 +353,7 @@ class Explorer:
         graph = self.graph
         action_properties = m.action_properties
         UNSET_ = _UNSET
+        plain = _PLAIN.issuperset
         runtime = RUNTIME if RUNTIME.used else None
         if runtime is not None:
             runtime.expanding, runtime.level = 1, next_level - 1
@@ -371,6 +378,8 @@ class Explorer:
                 key = m.key(st) if keyed else st
                 idx = seen_get(key, -1)
                 if idx < 0:
+                    if not plain(map(type, st)):
+                        m.check_storable(key if keyed and m.view is not None else st, leaf)
                     idx = self._add(st, key, i, leaf, next_level)
                     if runtime is not None:
                         runtime.pending = 1

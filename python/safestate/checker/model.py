@@ -36,6 +36,7 @@ from .cfg import Config, ConfigEntry, parse_config
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
 from .int_range import check_numerals
+from .storable import check_storable
 from .symmetry import SymmetryReduction, permutation_group
 from .temporal import Fairness, Obligation, TemporalCompiler
 
@@ -138,6 +139,15 @@ class Model:
         raise TlaError("eval", f"Successor state is not completely specified by action {lf.name} of the "
                        f"next-state relation. The following variable{plural} not defined: "
                        f"{', '.join(missing)}.", lf.loc)
+
+    def check_storable(self, st: tuple, leaf: int | None) -> None:
+        """TLC's error for a new state holding a value it cannot fingerprint (storable.py)."""
+        if leaf is not None:
+            loc = self.leaves[leaf].loc
+        else:
+            sym = self.scope.lookup(self.init_expr.name) if isinstance(self.init_expr, A.Name) else None
+            loc = sym.defn.loc if isinstance(sym, DefSym) else self.module_loc()
+        check_storable(st, self.variables, loc)
 
     def module_loc(self) -> Loc:
         return Loc(self.module.file, 1, 1)
@@ -463,6 +473,25 @@ def _constant_predicate(entry: ConfigEntry, what: str, code: Any, size: int) -> 
 # ---------------------------------------------------------------------- Init / Next
 
 
+def _not_constant(model: Model, sym: DefSym, entry: ConfigEntry, what: str) -> None:
+    """TLC evaluates every constant-level definition at start-up and then finds a
+    value, not an operator, under an INIT or NEXT that reads no variable
+    (`SpecProcessor.processConfigInitAndNext`): ``Init == FALSE`` is "The initial
+    predicate Init cannot be a constant." (exit 151), not a model without states.
+    A definition whose evaluation fails stays an operator, as in TLC."""
+    if sym.defn.params or sym.defn.fn_bounds is not None:
+        return
+    info = model.compiler.def_info(sym)
+    if info.vars or info.action:
+        return
+    code, size = model.compiler.compile_unit(A.Name(sym.defn.loc, entry.name), model.scope)
+    try:
+        code(None, None, [None] * size)
+    except TlaError:
+        return
+    raise TlaError("config", f"The {what} {entry.name} cannot be a constant.", entry.loc)
+
+
 def _compile_behaviour(model: Model) -> None:
     cfg = model.config
     if cfg.specification is not None:
@@ -508,6 +537,11 @@ def _compile_behaviour(model: Model) -> None:
         return emit
     model._next = ac.split(nxt, Env(model.scope, next_frame), model.next_name, nxt.loc, [], make_k)
     model._next_size = next_frame.size
+    if cfg.specification is None:
+        # After compiling them: the analysis must not be the first to meet a LET's
+        # INSTANCE (it would fix the instance's scope without the names bound there).
+        _not_constant(model, _lookup_def(model, cfg.init, "initial predicate"), cfg.init, "initial predicate")
+        _not_constant(model, _lookup_def(model, cfg.next, "next-state relation"), cfg.next, "next state action")
 
 
 def _split_spec(model: Model, entry: ConfigEntry) -> tuple[A.Expr, A.Expr]:

@@ -26,6 +26,7 @@ from .compiler import _assign as assign_binder
 from .env import UNSET, ByNameLocal, Code, Env, Frame, LazyLocal, LetOpLocal, OpLocal, SlotLocal
 from .errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from .modules import DefSym, SubstSym, VarSym
+from .fold_memo import EXPANSION_LIMIT
 from .specialise import var_read
 from .values import LazySet, member, values_equal
 
@@ -66,7 +67,7 @@ def _primes_a_parameter(body: A.Expr, params: set[str]) -> bool:
 class ActionCompiler:
     def __init__(self, compiler: Compiler) -> None:
         self.c = compiler
-        self._recursive: dict[tuple[int, bool], _RecursiveAction] = {}
+        self._recursive: dict[tuple[int, bool, frozenset[int]], _RecursiveAction] = {}
 
     # ---------------------------------------------------------------- splitting Next
     def split(self, e: A.Expr, env: Env, label: str, label_loc: Loc, params: list[tuple[str, int]],
@@ -315,7 +316,8 @@ class ActionCompiler:
         sym = self.c.sym_overrides.get(id(sym), sym)  # C <- Op: expand Op
         if isinstance(sym, SubstSym) and not args:
             inst = {p: env.locals[p] for p in sym.instance_params if p in env.locals}
-            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode, env.primed), k)
+            return self.action(sym.expr, Env(sym.scope, env.frame, inst, env.init_mode, env.primed,
+                                             enabled_cut=env.enabled_cut), k)
         # TLC evaluates every user-defined operator in action position by descending
         # into its body (so a disjunction inside it branches); a recursive one cannot
         # be expanded at compile time and runs with its arguments' values.
@@ -324,7 +326,7 @@ class ActionCompiler:
             return self.recursive_action(sym, args, env, e.loc, k)
         if not isinstance(sym, DefSym) or sym.defn.fn_bounds is not None or sym.recursive:
             return None
-        if self.c._inline_depth > 40:
+        if self.c._inline_depth > EXPANSION_LIMIT:
             return None
         pre, code = self.c.inline_def(sym, args, env, e.loc, lambda b, benv: self.action(b, benv, k))
         return _prefix_act(pre, code)
@@ -339,7 +341,7 @@ class ActionCompiler:
         if sym.scope.instance_params or _primes_a_parameter(d.body, params):
             raise UnsupportedError(f"the recursive operator {d.name} primes one of its parameters (or is "
                                    f"defined in a parameterised instance): not supported", loc)
-        key = (id(sym), env.init_mode)
+        key = (id(sym), env.init_mode, env.enabled_cut)
         rec = self._recursive.get(key)
         if rec is None:
             rec = self._recursive[key] = _RecursiveAction()
@@ -352,7 +354,8 @@ class ActionCompiler:
 
             def back(s: Any, t: Any, L: list) -> None:
                 L[ret](s, t)
-            rec.body = self.action(d.body, Env(sym.scope, frame, bindings, env.init_mode), back)
+            rec.body = self.action(d.body, Env(sym.scope, frame, bindings, env.init_mode,
+                                               enabled_cut=env.enabled_cut), back)
             rec.size = frame.size
         arg_codes = [self.c._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
 
@@ -453,10 +456,11 @@ class ActionCompiler:
             return None
         sym = env.scope.lookup(e.name)
         if isinstance(sym, DefSym) and not sym.defn.params and sym.defn.fn_bounds is None:
-            return sym.defn.body, Env(sym.scope, env.frame, {}, env.init_mode)
+            return sym.defn.body, Env(sym.scope, env.frame, {}, env.init_mode, enabled_cut=env.enabled_cut)
         if isinstance(sym, SubstSym):
             return sym.expr, Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
-                                                        if p in env.locals}, env.init_mode)
+                                                        if p in env.locals}, env.init_mode,
+                                 enabled_cut=env.enabled_cut)
         return None
 
     def _assign(self, i: int, rhs: Code, k: Cont, loc: Loc) -> Code:
@@ -533,9 +537,12 @@ class ActionCompiler:
                     return None
                 out.extend(sub)
             return out
+        if isinstance(e, A.Name) and e.name not in env.locals \
+                and self._scratch(env.scope.lookup(e.name), env) is not None:
+            return None  # a scratch variable of ENABLED: see `unchanged`
         var = self._var_of(e, env)
         if var is not None:
-            return [var[0]] if var[0] < len(self.c.var_names) else None  # a scratch one: see `unchanged`
+            return [var[0]]
         named = self._named_expr(e, env)
         if named is not None:
             return self._unchanged_vars(named[0], named[1], depth + 1)
@@ -683,7 +690,7 @@ def compile_enabled(compiler: Compiler, arg: A.Expr, env: Env) -> Code:
     scratch: dict[str, int] = {}
     compiler.enabled_scratch = scratch
     try:
-        act = ActionCompiler(compiler).action(arg, env, _found)
+        act = ActionCompiler(compiler).action(arg, compiler.enabled_env(env), _found)
     finally:
         compiler.enabled_scratch = outer
     n = len(compiler.var_names) + len(scratch)

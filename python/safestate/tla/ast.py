@@ -234,6 +234,9 @@ class Case(Expr):
 class Let(Expr):
     defs: list["OpDef | InstanceDef"]
     body: Expr
+    # Names of the LET's RECURSIVE declarations: only these may be used before (or
+    # inside) their own definition.
+    recursive: list[str] = field(default_factory=list)
 
 
 @dataclass(slots=True, eq=False)

@@ -111,6 +111,13 @@ class Env:
     # Compiling the inside of ``e'``: variables (and operator arguments and LET
     # definitions that read them) denote their values in the next state `t`.
     primed: bool = False
+    # Inside ENABLED: the ids of the INSTANCE substitutions (`SubstSym`) made before the
+    # ENABLED was entered.  TLC's ENABLED starts a branch of its evaluation context and a
+    # primed variable is looked up only up to that branch, so a primed variable whose
+    # substitution lies outside is the instanced module's own variable, by name, in
+    # ENABLED's scratch state (`NamesMixin.scratch_slot`).  Environments derived from
+    # this one keep the set; those captured before the ENABLED (operator arguments) do not.
+    enabled_cut: frozenset[int] = frozenset()
 
     def bind(self, /, **bindings: Local) -> "Env":  # positional-only: a TLA+ name may be `self`
         return replace(self, locals={**self.locals, **bindings})

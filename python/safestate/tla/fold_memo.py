@@ -33,8 +33,11 @@ from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_value
 from .env import ByNameLocal, Code, Env
 
-# Expansion depth at which an operator expansion is refused as recursive.
-EXPANSION_LIMIT = 60
+# Expansion depth at which an operator expansion is refused: a guard for the Python
+# stack only (a chain of definitions D_i == D_(i-1) + 1 nests one expansion per
+# definition, and TLC accepts any such chain).  A recursion is caught long before it,
+# by the nesting of one definition inside itself (`ExpansionMixin.enter_expansion`).
+EXPANSION_LIMIT = 5000
 
 
 @dataclass

@@ -74,7 +74,8 @@ def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: L
         bindings[p.name] = SlotLocal(slot)
     compiler._inline_depth += 1
     try:
-        body = compiler.expr(sym.defn.body, Env(sym.scope, env.frame, bindings, env.init_mode, env.primed))
+        body = compiler.expr(sym.defn.body, Env(sym.scope, env.frame, bindings, env.init_mode, env.primed,
+                                                enabled_cut=env.enabled_cut))
     finally:
         compiler._inline_depth -= 1
     return _prefix(pre, body)

@@ -176,11 +176,41 @@ def build_root_scope(root: A.Module, loader: ModuleLoader) -> tuple[Scope, list[
     return scope, variables
 
 
+def _enclosing_names(scope: Scope, mod: A.Module, outer: Scope | None) -> None:
+    """A module nested in another sees what the enclosing module declares, defines and
+    EXTENDS before it (SANY): the standard modules the enclosing modules extend, and,
+    when the nested module is instanced from its enclosing module (`outer`), that
+    module's definitions, constants and variables.  The nested module's own names,
+    filled in after these, take precedence."""
+    enclosing = _enclosing_module(scope.loader, mod)
+    if enclosing is None:
+        return
+    if outer is not None and outer.module is enclosing:
+        for name, sym in outer.names.items():
+            scope.names.setdefault(name, sym)
+    seen: set[str] = set()
+    while enclosing is not None and enclosing.name not in seen:
+        seen.add(enclosing.name)
+        for name, loc in enclosing.extends:
+            ext = scope.loader.find(name, loc)
+            if isinstance(ext, dict):
+                _add_builtins(scope, ext)
+        enclosing = _enclosing_module(scope.loader, enclosing)
+
+
+def _enclosing_module(loader: ModuleLoader, mod: A.Module) -> A.Module | None:
+    for m in loader.cache.values():
+        if m.submodules.get(mod.name) is mod:
+            return m
+    return None
+
+
 def _fill(scope: Scope, mod: A.Module, substs: dict[str, SubstSym] | None,
-          variables: list[VarSym], visiting: set[str]) -> None:
+          variables: list[VarSym], visiting: set[str], outer: Scope | None = None) -> None:
     if mod.name in visiting:
         raise TlaError("semantic", f"circular EXTENDS/INSTANCE of module {mod.name}", A.Loc(mod.file, 1, 1))
     visiting = visiting | {mod.name}
+    _enclosing_names(scope, mod, outer)
     for name, loc in mod.extends:
         ext = scope.loader.find(name, loc)
         if isinstance(ext, dict):
@@ -192,7 +222,11 @@ def _fill(scope: Scope, mod: A.Module, substs: dict[str, SubstSym] | None,
             scope.names[c.name] = substs[c.name]
         else:
             scope.names[c.name] = ConstSym(c.name, c.arity, c.loc)
+    declared: set[str] = set()
     for v in mod.variables:
+        if v.name in declared:
+            continue  # declared again: the same variable (SANY only warns)
+        declared.add(v.name)
         if substs is not None:
             scope.names[v.name] = substs[v.name]
         else:
@@ -204,6 +238,12 @@ def _fill(scope: Scope, mod: A.Module, substs: dict[str, SubstSym] | None,
             scope.names[unit.name] = DefSym(unit, scope, unit.name in mod.recursive or unit.fn_bounds is not None)
         else:
             _instance(scope, unit, visiting)
+    # A named ASSUME or THEOREM (``ASSUME A1 == N > 0``) is an operator without
+    # arguments whose body is its statement: TLC evaluates ``A1`` in an expression.
+    statements = [(a.name, a.expr, a.loc) for a in mod.assumes] + list(mod.theorems)
+    for label, expr, at in statements:
+        if label is not None and label not in scope.names:
+            scope.names[label] = DefSym(A.OpDef(label, [], expr, at), scope, False)
 
 
 def _add_builtins(scope: Scope, module: dict[str, Builtin]) -> None:
@@ -256,7 +296,7 @@ def _instance(scope: Scope, inst: A.InstanceDef, visiting: set[str], let_locals:
                        f"{inst.module} does not declare", inst.loc)
     inner = Scope(target, scope.loader, parameterised=bool(params) or scope.parameterised,
                   instance_params=params + scope.instance_params)
-    _fill(inner, target, substs, [], visiting)
+    _fill(inner, target, substs, [], visiting, scope)
     if inst.name is None:
         for name, sym in inner.names.items():
             if isinstance(sym, (DefSym, BuiltinSym, InstanceSym)) and not (

@@ -200,6 +200,13 @@ class _Converter:
         lhs = n.child_by_field_name("lhs")
         if lhs is not None and lhs.type == "bound_prefix_op":  # tree-sitter's (SUBSET a) + b
             self.check_prefix_precedence(lhs, n)
+        rhs = n.child_by_field_name("rhs")
+        if rhs is not None and rhs.type == "bound_prefix_op" and outer[0] > 12 \
+                and _SYMBOLS.get(rhs.child_by_field_name("symbol").type) == "-.":
+            # SANY: `7 \div -2`, `2 * -3`, `2 ^ -3` (a prefix minus, precedence 12, as the
+            # right operand of an operator binding tighter) need parentheses; `2 + -3` not.
+            raise TlaError("syntax", f"Precedence conflict between ops {sym} and -; add parentheses",
+                           self.loc(rhs))
         for side in ("lhs", "rhs"):
             child = n.child_by_field_name(side)
             if child is None or child.type != "bound_infix_op":
@@ -376,7 +383,14 @@ class _Converter:
         return A.Unsupported(loc, "real number literal")
 
     def x_string(self, n: Node, loc: Loc) -> A.Expr:
-        return A.Str(loc, _unescape(self.text(n)[1:-1]))
+        raw = self.text(n)[1:-1]
+        bad = re.search(r'\\[^nrtf"\\]', raw.replace("\\\\", "  "))
+        if bad is not None:
+            # SANY's lexer knows only these escapes: "a\qb" is a lexical error at the q
+            raise TlaError("syntax", f"Lexical error: unknown escape sequence \\{raw[bad.start() + 1]} in a string "
+                           f"(known: \\\" \\\\ \\n \\t \\r \\f)",
+                           Loc(loc.file, loc.line, loc.column + bad.start() + 2))
+        return A.Str(loc, _unescape(raw))
 
     def x_boolean(self, n: Node, loc: Loc) -> A.Expr:
         return A.Bool(loc, self.text(n) == "TRUE")
@@ -593,12 +607,13 @@ class _Converter:
 
     def x_let_in(self, n: Node, loc: Loc) -> A.Expr:
         defs: list[A.OpDef | A.InstanceDef] = []
+        recursive: list[str] = []
         for d in n.children_by_field_name("definitions"):
             if d.type == "recursive_declaration":
-                continue  # LET operators may refer to themselves; nothing to record
-            if d.type in ("operator_definition", "function_definition", "module_definition"):
+                recursive.extend(self.decl(i).name for i in self.named(d))
+            elif d.type in ("operator_definition", "function_definition", "module_definition"):
                 defs.append(self.definition(d, False))
-        return A.Let(loc, defs, self.expr(n.child_by_field_name("expression")))
+        return A.Let(loc, defs, self.expr(n.child_by_field_name("expression")), recursive)
 
     def x_conj_list(self, n: Node, loc: Loc) -> A.Expr:
         return A.And(loc, [self.expr(self.named(i)[-1]) for i in self.named(n) if i.type == "conj_item"])

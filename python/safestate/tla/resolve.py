@@ -9,6 +9,11 @@ source order, so TLC rejects (exit code 150) a module in which
 * an operator is applied to the wrong number of arguments
   (``The operator X requires N arguments.``),
 * a name is defined or declared twice (``Operator X already defined or declared.``),
+* a bound variable, operator parameter or LET definition reuses a name that is
+  already visible there (``Multiply-defined symbol 'X'``),
+* a LET operator refers to itself without a RECURSIVE declaration in its LET
+  (``Unknown operator``: SANY makes a LET definition visible only after it),
+* a record constructor names a field twice (``Non-unique fields in constructor.``),
 * the root module's name differs from its file's name.
 
 `check_modules` reports the first such error with its file:line:column.  Operator
@@ -44,6 +49,8 @@ class _Resolver:
         self.loader = loader
         self.exported: dict[str, Names] = {}
         self.done: set[str] = set()
+        # Where each name of the module being resolved was declared (for messages).
+        self.declared: dict[str, Loc] = {}
         # A module nested in another sees the enclosing module's names.
         self.enclosing: dict[str, A.Module] = {}
         for m in list(loader.cache.values()):
@@ -96,16 +103,24 @@ class _Resolver:
         for name in mod.recursive:
             visible[name] = None
         own: dict[str, Loc] = {}
+        # VARIABLE and CONSTANT names declared so far: SANY only warns when one is
+        # declared again as the same kind ("Multiple declarations or definitions for
+        # symbol x"), and TLC checks the module with one such variable or constant.
+        params: dict[str, tuple[str, int]] = {}
 
         def declare(name: str, arity: int | None, loc: Loc) -> None:
             if name in own and name not in mod.recursive:
                 raise TlaError("semantic", f"Operator {name} already defined or declared.", loc)
             own[name] = loc
+            self.declared[name] = loc
             visible[name] = arity
 
         for item in sorted(_items(mod), key=lambda it: (it[0].line, it[0].column)):
             loc, kind, node = item
-            if kind == "param":
+            if kind in ("variable", "constant"):
+                if params.get(node.name) == (kind, node.arity):
+                    continue
+                params[node.name] = (kind, node.arity)
                 declare(node.name, node.arity, loc)
             elif kind == "def":
                 if node.fn_bounds is not None:
@@ -127,17 +142,30 @@ class _Resolver:
     def definition(self, d: A.OpDef, visible: Names, bound: Names | None = None) -> None:
         inner = dict(bound or {})
         for p in d.params:
+            self.fresh(p.name, p.loc, visible, inner)
             inner[p.name] = p.arity or None
         for b in d.fn_bounds or []:
             self.expr(b.set, visible, inner)
         for b in d.fn_bounds or []:
             for n in b.names:
+                self.fresh(n, b.set.loc, visible, inner)
                 inner[n] = 0
         self.expr(d.body, visible, inner)
+
+    def fresh(self, name: str, loc: Loc, visible: Names, bound: Names) -> None:
+        """SANY: a bound variable, parameter or LET definition may not reuse a name
+        that is visible where it is introduced (a definition, a declaration, a
+        standard-module operator, an enclosing bound variable)."""
+        if name in bound or name in visible:
+            earlier = self.declared.get(name)
+            where = f" with the one at {earlier}" if earlier is not None and name not in bound else ""
+            raise TlaError("semantic", f"Multiply-defined symbol '{name}': this definition or declaration "
+                           f"conflicts{where}.", loc)
 
     def instance(self, inst: A.InstanceDef, visible: Names, bound: Names | None = None) -> None:
         inner = dict(bound or {})
         for p in inst.params:
+            self.fresh(p.name, p.loc, visible, inner)
             inner[p.name] = p.arity or None
         for _, e in inst.substs:
             if not isinstance(e, A.OpRef):
@@ -165,27 +193,48 @@ class _Resolver:
             return
         if isinstance(e, A.Let):
             inner = dict(bound)
+            recursive = set(e.recursive)
+            for name in recursive:
+                inner[name] = None
             for d in e.defs:
                 if isinstance(d, A.InstanceDef):
+                    if d.name is not None:
+                        self.fresh(d.name, d.loc, visible, inner)
                     self.instance(d, visible, inner)
                     if d.name is not None:
                         inner[d.name] = len(d.params)
                     continue
-                inner[d.name] = _arity(d)  # LET RECURSIVE, recursive functions
+                if d.name not in recursive:
+                    self.fresh(d.name, d.loc, visible, inner)
+                if d.fn_bounds is not None:
+                    inner[d.name] = 0  # a function definition may refer to itself
                 self.definition(d, visible, inner)
+                inner[d.name] = _arity(d)
             self.expr(e.body, visible, inner)
             return
+        if isinstance(e, A.RecLit):
+            names = [n for n, _ in e.fields]
+            for i, n in enumerate(names):
+                if n in names[:i]:
+                    raise TlaError("semantic", "Non-unique fields in constructor.", e.loc)
         binders = _binders(e)
         if binders is not None:
             sets, names, bodies = binders
             for s in sets:
                 self.expr(s, visible, bound)
-            inner = {**bound, **{n: 0 for n in names}}
+            inner = dict(bound)
+            for n in names:
+                self.fresh(n, e.loc, visible, inner)
+                inner[n] = 0
             for b in bodies:
                 self.expr(b, visible, inner)
             return
         if isinstance(e, A.Lambda):
-            self.expr(e.body, visible, {**bound, **{p: 0 for p in e.params}})
+            inner = dict(bound)
+            for p in e.params:
+                self.fresh(p, e.loc, visible, inner)
+                inner[p] = 0
+            self.expr(e.body, visible, inner)
             return
         for c in _children(e):
             self.expr(c, visible, bound)
@@ -217,7 +266,8 @@ def _unknown(name: str, loc: Loc) -> TlaError:
 
 def _items(mod: A.Module) -> list[tuple[Loc, str, Any]]:
     """The module's declarations, definitions and statements, each with its position."""
-    out: list[tuple[Loc, str, Any]] = [(p.loc, "param", p) for p in mod.constants + mod.variables]
+    out: list[tuple[Loc, str, Any]] = [(p.loc, "constant", p) for p in mod.constants]
+    out += [(p.loc, "variable", p) for p in mod.variables]
     for u in mod.units:
         out.append((u.loc, "def" if isinstance(u, A.OpDef) else "instance", u))
     for a in mod.assumes:

@@ -34,6 +34,14 @@ class NativeRun:
         self.engine.nvars = len(model.variables)
         self.bridge = ValueBridge(self.engine)
         _refuse_model(model)
+        try:
+            self._translate(model)
+        except RecursionError:
+            # A chain of a thousand definitions nests the translation as deep: refused,
+            # and the Python engine (which runs on a deep stack) checks the model.
+            raise UnsupportedError(f"definitions nested this deep are {NOT_NATIVE}", model.module_loc()) from None
+
+    def _translate(self, model: Model) -> None:
         tr = Translator(model, self.bridge)
         scope = model.scope
         init = next_ = None

@@ -10,6 +10,10 @@ from typing import Any, Callable
 
 from .. import ast as A
 from ..fold_memo import EXPANSION_LIMIT
+
+# How often one definition may be nested in its own expansion before it is taken as
+# a (RECURSIVE) recursion; a higher-order operator passed to itself nests a few times.
+RECURSION_LIMIT = 50
 from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLocal
 from ..errors import Loc, UnsupportedError
 from ..modules import DefSym
@@ -19,45 +23,76 @@ from .syntax import all_names
 class ExpansionMixin:
     """Operators expanded at their call site, and the binding of their parameters."""
 
-    def enter_expansion(self, name: str, loc: Loc) -> None:
-        """One level deeper into expanded operator bodies (the caller decrements
-        `_inline_depth` when done); an expansion this deep is a recursion."""
+    # Operators being expanded, by definition: how often each is nested in itself.
+    _expanding: dict[int, int] | None = None
+
+    def enter_expansion(self, name: str, loc: Loc, defn: object = None) -> None:
+        """One level deeper into expanded operator bodies (the caller calls
+        `leave_expansion` when done).  SANY allows recursion only through RECURSIVE,
+        and expanding a RECURSIVE operator at its call site never ends (its
+        arguments are not known at compile time): `defn` nested in its own expansion
+        RECURSION_LIMIT times is such a recursion.  A chain of distinct definitions
+        may nest as deep as EXPANSION_LIMIT (the Python stack's guard)."""
         self._inline_depth += 1
+        counts = self._expanding
+        if counts is None:
+            counts = self._expanding = {}
+        key = id(defn)
+        n = counts[key] = counts.get(key, 0) + 1
+        if defn is not None and n > RECURSION_LIMIT:
+            self.leave_expansion(defn)
+            raise UnsupportedError(f"the recursive operator {name} is used where TLC expands it at its call site "
+                                   f"(in an action, in Init or under a prime), so its expansion never ends: "
+                                   f"not supported", loc)
         if self._inline_depth > EXPANSION_LIMIT:
-            raise UnsupportedError(f"recursive action-level operator {name}", loc)
+            self.leave_expansion(defn)
+            raise UnsupportedError(f"operator {name} expanded at a depth of more than {EXPANSION_LIMIT} nested "
+                                   f"definitions: not supported", loc)
         if self._inline_depth > self.fold_memo.depth_peak:
             self.fold_memo.depth_peak = self._inline_depth
+
+    def leave_expansion(self, defn: object = None) -> None:
+        self._inline_depth -= 1
+        counts = self._expanding
+        if counts is not None:
+            key = id(defn)
+            n = counts.get(key, 0) - 1
+            if n > 0:
+                counts[key] = n
+            else:
+                counts.pop(key, None)
 
     def inline_let_op(self, name: str, local: LetOpLocal, args: list[A.Expr], env: Env, loc: Loc,
                       compile_body: Callable[[A.Expr, Env], Any]) -> Any:
         """Expand a LET operator at its call site (under a prime, or in an action)."""
         d = local.defn
         self._arity(name, len(d.params), args, loc)
-        self.enter_expansion(name, loc)
+        self.enter_expansion(name, loc, d)
         try:
             bindings, pre = self.bind_params(d.params, args, env, loc)
             body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings},
-                           env.init_mode, env.primed)
+                           env.init_mode, env.primed, enabled_cut=env.enabled_cut)
             return pre, compile_body(d.body, body_env)
         finally:
-            self._inline_depth -= 1
+            self.leave_expansion(d)
 
     def inline_def(self, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc,
                    compile_body: Callable[[A.Expr, Env], Any]) -> Any:
         """Expand an operator at its call site (action-level operators, Init, instances)."""
         d = sym.defn
         self._arity(d.name, len(d.params), args, loc)
-        self.enter_expansion(d.name, loc)
+        self.enter_expansion(d.name, loc, d)
         try:
             bindings, pre = self.bind_params(d.params, args, env, loc)
             inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
-            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed)
+            body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed,
+                           enabled_cut=env.enabled_cut)
             if d.fn_bounds is not None:
                 body = compile_body(A.FnLit(d.loc, d.fn_bounds, d.body), body_env)
             else:
                 body = compile_body(d.body, body_env)
         finally:
-            self._inline_depth -= 1
+            self.leave_expansion(d)
         return pre, body
 
     def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc) -> tuple[dict, list]:

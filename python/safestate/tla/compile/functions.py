@@ -1,5 +1,10 @@
 """Functions, records and tuples: literals, application, function and record sets, field
 access, and EXCEPT with its ``@``.  Tuples are functions on 1..n, so they live here too.
+
+A function literal over an infinite domain (``[i \\in Int |-> i + 2]``) is a lazy
+function value, as TLC's FcnLambdaValue: applied pointwise (domain membership, then the
+body), ``DOMAIN`` is the infinite set; TLC fails only where it must enumerate it (the
+value stored in a state, see checker/storable.py).
 """
 
 from __future__ import annotations
@@ -11,8 +16,8 @@ from ..constfold import NO_VALUE, const_code, const_value
 from ..env import NOTSET, Code, Env, SlotLocal
 from ..errors import EvalError, Loc, TlaError
 from ..specialise import except_flat, dot_code
-from ..values import FnSetValue, FnValue, IntervalSet, RecSetValue, fmt, kind, make_fn
-from .binders import _enum_checked, _comprehension
+from ..values import FnSetValue, FnValue, IntervalSet, LazySet, ProductSet, RecSetValue, fmt, kind, make_fn
+from .binders import _assign, _enum_checked, _comprehension
 from .closures import Value, _guard, _need_set
 from .recursive_functions import RecursiveFunction
 
@@ -52,6 +57,8 @@ class FunctionsMixin:
 
             def fnlit(s: Any, t: Any, L: list) -> Value:
                 S = set_code(s, t, L)
+                if isinstance(S, LazySet) and not S.finite:
+                    return RecursiveFunction(S, body, lambda L2, x: L2.__setitem__(slot, x), list(L), s, t)
                 if type(S) is IntervalSet and S.lo == 1:
                     out = []
                     for i in range(1, S.hi + 1):
@@ -76,7 +83,21 @@ class FunctionsMixin:
                     parts.append(L[slots[0]])
             return tuple(parts)
         del n_keys
-        return _comprehension(binds, body, None, key_of)
+        finite = _comprehension(binds, body, None, key_of)
+        set_codes = [b[0] for b in binds]
+        loc = e.loc
+
+        def bind(L: list, x: Value) -> None:
+            # x is in the product of the domains: one component per bound
+            for (_, slots, is_tuple, _), v in zip(binds, x):
+                _assign(L, slots, is_tuple, v, loc)
+
+        def fnlit_n(s: Any, t: Any, L: list) -> Value:
+            doms = [c(s, t, L) for c in set_codes]
+            if any(isinstance(d, LazySet) and not d.finite for d in doms):
+                return RecursiveFunction(ProductSet(tuple(doms)), body, bind, list(L), s, t)
+            return finite(s, t, L)
+        return fnlit_n
 
     def c_FnApp(self, e: A.FnApp, env: Env) -> Code:
         f = self.expr(e.fn, env)

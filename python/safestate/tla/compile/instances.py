@@ -49,14 +49,16 @@ class InstancesMixin:
         # Operator arguments are compiled in the caller's environment, by value.
         arg_bindings, arg_pre = self._bind_args_by_value(e.args, env)
         fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
-        inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed)
+        inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed,
+                        enabled_cut=env.enabled_cut)
         pre = pre + arg_pre
         if isinstance(sym, DefSym) and compile_body != self.expr:
             d = sym.defn
             self._arity(d.name, len(d.params), fake, e.loc)
             pb, pp = self.bind_params(d.params, fake, inner_env, e.loc)
             inst = {p: inner_env.locals[p] for p in sym.scope.instance_params if p in inner_env.locals}
-            body = compile_body(d.body, Env(sym.scope, env.frame, {**inst, **arg_bindings, **pb}, env.init_mode, env.primed))
+            body = compile_body(d.body, Env(sym.scope, env.frame, {**inst, **arg_bindings, **pb}, env.init_mode,
+                                            env.primed, enabled_cut=env.enabled_cut))
             return pre + pp, body
         code = self._symbol_ref(e.name, sym, fake, inner_env, e.loc)
         if compile_body != self.expr:

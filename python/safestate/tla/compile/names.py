@@ -115,7 +115,8 @@ class NamesMixin:
             if slot is not None:
                 return self._next_var(slot, sym.name, loc)
             sub_env = Env(sym.scope, env.frame, {p: env.locals[p] for p in sym.instance_params
-                                                  if p in env.locals}, env.init_mode, env.primed)
+                                                  if p in env.locals}, env.init_mode, env.primed,
+                          enabled_cut=env.enabled_cut)
             if args:
                 return self._apply_operator_expr(sym.expr, args, sub_env, env, loc)
             return self.expr(sym.expr, sub_env)
@@ -123,24 +124,50 @@ class NamesMixin:
             raise TlaError("semantic", f"{name} is an instance; use {name}!Op", loc)
         raise self._unknown(name, loc)
 
-    # ENABLED computed as TLC does for an instanced module's variable that is
-    # substituted by an expression (done <- flag = 1 /\ tok = "w"): TLC's getPrimedVar
-    # stops at the substitution, so done' is a variable of its own in ENABLED's scratch
-    # state, assigned by done' = e and UNCHANGED done, read by done' elsewhere.
+    # ENABLED computed as TLC does for a variable of an instanced module whose
+    # substitution was made outside the ENABLED (`I!F` with ``F == ENABLED A`` in the
+    # instanced module, or a fairness condition of ``I!Spec``): TLC's ENABLED starts a
+    # branch of its evaluation context (`Context.branch`) and looks a primed variable up
+    # only as far as that branch (`Spec.getPrimedVar`, `Context.lookup(var, cutoff)`),
+    # so it never reaches the substitution: ``x'`` is the instanced module's own
+    # variable x, by name, in ENABLED's scratch state -- assigned by ``x' = e``,
+    # ``x' \in S`` and ``UNCHANGED x`` (the substituted expression's current value)
+    # and read back by ``x'`` elsewhere.  With ``x <- z, y <- z``, ``x'`` and ``y'``
+    # are then two variables, not both z'.  A substitution made inside the ENABLED
+    # (``ENABLED I!A``) is followed as usual.
     enabled_scratch: dict[str, int] | None = None
+    var_names: list[str]  # the checked module's variables (set by the model loader)
 
     def scratch_slot(self, sym: SubstSym, env: Env) -> int | None:
         """The scratch slot of `sym`'s primed value while compiling an ENABLED, if any."""
         scratch = self.enabled_scratch
-        if scratch is None or not sym.variable:
+        if scratch is None or not sym.variable or id(sym) not in env.enabled_cut:
             return None
-        e = sym.expr
-        if isinstance(e, A.Name) and isinstance(sym.scope.lookup(e.name), (VarSym, SubstSym)):
-            return None  # a variable (or a further substitution): primed as usual
+        if sym.name in self.var_names:
+            # TLC's scratch state binds variables by name: one of the checked module's
+            # variables with the same name is the same variable there.
+            return self.var_names.index(sym.name)
         slot = scratch.get(sym.name)
         if slot is None:
             slot = scratch[sym.name] = len(self.var_names) + len(scratch)
         return slot
+
+    def enabled_env(self, env: Env) -> Env:
+        """`env` as the body of an ENABLED: every substitution visible in its scope
+        (and in the scopes those substitutions come from) is behind ENABLED's branch."""
+        cut = set(env.enabled_cut)
+        todo = [env.scope]
+        seen: set[int] = set()
+        while todo:
+            scope = todo.pop()
+            if id(scope) in seen:
+                continue
+            seen.add(id(scope))
+            for sym in scope.names.values():
+                if isinstance(sym, SubstSym):
+                    cut.add(id(sym))
+                    todo.append(sym.scope)
+        return replace(env, enabled_cut=frozenset(cut))
 
     def c_Lambda(self, e: A.Lambda, env: Env) -> Code:
         raise TlaError("semantic", "LAMBDA is only allowed as an operator argument", e.loc)

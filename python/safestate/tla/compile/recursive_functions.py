@@ -45,6 +45,9 @@ class RecursiveFunction:
     def materialize(self) -> Value:
         return make_fn({x: self.apply(x) for x in enum(self.dom)})
 
+    def __repr__(self) -> str:  # `fmt` of a function that is never enumerated
+        return f"[x \\in {fmt(self.dom)} |-> ...]"
+
 
 class RecursiveFunctionsMixin:
     """Function definitions that may refer to themselves."""

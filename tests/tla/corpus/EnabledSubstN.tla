@@ -1,0 +1,5 @@
+---- MODULE EnabledSubstN ----
+(* Instanced by EnabledSubstM (no .cfg). *)
+VARIABLE v
+A == v' = 5
+====
