@@ -29,6 +29,8 @@ would make two different TLA+ values one, the kind is checked explicitly:
 from __future__ import annotations
 
 import itertools
+from itertools import compress
+from operator import is_, is_not
 from typing import Any, Iterable, Iterator
 
 from .enum_watch import ENUM_WATCH
@@ -602,7 +604,7 @@ def values_equal(a: Value, b: Value) -> bool:
         if ta in _CONTAINERS:
             if a == b:
                 return same_kinds(a, b) or tlc_equals(a, b)
-            return tlc_equals(a, b)
+            return False if _unequal_plainly(a, b, ta) else tlc_equals(a, b)
         return a == b
     ka, kb = kind(a), kind(b)
     if ka == kb:
@@ -612,6 +614,30 @@ def values_equal(a: Value, b: Value) -> bool:
     if ka == "model value" or kb == "model value":
         return False
     raise _equality_error(a, b)
+
+
+_SIMPLE_SET = frozenset(_SIMPLE) | {ModelValue}
+
+
+def _unequal_plainly(a: Value, b: Value, t: type) -> bool:
+    """For Python-unequal `a` and `b` of type `t`: True when TLC's walk (`tlc_equals`)
+    surely finds them unequal without comparing incomparable kinds (checked in C:
+    different sizes, or the same simple types position by position)."""
+    if t is tuple:
+        return len(a) != len(b) or (_SIMPLE_SET.issuperset(map(type, a))
+                                    and tuple(map(type, a)) == tuple(map(type, b)))
+    if t is FnValue:
+        da, db = a.d, b.d
+        if len(da) != len(db):
+            return True
+        if type(next(iter(da), "")) is str and list(da) == list(db):
+            va, vb = da.values(), db.values()
+            return _SIMPLE_SET.issuperset(map(type, va)) and list(map(type, va)) == list(map(type, vb))
+        return False
+    if len(a) != len(b):
+        return True
+    ts = set(map(type, a))
+    return len(ts) == 1 and ts <= _SIMPLE_SET and ts == set(map(type, b))
 
 
 def _equality_error(a: Value, b: Value) -> EvalError:
@@ -685,14 +711,21 @@ def same_kinds(a: Value, b: Value) -> bool:
     if t is not type(b):
         return False
     if t is tuple:
-        for x, y in zip(a, b):
-            if x is not y:
-                tx = type(x)
-                if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
-                    return False
+        # Only the positions holding different objects are looked at (in C, `compress`).
+        for x, y in compress(zip(a, b), map(is_not, a, b)):
+            tx = type(x)
+            if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
+                return False
         return True
     if t is FnValue:
         da, db = a.d, b.d
+        if all(map(is_, da, db)):
+            va, vb = da.values(), db.values()
+            for x, y in compress(zip(va, vb), map(is_not, va, vb)):
+                tx = type(x)
+                if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
+                    return False
+            return True
         for (ka, x), (kb, y) in zip(da.items(), db.items()):
             if ka is not kb:
                 tk = type(ka)
@@ -710,9 +743,19 @@ def same_kinds(a: Value, b: Value) -> bool:
         te = next(iter(ta))
         if te in _SIMPLE or te is ModelValue:
             return True
-        # Equal sets built alike iterate alike; any other order is "cannot tell".
+        # Equal sets built alike iterate alike; otherwise pair the elements up.
         for x, y in zip(a, b):
-            if x is not y and (x != y or not same_kinds(x, y)):
+            if x is not y:
+                if x != y:
+                    break
+                if not same_kinds(x, y):
+                    return False
+        else:
+            return True
+        pair = {y: y for y in b}
+        for x in a:
+            y = pair[x]
+            if x is not y and not same_kinds(x, y):
                 return False
         return True
     return True
