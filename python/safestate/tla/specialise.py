@@ -162,7 +162,7 @@ def _member_at(v: Any, S: frozenset, loc: Loc | None) -> bool:
     try:
         return member(v, S)
     except EvalError as err:
-        raise err.with_loc(loc) if loc is not None else err
+        raise (err.with_loc(loc) if loc is not None else err) from None
 
 
 def member_const(lhs: Code, S: Any, negate: bool, loc: Loc | None = None) -> Code | None:

@@ -832,11 +832,14 @@ def check_same_kind_sets(a: frozenset, b: frozenset, op: str) -> None:
     if ta is tb or ta is ModelValue or tb is ModelValue or (ta in _CONTAINERS and tb in _CONTAINERS
                                                              and (ta is frozenset) is (tb is frozenset)):
         return
-    if op == "\\cup":
-        _tlc_sort(list(sorted_elems(a)) + list(sorted_elems(b)))
-    else:
-        for x in sorted_elems(a):
-            member_kind_check(x, b)
+    # TLC looks each element of one set up in the other (`x.equals(y)` along a set
+    # literal, which it keeps unsorted): for \\cup an element of `b` in `a`, for \\cap
+    # and \\ an element of `a` in `b`.
+    x, y = (a, b) if op == "\\cup" else (b, a)
+    for e in sorted_elems(y):
+        for f in sorted_elems(x):
+            if tlc_equals(f, e):  # raises TLC's error for incomparable kinds
+                break
 
 
 def _tlc_compare(a: Value, b: Value) -> int:

@@ -59,7 +59,7 @@ def _check_argument_kind(fv: FnValue, k: Value, loc: Loc) -> None:
             raise EvalError(f"Attempted to apply function:\n{fmt(fv)}\nto argument {fmt(k)}, which is "
                             f"not in the domain of the function.")
     except EvalError as err:
-        raise err.with_loc(loc)
+        raise err.with_loc(loc) from None
 
 
 class FunctionsMixin:

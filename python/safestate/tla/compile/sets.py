@@ -36,7 +36,7 @@ def _kinds_checked(elems: list, loc: Loc) -> frozenset:
     try:
         return check_set_kinds(elems, frozenset(elems))
     except EvalError as err:
-        raise err.with_loc(loc)
+        raise err.with_loc(loc) from None
 
 
 def _domain_is(D: Value, n: int, d: dict | None) -> bool:
