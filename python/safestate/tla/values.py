@@ -590,6 +590,8 @@ def kind(v: Value) -> str:
 
 
 _SIMPLE = (int, str, bool)
+# Key types for which Python's equality of two keys of the same type is TLA+'s.
+_EXACT_KEYS = frozenset((int, str, ModelValue))
 _CONTAINERS = (tuple, FnValue, frozenset)
 
 
@@ -726,11 +728,16 @@ def same_kinds(a: Value, b: Value) -> bool:
                 if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
                     return False
             return True
-        for (ka, x), (kb, y) in zip(da.items(), db.items()):
-            if ka is not kb:
-                tk = type(ka)
-                if tk is not type(kb) or (tk is not str and tk is not int and tk is not ModelValue) or ka != kb:
+        # Another order of the same keys: pair them up (a key may be 1 here, TRUE there).
+        kt = set(map(type, da))
+        if not (kt <= _EXACT_KEYS and kt == set(map(type, db))):
+            pair = {k: k for k in db}
+            for k in da:
+                kb = pair[k]
+                if k is not kb and not same_kinds(k, kb):
                     return False
+        for k, x in da.items():
+            y = db[k]
             if x is not y:
                 tx = type(x)
                 if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
