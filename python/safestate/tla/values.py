@@ -824,7 +824,7 @@ def check_set_kinds(elems: list, s: frozenset) -> frozenset:
             return s
     else:
         types.discard(ModelValue)
-        if len(types) <= 1 or types == {tuple, FnValue}:
+        if len(types) <= 1:
             return s
     _tlc_sort(elems)
     return s
