@@ -31,6 +31,8 @@ from __future__ import annotations
 import sys
 import time
 from array import array
+from itertools import compress
+from operator import is_not
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -400,8 +402,15 @@ class Explorer:
                 key = m.key(st) if keyed else st
                 idx = seen_get(key, -1)
                 if idx >= 0:
-                    stored = states[idx] if keys is None else keys[idx]
-                    if stored is not key and not same_kinds_(key, stored):
+                    if keys is None:
+                        # same_kinds(key, stored), inlined for the state tuple (the hot path)
+                        stored = states[idx]
+                        for x, y in compress(zip(key, stored), map(is_not, key, stored)):
+                            tx = type(x)
+                            if tx is not type(y) or ((tx is tuple or tx is frozenset) and not same_kinds_(x, y)):
+                                idx = resolve(key, idx)
+                                break
+                    elif not same_kinds_(key, keys[idx]):
                         idx = resolve(key, idx)
                 if idx < 0:
                     idx = self._add(st, key, i, leaf, next_level)

@@ -210,8 +210,6 @@ class ParallelExplorer(Explorer):
                 if lv > 1:
                     parent[g] = offset[lv - 1] + ppos[j]
                     leaf[g] = leaves[j]
-        m = self.m
-        keyed = m.view is not None or m.symmetry is not None
         self.states, self.parent, self.leaf, self.level = states, parent, leaf, level
         self._reseen(states)
         self.head = offset[depth]
@@ -236,8 +234,6 @@ class ParallelExplorer(Explorer):
     def _restart_sequential(self, initial: list[tuple]) -> None:
         """Back to the state after Init (level 1), for a search with one worker."""
         k = len(initial)
-        m = self.m
-        keyed = m.view is not None or m.symmetry is not None
         self.states = initial
         del self.parent[k:], self.leaf[k:], self.level[k:]
         self._reseen(initial)
