@@ -39,7 +39,7 @@ from typing import Any, Callable
 from ..tla.enum_watch import ENUM_WATCH, MemoryLimitExceeded, rss_mb
 from ..tla.errors import EvalError, JavaOverrideError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
-from ..tla.values import exact_key, same_kinds
+from ..tla.values import CONTAINER_TYPES, exact_key, same_kinds
 from .model import Model
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 
@@ -370,7 +370,7 @@ class Explorer:
         before = self.generated
         seen_get = self.seen.get
         resolve = self._resolve
-        states, keys, same_kinds_ = self.states, self.keys, same_kinds
+        states, keys, same_kinds_, containers = self.states, self.keys, same_kinds, CONTAINER_TYPES
         invariants = m.invariants
         holds = m.holds
         constrained = bool(m.constraints or m.action_constraints)
@@ -407,7 +407,7 @@ class Explorer:
                         stored = states[idx]
                         for x, y in compress(zip(key, stored), map(is_not, key, stored)):
                             tx = type(x)
-                            if tx is not type(y) or ((tx is tuple or tx is frozenset) and not same_kinds_(x, y)):
+                            if tx is not type(y) or (tx in containers and not same_kinds_(x, y)):
                                 idx = resolve(key, idx)
                                 break
                     elif not same_kinds_(key, keys[idx]):

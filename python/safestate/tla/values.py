@@ -64,35 +64,14 @@ class ModelValue:
 class FnValue:
     """A function that is not a tuple: a record or a function with a non-``1..n`` domain."""
 
-    __slots__ = ("d", "_hash", "_kinds")
+    __slots__ = ("d", "_hash")
 
     def __init__(self, d: dict) -> None:
         self.d = d
         self._hash = -1
-        self._kinds: tuple | None = None
 
     def __eq__(self, other: object) -> bool:
-        # TLA+ equality, not Python's: [a |-> 1] is not [a |-> TRUE] (`_same_entries`), so
-        # sets of records and the states holding them compare exactly.
-        if self is other:
-            return True
-        if type(other) is not FnValue:
-            return False
-        da, db = self.d, other.d  # type: ignore[attr-defined]
-        if da != db:
-            return False
-        # The keys and the types of keys and values, kept with the function (computed
-        # once, interned): the same signature settles it, unless a key or a value is a
-        # tuple or a set (`_NESTED`: then `_same_entries` looks inside).
-        ka = self._kinds
-        if ka is None:
-            ka = self._kinds = _signature(da)
-        kb = other._kinds  # type: ignore[attr-defined]
-        if kb is None:
-            kb = other._kinds = _signature(db)  # type: ignore[attr-defined]
-        if ka is kb and ka is not _NESTED:
-            return True
-        return _same_entries(da, db)
+        return type(other) is FnValue and (self is other or self.d == other.d)  # type: ignore[union-attr]
 
     def __ne__(self, other: object) -> bool:
         return not self.__eq__(other)
@@ -108,30 +87,6 @@ class FnValue:
 
     def __repr__(self) -> str:
         return fmt(self)
-
-
-_NESTED = ("nested",)
-_SIGNATURES: dict[tuple, tuple] = {}
-_PLAIN_TYPES = frozenset((int, str, bool))
-
-
-def _signature(d: dict) -> tuple:
-    """A function's keys with the types of its keys and values, interned (so that two
-    functions of one shape share it), or `_NESTED` when a key or value is neither an
-    integer, a string, a boolean, a model value nor a function."""
-    kt = tuple(map(type, d))
-    vt = tuple(map(type, d.values()))
-    if not _PLAIN_TYPES.issuperset(kt) and not all(t is ModelValue or t in _PLAIN_TYPES for t in kt):
-        return _NESTED
-    if tuple in vt or frozenset in vt or not all(t in _PLAIN_TYPES or t is FnValue or t is ModelValue for t in vt):
-        return _NESTED
-    sig = (tuple(d), kt, vt)
-    got = _SIGNATURES.get(sig)
-    if got is None:
-        if len(_SIGNATURES) >= 50_000:
-            return sig  # not interned: compared through `_same_entries`
-        got = _SIGNATURES[sig] = sig
-    return got
 
 
 def make_fn(d: dict) -> Value:
@@ -638,6 +593,7 @@ _SIMPLE = (int, str, bool)
 # Key types for which Python's equality of two keys of the same type is TLA+'s.
 _EXACT_KEYS = frozenset((int, str, ModelValue))
 _CONTAINERS = (tuple, FnValue, frozenset)
+CONTAINER_TYPES = _CONTAINERS  # the types whose Python equality can merge TRUE and 1 inside
 
 
 def values_equal(a: Value, b: Value) -> bool:
@@ -765,13 +721,13 @@ def same_kinds(a: Value, b: Value) -> bool:
                 return False
         return True
     if t is FnValue:
-        return True  # FnValue.__eq__ is exact
+        return _same_entries(a.d, b.d)
     if t is frozenset:
         ta = set(map(type, a))
         if len(ta) != 1:
             return not a
         te = next(iter(ta))
-        if te is FnValue or te is str or te is ModelValue:
+        if te is str or te is ModelValue:
             return True  # their Python equality is TLA+'s: b's elements have the type too
         if ta != set(map(type, b)):
             return False
@@ -796,13 +752,12 @@ def same_kinds(a: Value, b: Value) -> bool:
 
 
 def _same_entries(da: dict, db: dict) -> bool:
-    """For Python-equal dicts of two functions: the same keys and values to TLA+ (nested
-    functions are compared exactly by their own ``__eq__``)."""
+    """For Python-equal dicts of two functions: the same keys and values to TLA+."""
     if all(map(is_, da, db)):
         va, vb = da.values(), db.values()
         for x, y in compress(zip(va, vb), map(is_not, va, vb)):
             tx = type(x)
-            if tx is not type(y) or ((tx is tuple or tx is frozenset) and not same_kinds(x, y)):
+            if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
                 return False
         return True
     # Another order of the same keys: pair them up (a key may be 1 here, TRUE there).
@@ -817,7 +772,7 @@ def _same_entries(da: dict, db: dict) -> bool:
         y = db[k]
         if x is not y:
             tx = type(x)
-            if tx is not type(y) or ((tx is tuple or tx is frozenset) and not same_kinds(x, y)):
+            if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
                 return False
     return True
 
