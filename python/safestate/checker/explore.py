@@ -14,7 +14,11 @@ single-worker breadth-first search exactly:
 * depth is the number of BFS levels reached (initial states are level 1).
 
 Deduplication uses the exact states (a Python dict), not 64-bit fingerprints, so
-no state can be lost to a fingerprint collision (probability 0).
+no state can be lost to a fingerprint collision (probability 0).  Python's ``True ==
+1`` would make the states x = 1 and x = TRUE one: a state found in the dict is checked
+to be the same TLA+ state (`values.same_kinds`, cheap), and the rare states that only
+Python finds equal get entries of their own, keyed by `values.exact_key`
+(`Explorer._resolve`).
 
 With ``workers > 1`` the fingerprint space is sharded over forked worker processes
 (`parallel.py`, `shard_worker.py`); every count, verdict and trace is identical for
@@ -27,12 +31,15 @@ from __future__ import annotations
 import sys
 import time
 from array import array
+from itertools import compress
+from operator import is_not
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from ..tla.enum_watch import ENUM_WATCH, MemoryLimitExceeded, rss_mb
 from ..tla.errors import EvalError, JavaOverrideError, ModuleEvalError, TlaError
 from ..tla.tlcget import RUNTIME
+from ..tla.values import CONTAINER_TYPES, exact_key, same_kinds
 from .model import Model
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 
@@ -135,6 +142,10 @@ class Explorer:
         self.leaf = array("i")
         self.level = array("i")
         self.seen: dict[Any, int] = {}
+        # The key of each state when it is not the state (VIEW, SYMMETRY), and the states
+        # Python alone finds equal to an earlier one, by `exact_key` (see the docstring).
+        self.keys: list | None = [] if (model.view is not None or model.symmetry is not None) else None
+        self.exact_seen: dict[Any, int] = {}
         self.generated = 0
         self.max_level = 0
         self.edges: list[Edge] = []
@@ -158,9 +169,25 @@ class Explorer:
         self.failed_successor: Step | None = None
 
     # ---------------------------------------------------------------- bookkeeping
+    def _resolve(self, key: Any, idx: int) -> int:
+        """The state with `key` given that Python finds it equal to state `idx`'s key:
+        `idx` if it is the same TLA+ value, else its own entry (-1 if new)."""
+        stored = self.states[idx] if self.keys is None else self.keys[idx]
+        if same_kinds(key, stored):
+            return idx
+        ek = exact_key(key)
+        if ek == exact_key(stored):
+            return idx
+        return self.exact_seen.get(ek, -1)
+
     def _add(self, st: tuple, key: Any, parent: int, leaf: int, level: int) -> int:
         idx = len(self.states)
-        self.seen[key] = idx
+        if key in self.seen:
+            self.exact_seen[exact_key(key)] = idx
+        else:
+            self.seen[key] = idx
+        if self.keys is not None:
+            self.keys.append(key)
         self.states.append(st)
         self.parent.append(parent)
         self.leaf.append(leaf)
@@ -285,7 +312,9 @@ class Explorer:
         if m.in_model(st):
             key = m.key(st)
             found = self.seen.get(key)
-            if found is None:
+            if found is not None:
+                found = self._resolve(key, found)
+            if found is None or found < 0:
                 if not _PLAIN.issuperset(map(type, st)):
                     m.check_storable(key if m.view is not None else st, None)
                 idx = self._add(st, key, -1, -1, 1)
@@ -346,6 +375,8 @@ class Explorer:
         next_level = self.level[i] + 1
         before = self.generated
         seen_get = self.seen.get
+        resolve = self._resolve
+        states, keys, same_kinds_, containers = self.states, self.keys, same_kinds, CONTAINER_TYPES
         invariants = m.invariants
         holds = m.holds
         constrained = bool(m.constraints or m.action_constraints)
@@ -377,6 +408,17 @@ class Explorer:
             if in_model:
                 key = m.key(st) if keyed else st
                 idx = seen_get(key, -1)
+                if idx >= 0:
+                    if keys is None:
+                        # same_kinds(key, stored), inlined for the state tuple (the hot path)
+                        stored = states[idx]
+                        for x, y in compress(zip(key, stored), map(is_not, key, stored)):
+                            tx = type(x)
+                            if tx is not type(y) or (tx in containers and not same_kinds_(x, y)):
+                                idx = resolve(key, idx)
+                                break
+                    elif not same_kinds_(key, keys[idx]):
+                        idx = resolve(key, idx)
                 if idx < 0:
                     if not plain(map(type, st)):
                         m.check_storable(key if keyed and m.view is not None else st, leaf)

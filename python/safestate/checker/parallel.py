@@ -42,6 +42,7 @@ from multiprocessing.connection import Connection
 from typing import Any, Callable
 
 from ..tla.errors import TlaError
+from ..tla.values import exact_key
 from . import explore
 from .explore import CheckResult, Explorer
 from .model import Model
@@ -243,22 +244,33 @@ class ParallelExplorer(Explorer):
                 if lv > 1:
                     parent[g] = offset[lv - 1] + ppos[j]
                     leaf[g] = leaves[j]
-        m = self.m
-        keyed = m.view is not None or m.symmetry is not None
         self.states, self.parent, self.leaf, self.level = states, parent, leaf, level
-        self.seen = {(m.key(st) if keyed else st): g for g, st in enumerate(states)}
+        self._reseen(states)
         self.head = offset[depth]
         self.max_level = depth
         self.next_check = total
 
+    def _reseen(self, states: list) -> None:
+        """The state table of `states` (the workers flag a level where two states are
+        equal to Python only, so these are distinct TLA+ states, see shard_worker.py)."""
+        m = self.m
+        keyed = m.view is not None or m.symmetry is not None
+        keys = [m.key(st) for st in states] if keyed else states
+        self.keys = keys if keyed else None
+        self.exact_seen = {}
+        self.seen = {}
+        for g, k in enumerate(keys):
+            if k in self.seen:
+                self.exact_seen[exact_key(k)] = g
+            else:
+                self.seen[k] = g
+
     def _restart_sequential(self, initial: list[tuple]) -> None:
         """Back to the state after Init (level 1), for a search with one worker."""
         k = len(initial)
-        m = self.m
-        keyed = m.view is not None or m.symmetry is not None
         self.states = initial
         del self.parent[k:], self.leaf[k:], self.level[k:]
-        self.seen = {(m.key(st) if keyed else st): g for g, st in enumerate(initial)}
+        self._reseen(initial)
         self.head = 0
         self.max_level = 1
         self.generated = self._init_generated

@@ -34,7 +34,7 @@ from typing import Any
 
 from ..tla.enum_watch import rss_mb
 from ..tla.env import UNSET
-from ..tla.values import FnValue
+from ..tla.values import FnValue, same_kinds
 from .model import Model
 
 RANK_BITS = 32  # a sort key packs (position in level, rank) into one signed 64-bit int
@@ -158,6 +158,13 @@ class ShardWorker:
         outgoing: list[dict] = [{} for _ in range(n)]
         cur: tuple = ()
         base = rank = 0
+        states_ = self.states
+
+        def stored_key(old: Any) -> Any:
+            """The key `known` holds for an index or a candidate."""
+            if type(old) is int:
+                return m.key(states_[old]) if keyed else states_[old]
+            return old[3] if keyed else old[1]
 
         def on_succ(st: tuple, leaf: int, L: list) -> None:
             # The hot path: kept to the checks that apply, as Explorer.expand's on_succ.
@@ -179,23 +186,35 @@ class ShardWorker:
                 key = m.key(st)
                 dest = hash(key) % n
                 if dest == me:
-                    if key not in known:
+                    old = known.get(key)
+                    if old is None:
                         known[key] = (base + r, st, leaf, key)
                         fresh.append(key)
+                    elif not same_kinds(key, stored_key(old)):
+                        raise _Flag()
                 else:
                     batch = outgoing[dest]
-                    if key not in batch:
+                    old = batch.get(key)
+                    if old is None:
                         batch[key] = (base + r, st, leaf, key)
+                    elif not same_kinds(key, old[3]):
+                        raise _Flag()
                 return
             dest = hash(st) % n
             if dest == me:
-                if st not in known:
+                old = known.get(st)
+                if old is None:
                     known[st] = (base + r, st, leaf)
                     fresh.append(st)
+                elif not same_kinds(st, stored_key(old)):
+                    raise _Flag()
             else:
                 batch = outgoing[dest]
-                if st not in batch:
+                old = batch.get(st)
+                if old is None:
                     batch[st] = (base + r, st, leaf)
+                elif not same_kinds(st, old[1]):
+                    raise _Flag()
 
         flagged = False
         generated = 0
@@ -238,7 +257,14 @@ class ShardWorker:
                 if old is None:
                     known[key] = c
                     fresh.append(key)
-                elif type(old) is tuple and c[0] < old[0]:
+                    continue
+                stored = (old[3] if keyed else old[1]) if type(old) is tuple else (
+                    m.key(self.states[old]) if keyed else self.states[old])
+                if not same_kinds(key, stored):
+                    # Equal to Python only (TRUE and 1): the level is replayed by one
+                    # process, whose state table tells them apart (explore.py).
+                    return True, 0
+                if type(old) is tuple and c[0] < old[0]:
                     known[key] = c
         # Sort keys are unique, so the candidates sort by them alone.
         ordered = sorted([known[k] for k in fresh])

@@ -249,7 +249,7 @@ class Gen:
         return self.expr(ty, d)
 
 
-GRAMMARS = (1, 2, 3, 4, 5)
+GRAMMARS = (1, 2, 3, 4, 5, 6)
 
 
 def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
@@ -257,12 +257,16 @@ def generate(seed: int, index: int, grammar: int = 2) -> GeneratedSpec:
     Grammar 2 adds branching assignments (``x' = a \\/ x' = b``), \\E over strings
     and \\E with two binders; grammar 3 the constructs listed in `grammar3.py`;
     grammar 4 is grammar 3 with the operands of SUBSET and \\X parenthesised;
-    grammar 5 is grammar 4 with fewer constant predicates (`state_predicate`).
+    grammar 5 is grammar 4 with fewer constant predicates (`state_predicate`);
+    grammar 6 is a family of its own, values of mixed kinds (`kinds.py`).
     Specs of a lower grammar are unchanged by a higher one.
 
     The pieces below draw from `rng` in the order of the spec's text; keep that order
     (a spec of a given seed and index must not change)."""
     from .grammar3 import Gen3
+    if grammar == 6:
+        from .kinds import generate_kinds
+        return generate_kinds(seed, index)
     rng = random.Random(f"{seed}:{index}")
     g = Gen3(rng, grammar) if grammar >= 3 else Gen(rng, grammar)
     g3 = g if isinstance(g, Gen3) else None

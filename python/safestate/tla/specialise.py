@@ -21,7 +21,7 @@ from typing import Any, Callable
 from .constfold import NO_VALUE, const_value
 from .env import NOTSET, Code
 from .errors import EvalError, Loc
-from .values import FnValue, IntervalSet, ModelValue, fmt, values_equal
+from .values import FnValue, IntervalSet, ModelValue, fmt, member, values_equal
 
 # Types whose Python equality is TLA+ equality when both sides have the type.
 _SIMPLE = (str, int, bool, ModelValue)
@@ -150,13 +150,35 @@ def dot_code(r: Code, name: str, loc: Loc, fast: bool = True) -> Code:
     return dot
 
 
-def member_const(lhs: Code, S: Any, negate: bool) -> Code | None:
-    """``v \\in S`` for a constant finite set or interval S (no error is possible:
-    membership in a frozenset or an interval is defined for every value)."""
+def _element_type(S: frozenset) -> type | None:
+    """The one type of the elements of `S`, if it has one (then a value of that type is
+    looked up in `S` by Python alone; any other goes through `member` and its checks
+    of TLC's comparisons: ``1 \\in BOOLEAN`` is an error)."""
+    types = {type(x) for x in S}
+    return types.pop() if len(types) == 1 else None
+
+
+def _member_at(v: Any, S: frozenset, loc: Loc | None) -> bool:
+    try:
+        return member(v, S)
+    except EvalError as err:
+        raise (err.with_loc(loc) if loc is not None else err) from None
+
+
+def member_const(lhs: Code, S: Any, negate: bool, loc: Loc | None = None) -> Code | None:
+    """``v \\in S`` for a constant finite set or interval S."""
     if type(S) is frozenset:
+        T = _element_type(S)
         if negate:
-            return lambda s, t, L: lhs(s, t, L) not in S
-        return lambda s, t, L: lhs(s, t, L) in S
+            def notin_set(s: Any, t: Any, L: list) -> bool:
+                v = lhs(s, t, L)
+                return (v not in S) if type(v) is T else not _member_at(v, S, loc)
+            return notin_set
+
+        def in_set(s: Any, t: Any, L: list) -> bool:
+            v = lhs(s, t, L)
+            return (v in S) if type(v) is T else _member_at(v, S, loc)
+        return in_set
     if type(S) is IntervalSet:
         lo, hi = S.lo, S.hi
 
@@ -167,10 +189,11 @@ def member_const(lhs: Code, S: Any, negate: bool) -> Code | None:
     return None
 
 
-def membership_const(S: Any) -> Callable | None:
+def membership_const(S: Any, loc: Loc | None = None) -> Callable | None:
     """A membership test ``test(s, t, L, v)`` for a constant set (see `member_const`)."""
     if type(S) is frozenset:
-        return lambda s, t, L, v: v in S
+        T = _element_type(S)
+        return lambda s, t, L, v: (v in S) if type(v) is T else _member_at(v, S, loc)
     if type(S) is IntervalSet:
         lo, hi = S.lo, S.hi
         return lambda s, t, L, v: type(v) is int and lo <= v <= hi

@@ -17,7 +17,7 @@ from typing import Callable
 from .errors import AssertFailure, EvalError, JavaOverrideError, ModuleEvalError, UnsupportedError
 from .tlcget import tlc_get, tlc_set
 from .values import (
-    INT, NAT, FilteredSet, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
+    INT, NAT, FilteredSet, check_same_kind_sets, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
 )
 
@@ -513,6 +513,7 @@ def cup(a: Value, b: Value) -> Value:
         _need_sets(a, b, "\\cup")
         return FilteredSet(lambda v: member(v, a) or member(v, b), f"{fmt(a)} \\cup {fmt(b)}")
     x, y = _sets(a, b, "\\cup")
+    check_same_kind_sets(x, y, "\\cup")
     return x | y
 
 
@@ -530,6 +531,7 @@ def cap(a: Value, b: Value) -> Value:
     if type(a) is frozenset and isinstance(b, LazySet):
         return frozenset(x for x in a if b.contains(x))
     x, y = _sets(a, b, "\\cap")
+    check_same_kind_sets(x, y, "\\cap")
     return x & y
 
 
@@ -540,6 +542,7 @@ def setminus(a: Value, b: Value) -> Value:
     if type(a) is frozenset and isinstance(b, LazySet):
         return frozenset(x for x in a if not b.contains(x))
     x, y = _sets(a, b, "\\")
+    check_same_kind_sets(x, y, "\\")
     return x - y
 
 

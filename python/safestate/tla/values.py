@@ -14,14 +14,23 @@ hashed as plain tuples):
   `LazySet` subclasses that test membership without enumerating, and materialise
   to a frozenset only when a finite set is really needed.
 
-Known difference from TLC: ``TRUE``/``1`` and ``FALSE``/``0`` are equal Python
-values, so a set or function domain mixing booleans and integers collapses (TLC
-reports an error comparing them); the ``=`` operator itself does report the error.
+Python's ``True == 1`` and ``hash(True) == hash(1)``, so TLA+ ``TRUE``/``1`` and
+``FALSE``/``0`` are *equal* Python values, at any depth (``(1,) == (True,)``).  Where that
+would make two different TLA+ values one, the kind is checked explicitly:
+
+* `same_kinds(a, b)` tells, for Python-equal values, whether they are the same TLA+
+  value (cheap, conservative); `exact_key(v)` is a key whose Python equality is TLA+
+  equality (a full walk, for the rare cases `same_kinds` cannot decide).  The state
+  table (`checker/explore.py`) and the memo tables use them;
+* comparisons TLC refuses (``1 = TRUE``, ``1 \\in BOOLEAN``, ``{1, TRUE}``, ``<<1>> =
+  <<TRUE>>``) raise TLC's error (`values_equal`, `member`, `check_set_kinds`).
 """
 
 from __future__ import annotations
 
 import itertools
+from itertools import compress
+from operator import is_, is_not
 from typing import Any, Iterable, Iterator
 
 from .enum_watch import ENUM_WATCH
@@ -441,10 +450,25 @@ def as_set(v: Value) -> frozenset:
 
 def member(v: Value, s: Value) -> bool:
     if type(s) is frozenset:
-        return v in s
+        r = v in s
+        if s and not _same_kind_as_elements(v, s):
+            member_kind_check(v, s)
+        return r
     if isinstance(s, LazySet):
         return s.contains(v)
     raise EvalError(f"Attempted to check if the value:\n{fmt(v)}\nis an element of the non-set {fmt(s)}")
+
+
+def _same_kind_as_elements(v: Value, s: frozenset) -> bool:
+    """True when looking `v` up in the non-empty set `s` cannot compare incomparable
+    kinds: `v` has the type of (an element of) `s` and, for a container, Python's
+    answer is TLA+'s.  False means "check" (`member_kind_check`)."""
+    tv = type(v)
+    te = type(next(iter(s)))
+    if tv is te:
+        return True
+    # A tuple looked up among functions, a set among lazy sets: the same kind.
+    return tv in _CONTAINERS and te in _CONTAINERS and (tv is frozenset) is (te is frozenset)
 
 
 def set_equal_keys(dom: Value, n: int, d: dict | None) -> bool:
@@ -505,22 +529,23 @@ def tlc_key(v: Value) -> tuple:
     return (9, repr(v))
 
 
-_SORTED_CACHE: dict[frozenset, tuple] = {}
+_SORTED_CACHE: dict[frozenset, tuple[frozenset, tuple]] = {}
 
 
 def sorted_elems(s: Value) -> tuple:
     """The elements of a finite set in TLC's enumeration order."""
     if type(s) is frozenset:
-        r = _SORTED_CACHE.get(s)
-        # {0, 1} == {FALSE, TRUE} in Python: make sure a hit has the right element type.
-        if r is None or (r and type(r[0]) is not type(next(iter(s)))):
-            if len(_SORTED_CACHE) > 20000:
-                _SORTED_CACHE.clear()
-            if all(type(x) is int for x in s):
-                r = tuple(sorted(s))
-            else:
-                r = tuple(sorted(s, key=tlc_key))
-            _SORTED_CACHE[s] = r
+        hit = _SORTED_CACHE.get(s)
+        # {0, 1} == {FALSE, TRUE} in Python: a hit must be for the same TLA+ set.
+        if hit is not None and (hit[0] is s or same_kinds(hit[0], s)):
+            return hit[1]
+        if len(_SORTED_CACHE) > 20000:
+            _SORTED_CACHE.clear()
+        if all(type(x) is int for x in s):
+            r = tuple(sorted(s))
+        else:
+            r = tuple(sorted(s, key=tlc_key))
+        _SORTED_CACHE[s] = (s, r)
         return r
     if isinstance(s, LazySet):
         if isinstance(s, IntervalSet):
@@ -564,18 +589,356 @@ def kind(v: Value) -> str:
     return t.__name__
 
 
+_SIMPLE = (int, str, bool)
+# Key types for which Python's equality of two keys of the same type is TLA+'s.
+_EXACT_KEYS = frozenset((int, str, ModelValue))
+_CONTAINERS = (tuple, FnValue, frozenset)
+CONTAINER_TYPES = _CONTAINERS  # the types whose Python equality can merge TRUE and 1 inside
+
+
 def values_equal(a: Value, b: Value) -> bool:
     """TLA+ ``=``: TLC reports an error comparing values of different kinds, except
-    model values (which differ from every other value)."""
-    ta, tb = type(a), type(b)
-    if ta is tb:
+    model values (which differ from every other value), at any depth: ``<<1>> =
+    <<TRUE>>`` is an error, not TRUE (Python's ``(1,) == (True,)``)."""
+    ta = type(a)
+    if ta is type(b):
+        if ta is int or ta is str or ta is bool or ta is ModelValue:
+            return a == b
+        if ta in _CONTAINERS:
+            if a == b:
+                return same_kinds(a, b) or tlc_equals(a, b)
+            return False if _unequal_plainly(a, b, ta) else tlc_equals(a, b)
         return a == b
     ka, kb = kind(a), kind(b)
     if ka == kb:
-        return a == b
+        if a == b:
+            return same_kinds(a, b) or tlc_equals(a, b)
+        return tlc_equals(a, b) if ka == "function" else False
     if ka == "model value" or kb == "model value":
         return False
-    raise EvalError(f"Attempted to check equality of {ka} {fmt(a)} with non-{ka}:\n{fmt(b)}")
+    raise _equality_error(a, b)
+
+
+_SIMPLE_SET = frozenset(_SIMPLE) | {ModelValue}
+
+
+def _unequal_plainly(a: Value, b: Value, t: type) -> bool:
+    """For Python-unequal `a` and `b` of type `t`: True when TLC's walk (`tlc_equals`)
+    surely finds them unequal without comparing incomparable kinds (checked in C:
+    different sizes, or the same simple types position by position)."""
+    if t is tuple:
+        return len(a) != len(b) or (_SIMPLE_SET.issuperset(map(type, a))
+                                    and tuple(map(type, a)) == tuple(map(type, b)))
+    if t is FnValue:
+        da, db = a.d, b.d
+        if len(da) != len(db):
+            return True
+        if type(next(iter(da), "")) is str and list(da) == list(db):
+            va, vb = da.values(), db.values()
+            return _SIMPLE_SET.issuperset(map(type, va)) and list(map(type, va)) == list(map(type, vb))
+        return False
+    if len(a) != len(b):
+        return True
+    ts = set(map(type, a))
+    return len(ts) == 1 and ts <= _SIMPLE_SET and ts == set(map(type, b))
+
+
+def _equality_error(a: Value, b: Value) -> EvalError:
+    """TLC's message where ``a.equals(b)`` meets values of incomparable kinds."""
+    ka = kind(a)
+    verb = "compare equality" if ka == "boolean" else "check equality"
+    return EvalError(f"Attempted to {verb} of {ka} {fmt(a)} with non-{ka}:\n{fmt(b)}")
+
+
+def _compare_error(a: Value, b: Value) -> EvalError:
+    """TLC's message where ``a.compareTo(b)`` (sorting a set, a binary search in one)
+    meets values of incomparable kinds."""
+    ka = kind(a)
+    if ka in ("boolean", "integer", "string"):
+        return EvalError(f"Attempted to compare {ka} {fmt(a)} with non-{ka}:\n{fmt(b)}")
+    if ka == "function":
+        return EvalError(f"Attempted to compare the function {fmt(a)} with the value:\n{fmt(b)}")
+    return EvalError(f"Attempted to compare the set {fmt(a)} with the value:\n{fmt(b)}")
+
+
+def _fn_items(f: Value) -> list:
+    """A function's (key, value) pairs in TLC's order of its domain."""
+    if type(f) is tuple:
+        return list(zip(range(1, len(f) + 1), f))
+    keys = sorted(f.d, key=tlc_key)
+    return [(k, f.d[k]) for k in keys]
+
+
+def tlc_equals(a: Value, b: Value) -> bool:
+    """``a.equals(b)`` as TLC computes it: the same walk in the same order (a tuple's
+    length first, a record's field names, a function's domain in TLC's order, a set's
+    size then its elements in TLC's order), so that the first pair of incomparable
+    kinds it meets raises TLC's error, wherever Python would answer."""
+    ta, tb = type(a), type(b)
+    if ta is ModelValue or tb is ModelValue:
+        return a is b
+    ka, kb = kind(a), kind(b)
+    if ka != kb:
+        raise _equality_error(a, b)
+    if ka != "function" and ka != "set":
+        return a == b
+    if ka == "set":
+        if not (is_finite(a) and is_finite(b)):
+            return a == b
+        if set_size(a) != set_size(b):
+            return False
+        return all(tlc_equals(x, y) for x, y in zip(sorted_elems(a), sorted_elems(b)))
+    if ta is tuple and tb is tuple:
+        return len(a) == len(b) and all(tlc_equals(x, y) for x, y in zip(a, b))
+    ia, ib = _fn_items(a), _fn_items(b)
+    if len(ia) != len(ib):
+        return False
+    if ta is FnValue and tb is FnValue and all(type(k) is str for k, _ in ia):
+        # A record: its field names first (TLC's RecordValue.equals).
+        if [k for k, _ in ia] != [k for k, _ in ib]:
+            return False
+    else:
+        for (x, _), (y, _) in zip(ia, ib):
+            if not tlc_equals(x, y):
+                return False
+    return all(tlc_equals(x, y) for (_, x), (_, y) in zip(ia, ib))
+
+
+def same_kinds(a: Value, b: Value) -> bool:
+    """For Python-equal `a` and `b`: True only if they are the same TLA+ value (no TRUE
+    where the other has 1, at any depth).  Cheap and conservative: False may also mean
+    "cannot tell quickly" (then compare `exact_key`s)."""
+    if a is b:
+        return True
+    t = type(a)
+    if t is not type(b):
+        return False
+    if t is tuple:
+        # Only the positions holding different objects are looked at (in C, `compress`).
+        for x, y in compress(zip(a, b), map(is_not, a, b)):
+            tx = type(x)
+            if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
+                return False
+        return True
+    if t is FnValue:
+        return _same_entries(a.d, b.d)
+    if t is frozenset:
+        ta = set(map(type, a))
+        if len(ta) != 1:
+            return not a
+        te = next(iter(ta))
+        if te is str or te is ModelValue:
+            return True  # their Python equality is TLA+'s: b's elements have the type too
+        if ta != set(map(type, b)):
+            return False
+        if te is int or te is bool:
+            return True
+        # Equal sets built alike iterate alike; otherwise pair the elements up.
+        for x, y in zip(a, b):
+            if x is not y:
+                if x != y:
+                    break
+                if not same_kinds(x, y):
+                    return False
+        else:
+            return True
+        pair = {y: y for y in b}
+        for x in a:
+            y = pair[x]
+            if x is not y and not same_kinds(x, y):
+                return False
+        return True
+    return True
+
+
+def _same_entries(da: dict, db: dict) -> bool:
+    """For Python-equal dicts of two functions: the same keys and values to TLA+."""
+    if all(map(is_, da, db)):
+        va, vb = da.values(), db.values()
+        for x, y in compress(zip(va, vb), map(is_not, va, vb)):
+            tx = type(x)
+            if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
+                return False
+        return True
+    # Another order of the same keys: pair them up (a key may be 1 here, TRUE there).
+    kt = set(map(type, da))
+    if not (kt <= _EXACT_KEYS and kt == set(map(type, db))):
+        pair = {k: k for k in db}
+        for k in da:
+            kb = pair[k]
+            if k is not kb and not same_kinds(k, kb):
+                return False
+    for k, x in da.items():
+        y = db[k]
+        if x is not y:
+            tx = type(x)
+            if tx is not type(y) or (tx in _CONTAINERS and not same_kinds(x, y)):
+                return False
+    return True
+
+
+class _BoolKey:
+    """TRUE or FALSE inside an `exact_key`: equal to nothing but itself."""
+
+    __slots__ = ("v",)
+
+    def __init__(self, v: bool) -> None:
+        self.v = v
+
+    def __reduce__(self) -> tuple:
+        return (_bool_key, (self.v,))
+
+    def __repr__(self) -> str:
+        return "TRUE" if self.v else "FALSE"
+
+
+_TRUE_KEY, _FALSE_KEY = _BoolKey(True), _BoolKey(False)
+_FN_TAG = "\x00fn"
+
+
+def _bool_key(v: bool) -> _BoolKey:
+    return _TRUE_KEY if v else _FALSE_KEY
+
+
+def exact_key(v: Value) -> Any:
+    """A key whose Python equality and hash are TLA+ equality: `v` with every boolean
+    replaced by a key equal to no integer.  A full walk of `v`."""
+    t = type(v)
+    if t is bool:
+        return _TRUE_KEY if v else _FALSE_KEY
+    if t is int or t is str or t is ModelValue:
+        return v
+    if t is tuple:
+        return tuple(map(exact_key, v))
+    if t is FnValue:
+        return (_FN_TAG, frozenset((exact_key(k), exact_key(x)) for k, x in v.d.items()))
+    if t is frozenset:
+        return frozenset(map(exact_key, v))
+    if isinstance(v, LazySet):
+        return frozenset(map(exact_key, v.materialize())) if v.finite else (type(v).__name__, v.describe())
+    return v
+
+
+def check_set_kinds(elems: list, s: frozenset) -> frozenset:
+    """The set `s` built from `elems`, or TLC's error where sorting them (TLC normalises
+    every set it compares, stores or counts) compares values of incomparable kinds:
+    ``{1, TRUE}`` is an error, not a one-element set.  Sets of functions or sets are
+    checked when Python merged two of their elements (``{<<1>>, <<TRUE>>}``)."""
+    types = set(map(type, elems))
+    if len(types) == 1:
+        t = types.pop()
+        if t in _SIMPLE or t is ModelValue or len(s) == len(elems):
+            return s
+        if len(set(map(exact_key, elems))) == len(s):
+            return s
+    else:
+        types.discard(ModelValue)
+        if len(types) <= 1:
+            return s
+    _tlc_sort(elems)
+    return s
+
+
+def check_same_kind_sets(a: frozenset, b: frozenset, op: str) -> None:
+    """``a \\cup b``, ``a \\cap b``, ``a \\ b`` on sets whose elements TLC cannot compare
+    (``{1} \\cup {TRUE}``): its error."""
+    if not a or not b:
+        return
+    ta, tb = type(next(iter(a))), type(next(iter(b)))
+    if ta is tb or ta is ModelValue or tb is ModelValue or (ta in _CONTAINERS and tb in _CONTAINERS
+                                                             and (ta is frozenset) is (tb is frozenset)):
+        return
+    # TLC looks each element of one set up in the other (`x.equals(y)` along a set
+    # literal, which it keeps unsorted): for \\cup an element of `b` in `a`, for \\cap
+    # and \\ an element of `a` in `b`.
+    x, y = (a, b) if op == "\\cup" else (b, a)
+    for e in sorted_elems(y):
+        for f in sorted_elems(x):
+            if tlc_equals(f, e):  # raises TLC's error for incomparable kinds
+                break
+
+
+def _tlc_compare(a: Value, b: Value) -> int:
+    """``a.compareTo(b)`` as TLC: an error for values of incomparable kinds."""
+    if type(a) is ModelValue or type(b) is ModelValue:
+        if a is b:
+            return 0
+        return -1 if type(a) is ModelValue else 1
+    ka, kb = kind(a), kind(b)
+    if ka != kb:
+        raise _compare_error(a, b)
+    if ka == "set":
+        ea, eb = _tlc_sort(list(iter_set(a))), _tlc_sort(list(iter_set(b)))
+        if len(ea) != len(eb):
+            return len(ea) - len(eb)
+        for x, y in zip(ea, eb):
+            c = _tlc_compare(x, y)
+            if c:
+                return c
+        return 0
+    if ka == "function":
+        ia, ib = _fn_items(a), _fn_items(b)
+        if len(ia) != len(ib):
+            return len(ia) - len(ib)
+        for (x, _), (y, _) in zip(ia, ib):
+            c = _tlc_compare(x, y)
+            if c:
+                return c
+        for (_, x), (_, y) in zip(ia, ib):
+            c = _tlc_compare(x, y)
+            if c:
+                return c
+        return 0
+    ta, tb = tlc_key(a), tlc_key(b)
+    return -1 if ta < tb else (1 if ta > tb else 0)
+
+
+def _tlc_sort(elems: list) -> list:
+    """TLC's ValueVec.sort(true): a binary insertion sort without duplicates, with its
+    comparisons in its order (so that the first incomparable pair raises its error)."""
+    out: list = []
+    for i, elem in enumerate(elems):
+        if i == 0:
+            out.append(elem)
+            continue
+        low, high, cmp, idx = 0, len(out), 0, 0
+        while low < high:
+            idx = (low + high) >> 1
+            cmp = _tlc_compare(elem, out[idx])
+            if cmp == 0:
+                break
+            if cmp < 0:
+                high = idx
+            else:
+                low = idx + 1
+        if cmp != 0:
+            out.insert(idx if cmp < 0 else idx + 1, elem)
+    return out
+
+
+def member_kind_check(v: Value, s: frozenset) -> None:
+    """Raise TLC's error if looking `v` up in the finite set `s` compares values of
+    incomparable kinds (TLC's binary search in its sorted elements): ``1 \\in BOOLEAN``."""
+    if not s:
+        return
+    tv = type(v)
+    if tv is ModelValue:
+        return
+    kv = kind(v)
+    elems = sorted_elems(s)
+    low, high = 0, len(elems)
+    while low < high:
+        mid = (low + high) >> 1
+        e = elems[mid]
+        if type(e) is not ModelValue and kind(e) != kv:
+            raise _compare_error(v, e)
+        cmp = _tlc_compare(v, e)
+        if cmp == 0:
+            return
+        if cmp < 0:
+            high = mid
+        else:
+            low = mid + 1
 
 
 # ----------------------------------------------------------------- printing

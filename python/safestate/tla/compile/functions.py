@@ -16,7 +16,8 @@ from ..constfold import NO_VALUE, const_code, const_value
 from ..env import NOTSET, Code, Env, SlotLocal
 from ..errors import EvalError, Loc, TlaError
 from ..specialise import except_flat, dot_code
-from ..values import FnSetValue, FnValue, IntervalSet, LazySet, ProductSet, RecSetValue, fmt, kind, make_fn
+from ..values import (FnSetValue, FnValue, IntervalSet, LazySet, ModelValue, ProductSet, RecSetValue, fmt, kind, make_fn,
+                      member_kind_check, same_kinds)
 from .binders import _assign, _enum_checked, _comprehension
 from .closures import Value, _guard, _need_set
 from .recursive_functions import RecursiveFunction
@@ -44,6 +45,26 @@ def _update(f: Value, keys: list, i: int, val: Code, s: Any, t: Any, L: list, at
     d = dict(f.d)
     d[k] = new
     return FnValue(d)
+
+
+def _check_argument_kind(fv: FnValue, k: Value, loc: Loc) -> None:
+    """TLC's error where applying `fv` to `k` compares values of incomparable kinds
+    (``[b \\in BOOLEAN |-> 0][1]``): it looks `k` up in the sorted domain."""
+    if not fv.d:
+        return
+    dom = frozenset(fv.d)
+    try:
+        if all(type(x) is int for x in dom) and type(k) is not ModelValue and type(k) is not int:
+            # TLC keeps a function over an interval of integers as an array.
+            lo, hi = min(dom), max(dom)
+            if hi - lo + 1 == len(dom):
+                raise EvalError(f"Attempted to apply function with integer domain to the non-integer argument {fmt(k)}")
+        member_kind_check(k, dom)
+        if k in fv.d and not same_kinds(k, next(x for x in fv.d if x == k)):
+            raise EvalError(f"Attempted to apply function:\n{fmt(fv)}\nto argument {fmt(k)}, which is "
+                            f"not in the domain of the function.")
+    except EvalError as err:
+        raise err.with_loc(loc) from None
 
 
 class FunctionsMixin:
@@ -117,7 +138,12 @@ class FunctionsMixin:
             elif type(fv) is FnValue:
                 r = fv.d.get(k, NOTSET)
                 if r is not NOTSET:
+                    tk = type(k)
+                    if tk is str or tk is ModelValue or tk is type(next(iter(fv.d))):
+                        return r
+                    _check_argument_kind(fv, k, loc)
                     return r
+                _check_argument_kind(fv, k, loc)
             elif type(fv) is RecursiveFunction:
                 try:
                     return fv.apply(k)

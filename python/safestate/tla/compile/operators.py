@@ -150,7 +150,8 @@ class OperatorsMixin:
             return self._call_def(sym, [e.lhs, e.rhs], env, e.loc)
         if op in ("\\in", "\\notin"):
             if self.fast_paths and self.folder.is_constant(e.rhs, env):
-                fast = member_const(self.expr(e.lhs, env), const_value(self.expr(e.rhs, env)), op == "\\notin")
+                fast = member_const(self.expr(e.lhs, env), const_value(self.expr(e.rhs, env)), op == "\\notin",
+                                    e.loc)
                 if fast is not None:
                     return fast
             test = self.membership(e.rhs, env)
@@ -168,7 +169,8 @@ class OperatorsMixin:
         if op == "=":
             def eq(s: Any, t: Any, L: list) -> bool:
                 x, y = a(s, t, L), b(s, t, L)
-                if type(x) is type(y):
+                tx = type(x)
+                if tx is type(y) and (tx is int or tx is str or tx is bool):
                     return x == y
                 try:
                     return values_equal(x, y)
@@ -178,7 +180,8 @@ class OperatorsMixin:
         if op == "/=":
             def neq(s: Any, t: Any, L: list) -> bool:
                 x, y = a(s, t, L), b(s, t, L)
-                if type(x) is type(y):
+                tx = type(x)
+                if tx is type(y) and (tx is int or tx is str or tx is bool):
                     return x != y
                 try:
                     return not values_equal(x, y)

@@ -11,7 +11,7 @@ from .. import ast as A
 from ..env import NOTSET, Code, Env, Frame, LazyLocal, SlotLocal
 from ..errors import EvalError
 from ..modules import DefSym
-from ..values import LazySet, ProductSet, fmt, make_fn, member
+from ..values import LazySet, ProductSet, exact_key, fmt, make_fn, member
 from .binders import _assign
 from .closures import Value, enum, _guard, _need_set
 
@@ -29,13 +29,16 @@ class RecursiveFunction:
         self.memo: dict = {}
 
     def apply(self, x: Value) -> Value:
-        r = self.memo.get(x, NOTSET)
+        # Keyed exactly: f[1] is no answer for f[TRUE] (Python's True == 1).
+        tx = type(x)
+        key = x if tx is int or tx is str else exact_key(x)
+        r = self.memo.get(key, NOTSET)
         if r is NOTSET:
             if not member(x, self.dom):
                 raise EvalError(f"Attempted to apply function to argument {fmt(x)}, which is not in its domain")
             L = list(self.frame)
             self.bind(L, x)
-            r = self.memo[x] = self.body(self.s, self.t, L)
+            r = self.memo[key] = self.body(self.s, self.t, L)
         return r
 
     @property

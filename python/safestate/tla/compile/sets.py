@@ -9,11 +9,12 @@ from typing import Any, Callable
 from .. import ast as A
 from ..constfold import const_value
 from ..env import Code, Env
-from ..errors import Loc
+from ..errors import EvalError, Loc
 from ..modules import BuiltinSym, DefSym
 from ..specialise import membership_const
 from ..stdlib import non_integer_error
-from ..values import FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as_set, is_set, member
+from ..values import (FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as_set, check_set_kinds, is_set,
+                      member)
 from .binders import _enum_checked, _assign, _comprehension
 from .closures import Value, check_bool, _guard
 
@@ -28,6 +29,14 @@ def _lazy_filter(base: LazySet, pred: Code, slots: list[int], is_tuple: bool, sl
         _assign(L, slots, is_tuple, v, sloc)
         return check_bool(pred(s, t, L), ploc, "set filter")
     return FilteredSet(test, f"{{x \\in {base.describe()} : ...}}")
+
+
+def _kinds_checked(elems: list, loc: Loc) -> frozenset:
+    """The set of `elems`, or TLC's error for elements of incomparable kinds."""
+    try:
+        return check_set_kinds(elems, frozenset(elems))
+    except EvalError as err:
+        raise err.with_loc(loc) from None
 
 
 def _domain_is(D: Value, n: int, d: dict | None) -> bool:
@@ -48,9 +57,21 @@ class SetsMixin:
     def c_SetEnum(self, e: A.SetEnum, env: Env) -> Code:
         codes = [self.expr(x, env) for x in e.elems]
         if all(isinstance(x, (A.Num, A.Str, A.Bool)) for x in e.elems):
-            v = frozenset(x.value for x in e.elems)  # type: ignore[attr-defined]
-            return lambda s, t, L: v
-        return lambda s, t, L: frozenset([c(s, t, L) for c in codes])
+            elems = [x.value for x in e.elems]  # type: ignore[attr-defined]
+            v = frozenset(elems)
+            if len({type(x) for x in elems}) == 1:
+                return lambda s, t, L: v
+            loc = e.loc
+            return lambda s, t, L: _kinds_checked(elems, loc)
+        if len(codes) == 1:
+            c0 = codes[0]
+            return lambda s, t, L: frozenset((c0(s, t, L),))
+
+        loc = e.loc
+
+        def setenum(s: Any, t: Any, L: list) -> frozenset:
+            return _kinds_checked([c(s, t, L) for c in codes], loc)
+        return setenum
 
     def c_SetFilter(self, e: A.SetFilter, env: Env) -> Code:
         inner, binds = self.bind_bounds([e.bound], env)
@@ -76,6 +97,7 @@ class SetsMixin:
     def c_SetMap(self, e: A.SetMap, env: Env) -> Code:
         inner, binds = self.bind_bounds(e.bounds, env)
         body = self.expr(e.expr, inner)
+        loc = e.loc
         if len(binds) == 1 and not binds[0][2]:
             set_code, (slot,), _, sloc = binds[0]
 
@@ -84,9 +106,9 @@ class SetsMixin:
                 for v in _enum_checked(set_code(s, t, L), sloc):
                     L[slot] = v
                     out.append(body(s, t, L))
-                return frozenset(out)
+                return _kinds_checked(out, loc) if len(out) > 1 else frozenset(out)
             return smap1
-        return _comprehension(binds, body, lambda out: frozenset(out))
+        return _comprehension(binds, body, lambda out: _kinds_checked(out, loc))
 
     def _product(self, e: A.Apply, env: Env) -> Code:
         codes = [self.expr(x, env) for x in e.args]
@@ -97,7 +119,7 @@ class SetsMixin:
         """Compile ``v \\in set_expr`` without building structured sets."""
         e = set_expr
         if self.fast_paths and self.folder.is_constant(e, env):
-            fast = membership_const(const_value(self.expr(e, env)))
+            fast = membership_const(const_value(self.expr(e, env)), e.loc)
             if fast is not None:
                 return fast
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(env.scope.lookup(".."), BuiltinSym):
