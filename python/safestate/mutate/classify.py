@@ -206,9 +206,10 @@ def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                 conn, pid = _fork(subject, m)
                 running[conn] = (m, pid, time.monotonic())
             ready = wait(list(running), timeout=1.0)
-            for conn in ready:
-                m, pid, t0 = running.pop(conn)  # type: ignore[index]
-                on_done(m, _receive(conn, pid, m, t0))
+            for r in ready:
+                assert isinstance(r, Connection)
+                m, pid, t0 = running.pop(r)
+                on_done(m, _receive(r, pid, m, t0))
             now = time.monotonic()
             for conn, (m, pid, t0) in list(running.items()):
                 if now - t0 > subject.timeout + 30:  # the product search stops itself at the budget

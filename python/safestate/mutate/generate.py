@@ -187,7 +187,7 @@ def _roles(cfg_init: str | None, cfg_next: str | None, spec: str | None,
 
 
 def generate(model: Path, init: str | None, nxt: str | None, spec: str | None = None,
-             operators: Iterable[str] | None = None) -> list[Mutant]:
+             operators: Iterable[str] | None = None, inputs: Iterable[str] = ()) -> list[Mutant]:
     """Every mutant of the model's behaviour definitions, in file and source order."""
     chosen = list(operators) if operators is not None else list(OPERATORS)
     unknown = [o for o in chosen if o not in OPERATORS]
@@ -199,13 +199,13 @@ def generate(model: Path, init: str | None, nxt: str | None, spec: str | None = 
     except OSError as e:
         raise GenerateError(f"{model}: {e}") from None
     roots, init_name, next_name = _roles(init, nxt, spec, defs)
-    inputs = _input_sets(defs, next_name) if next_name else {}
+    input_sets = _input_sets(defs, next_name) if next_name else {}
     out: list[Mutant] = []
     seen: set[tuple[str, int, int, str]] = set()
     for name in _reachable(defs, roots):
         d = defs[name]
         ctx = Context(d.data, name, is_next=name == next_name, is_init=name == init_name,
-                      input_sets=inputs.get(d.file, []))
+                      input_sets=input_sets.get(d.file, []), inputs=frozenset(inputs))
         for node in _walk(d.body):
             for op in chosen:
                 for edit in OPERATORS[op].fn(node, ctx):

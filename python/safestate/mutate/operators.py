@@ -39,6 +39,9 @@ class Context:
     # Byte ranges of the set expressions the environment draws inputs from (the bounds of
     # the \E of Next, and the definitions they name): `drop-input-value` works inside them.
     input_sets: list[tuple[int, int]] = field(default_factory=list)
+    # The input variables (system.toml [mutate] inputs): `unchanged` leaves their
+    # assignments alone (an input frozen is `drop-input-value`'s business).
+    inputs: frozenset[str] = frozenset()
 
     def text(self, n: Node) -> str:
         return self.data[n.start_byte:n.end_byte].decode("utf-8")
@@ -260,7 +263,7 @@ def unchanged(n: Node, ctx: Context) -> Iterator[Edit]:
     if p is None or p[1].type != "eq" or not _is_primed_name(p[0]):
         return
     var = ctx.text(_named(_strip_parens(p[0]))[0])
-    if ctx.text(p[2]).strip() == var:
+    if ctx.text(p[2]).strip() == var or var in ctx.inputs:
         return
     yield Edit(p[2].start_byte, p[2].end_byte, var, f"{var}' kept unchanged (was `{_short(ctx.text(p[2]))}`)")
 
