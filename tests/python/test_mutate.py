@@ -153,3 +153,11 @@ def test_each_operator_generates_its_mutants(tmp_path: Path, operator: str) -> N
     # The declarative form (models/mutants/*.toml) substitutes to the same text.
     for m, t in zip(mutants, texts):
         assert text.decode().count(m.original) == 1 and text.decode().replace(m.original, m.patched) == t
+
+
+def test_every_operator_is_documented_in_docs_mutate() -> None:
+    from safestate.mutate.operators import OPERATORS
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "mutate.md").read_text()
+    for name, op in OPERATORS.items():
+        assert f"| `{name}` |" in doc, name
+        assert op.doc, name
