@@ -37,7 +37,7 @@ from ..checker.model import Model, load_model
 from ..tla.errors import TlaError
 from ..tla.values import fmt
 from .generate import Mutant
-from .product import DiffStep, Projection, search
+from .product import DiffStep, OriginalSide, Projection, search
 
 KILLING_RESULTS = {"safety failure", "deadlock failure", "liveness failure", "temporal safety failure",
                    "action property failure", "init property failure", "assert failure"}
@@ -79,6 +79,7 @@ class Subject:
     max_pairs: int = 2_000_000
     max_memory_mb: int = 3000
     original: Model | None = None  # loaded once, before the workers fork
+    side: OriginalSide | None = None  # its successors, explored once before the fork
 
     def load_original(self) -> Model:
         if self.original is None:
@@ -147,7 +148,7 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
                            seconds=time.monotonic() - start)
         deadline = start + subject.timeout
         try:
-            pr = search(original, model, subject.projection, subject.max_pairs, deadline)
+            pr = search(subject.side or original, model, subject.projection, subject.max_pairs, deadline)
         except TlaError as e:
             return Outcome(mutant.id, "error", reason=f"product search: {_where(e, tmp)}",
                            seconds=time.monotonic() - start)
@@ -196,7 +197,9 @@ def difference_itf(proj: Projection, steps: list[DiffStep], mutant: Mutant) -> d
 def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                  on_done: Callable[[Mutant, Outcome], None]) -> None:
     """Classifies every mutant in forked children, at most `workers` at once."""
-    subject.load_original()
+    if subject.side is None:
+        subject.side = OriginalSide(subject.load_original())
+        subject.side.explore(time.monotonic() + subject.timeout)
     todo = list(mutants)
     running: dict[Connection, tuple[Mutant, int, float]] = {}
     try:

@@ -62,8 +62,43 @@ class Projection:
         return tuple(idx[v] for v in self.inputs), tuple(idx[v] for v in self.observables)
 
 
-def search(original: Model, mutant: Model, proj: Projection, max_pairs: int = 2_000_000,
+class OriginalSide:
+    """The original's initial states and successors (inside its constraints), computed
+    once: in `classify_all` before the workers fork, so every mutant's search reads them
+    instead of evaluating the original's Next again.  States are looked up by the
+    model's fingerprint (the checker, like TLC, takes a VIEW's states as equal)."""
+
+    def __init__(self, model: Model) -> None:
+        self.model = model
+        self.init = [s for s in model.initial_states() if model.in_model(s)]
+        self.table: dict[Any, list[tuple]] = {}
+
+    def successors(self, st: tuple) -> list[tuple]:
+        k = self.model.key(st)
+        out = self.table.get(k)
+        if out is None:
+            out = [t.state for t in self.model.successors(st) if self.model.in_model(t.state)]
+            self.table[k] = out
+        return out
+
+    def explore(self, deadline: float | None = None) -> None:
+        """Fills the table for every reachable state (until the deadline)."""
+        todo = list(self.init)
+        seen = {self.model.key(s) for s in todo}
+        while todo:
+            if deadline is not None and time.monotonic() > deadline:
+                return
+            for t in self.successors(todo.pop()):
+                k = self.model.key(t)
+                if k not in seen:
+                    seen.add(k)
+                    todo.append(t)
+
+
+def search(original: Model | OriginalSide, mutant: Model, proj: Projection, max_pairs: int = 2_000_000,
            deadline: float | None = None, progress: Callable[[int], None] | None = None) -> ProductResult:
+    side = original if isinstance(original, OriginalSide) else OriginalSide(original)
+    original = side.model
     ii, oi = proj.indices(original)
     mi, mo = proj.indices(mutant)
 
@@ -115,7 +150,7 @@ def search(original: Model, mutant: Model, proj: Projection, max_pairs: int = 2_
                             parents.append(parent)
         return None
 
-    o0 = [s for s in original.initial_states() if original.in_model(s)]
+    o0 = side.init
     m0 = [s for s in mutant.initial_states() if mutant.in_model(s)]
     diff = compare(grouped(o0, ii, oi), grouped(m0, mi, mo), -1)
     if diff is not None:
@@ -127,7 +162,7 @@ def search(original: Model, mutant: Model, proj: Projection, max_pairs: int = 2_
                 " (pair budget)" if k >= max_pairs else " (time budget)")
             return ProductResult("timeout", k, nondeterministic=nondet, reason=why)
         o, m = states[k]
-        so = [t.state for t in original.successors(o) if original.in_model(t.state)]
+        so = side.successors(o)
         sm = [t.state for t in mutant.successors(m) if mutant.in_model(t.state)]
         diff = compare(grouped(so, ii, oi), grouped(sm, mi, mo), k)
         if diff is not None:
