@@ -177,7 +177,7 @@ def _run(args: argparse.Namespace) -> int:
     chosen = stratified(mutants, args.sample, args.seed) if args.sample else mutants
     if args.list:
         for m in chosen:
-            print(f"# {m.id}: {m.what}\n{m.toml(str(model.parent))}")
+            print(f"# {m.id}: {m.what}\n{m.toml(_folder(model))}")
         return 0
     subject = Subject(model, cfg, proj, engine=args.engine, timeout=args.timeout)
     subject.dropped = _original(subject, name)
@@ -213,6 +213,17 @@ def _run(args: argparse.Namespace) -> int:
               file=sys.stderr)
         return BELOW_MIN_SCORE
     return 0
+
+
+def _folder(model: Path) -> str:
+    """The model's folder as models/mutants/*.toml names it: relative to the repository
+    (the registry's parent), else to the current directory."""
+    from ..systems.registry import registry_dir
+    folder = model.resolve().parent
+    for base in (registry_dir().resolve().parent, Path.cwd().resolve()):
+        if folder.is_relative_to(base):
+            return str(folder.relative_to(base)) or "."
+    return str(folder)
 
 
 def _write_itf(folder: Path, name: str, outcomes: list[Outcome]) -> None:
