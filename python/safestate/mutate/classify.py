@@ -234,6 +234,7 @@ def _fork(subject: Subject, m: Mutant) -> tuple[Connection, int]:
     if pid == 0:  # the child: classify, send, exit without the parent's cleanup handlers
         code = 0
         try:
+            _die_with_parent()
             parent.close()
             try:
                 out = classify(subject, m)
@@ -247,6 +248,15 @@ def _fork(subject: Subject, m: Mutant) -> tuple[Connection, int]:
             os._exit(code)
     child.close()
     return parent, pid
+
+
+def _die_with_parent() -> None:
+    """Linux: the child gets SIGKILL when the parent ends (killed, interrupted), so no
+    worker outlives the run."""
+    import ctypes
+    import signal
+    with contextlib.suppress(OSError, AttributeError):
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, int(signal.SIGKILL))  # PR_SET_PDEATHSIG
 
 
 def _receive(conn: Connection, pid: int, m: Mutant, t0: float) -> Outcome:

@@ -61,7 +61,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--min-score", type=float, metavar="P", help="exit 3 when the score (0..1) is below P")
 
 
+def _terminate(signum: int, frame: Any) -> None:
+    raise KeyboardInterrupt  # the workers are ended in classify_all's cleanup
+
+
 def run(args: argparse.Namespace) -> int:
+    import signal
+    signal.signal(signal.SIGTERM, _terminate)
     try:
         return _run(args)
     except (InputError, SafestateError, TlaError) as e:
