@@ -113,7 +113,7 @@ def search(original: Model | OriginalSide, mutant: Model, proj: Projection, max_
 
     def grouped(sts: list[tuple], ix: tuple[int, ...], ox: tuple[int, ...]) -> dict[tuple, dict[tuple, list[tuple]]]:
         g: dict[tuple, dict[tuple, list[tuple]]] = {}
-        for st in sts:
+        for st in dict.fromkeys(sts):  # a successor generated twice is one successor
             g.setdefault(inp(st, ix), {}).setdefault(inp(st, ox), []).append(st)
         return g
 
