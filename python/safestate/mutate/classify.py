@@ -194,12 +194,17 @@ def difference_itf(proj: Projection, steps: list[DiffStep], mutant: Mutant) -> d
             "vars": names, "states": states}
 
 
-def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
-                 on_done: Callable[[Mutant, Outcome], None]) -> None:
-    """Classifies every mutant in forked children, at most `workers` at once."""
+def prepare(subject: Subject) -> None:
+    """Explores the original's successors once (before the workers fork)."""
     if subject.side is None:
         subject.side = OriginalSide(subject.load_original())
         subject.side.explore(time.monotonic() + subject.timeout)
+
+
+def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
+                 on_done: Callable[[Mutant, Outcome], None]) -> None:
+    """Classifies every mutant in forked children, at most `workers` at once."""
+    prepare(subject)
     todo = list(mutants)
     running: dict[Connection, tuple[Mutant, int, float]] = {}
     try:

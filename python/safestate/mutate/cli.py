@@ -25,7 +25,7 @@ from typing import Any
 from ..errors import SafestateError, closed_stdout_exit, one_line
 from ..tla.errors import TlaError
 from .cache import Cache
-from .classify import Outcome, Subject, classify_all, materialise
+from .classify import Outcome, Subject, classify_all, materialise, prepare
 from .generate import Mutant, generate
 from .operators import OPERATORS
 from .product import Projection
@@ -196,6 +196,10 @@ def _run(args: argparse.Namespace) -> int:
             outcomes[m.id] = hit
         else:
             todo.append(m)
+    if todo:
+        print(f"mutate: {name}: exploring the original's successors once for the product searches",
+              file=sys.stderr, flush=True)
+        prepare(subject)
     progress = _Progress(len(chosen), len(outcomes), len(todo))
 
     def done(m: Mutant, o: Outcome) -> None:
