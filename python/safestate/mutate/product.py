@@ -65,20 +65,21 @@ class Projection:
 class OriginalSide:
     """The original's initial states and successors (inside its constraints), computed
     once: in `classify_all` before the workers fork, so every mutant's search reads them
-    instead of evaluating the original's Next again.  States are looked up by the
-    model's fingerprint (the checker, like TLC, takes a VIEW's states as equal)."""
+    instead of evaluating the original's Next again.  Looked up by the exact state, not
+    its fingerprint: under a VIEW, two states with one fingerprint may differ in a
+    variable outside the VIEW that their successors keep (the flagship's
+    last_reject_reason), and the pair's successors must be those of its own state."""
 
     def __init__(self, model: Model) -> None:
         self.model = model
         self.init = [s for s in model.initial_states() if model.in_model(s)]
-        self.table: dict[Any, list[tuple]] = {}
+        self.table: dict[tuple, list[tuple]] = {}
 
     def successors(self, st: tuple) -> list[tuple]:
-        k = self.model.key(st)
-        out = self.table.get(k)
+        out = self.table.get(st)
         if out is None:
             out = [t.state for t in self.model.successors(st) if self.model.in_model(t.state)]
-            self.table[k] = out
+            self.table[st] = out
         return out
 
     def explore(self, deadline: float | None = None) -> None:
