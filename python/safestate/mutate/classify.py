@@ -114,7 +114,7 @@ def materialise(subject: Subject, mutant: Mutant | None, dest: Path) -> tuple[Pa
     return dest / subject.model.name, cfg
 
 
-def _check(model: Model, engine: str, max_memory_mb: int) -> Any:
+def check_model(model: Model, engine: str, max_memory_mb: int) -> Any:
     from ..checker.native.engine_choice import check
     # The engine's notes (Python fallback...) are not the mutant's result: kept off stderr.
     with contextlib.redirect_stderr(io.StringIO()):
@@ -129,7 +129,7 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
         try:
             tla, cfg = materialise(subject, mutant, Path(tmp))
             model = load_model(str(tla), str(cfg))
-            result = _check(model, subject.engine, subject.max_memory_mb)
+            result = check_model(model, subject.engine, subject.max_memory_mb)
         except TlaError as e:
             return Outcome(mutant.id, "error", reason=_where(e, tmp), seconds=time.monotonic() - start)
         if result.result in KILLING_RESULTS:

@@ -120,7 +120,7 @@ def _original(subject: Subject, name: str) -> tuple[str, ...]:
     import tempfile
 
     from ..checker.model import load_model
-    from .classify import _check
+    from .classify import check_model
     dropped: tuple[str, ...] = ()
     model = subject.load_original()
     unknown = [v for v in subject.projection.inputs + subject.projection.observables if v not in model.variables]
@@ -131,7 +131,7 @@ def _original(subject: Subject, name: str) -> tuple[str, ...]:
         with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
             subject.dropped = dropped
             tla, cfg = materialise(subject, None, Path(tmp))
-            r = _check(load_model(str(tla), str(cfg)), subject.engine, subject.max_memory_mb)
+            r = check_model(load_model(str(tla), str(cfg)), subject.engine, subject.max_memory_mb)
         if r.result == "success":
             return dropped
         if r.result == "safety failure" and r.violated:
