@@ -89,6 +89,15 @@ def test_text_report_prints_score_and_survivor_table(planted: Path, capsys: pyte
     assert "mutation score" in out and "SURVIVED" in out and "latch (orig | mutant)" in out
 
 
+def test_input_never_offered_shows_the_step_one_side_cannot_take(planted: Path,
+                                                                  capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["mutate", str(planted), "--inputs", "inp", "--observables", "out,latch",
+                 "--operator", "drop-input-value"])
+    out = capsys.readouterr().out
+    assert code == 0 and "input value 2 never offered" in out
+    assert "takes the step (orig | mutant)" in out and "yes | no" in out
+
+
 def test_second_run_is_served_from_the_cache(planted: Path, capsys: pytest.CaptureFixture[str]) -> None:
     _, first = _mutate(planted, capsys, "--operator", "boundary")
     _, second = _mutate(planted, capsys, "--operator", "boundary")

@@ -83,18 +83,24 @@ def _one_line(s: str, width: int = 150) -> str:
 
 def write_trace(out: TextIO, o: Outcome, indent: str = "") -> None:
     """The difference trace as a table: per step the inputs, then each observable that
-    differs anywhere in the trace, original / mutant (`-`: that side cannot take the step)."""
+    differs anywhere in the trace, original | mutant, and whether each side can take the
+    step at all (`no`: that input is not offered to it there)."""
     rows = o.table
     if not rows:
         return
     differing: list[str] = []
     for r in rows:
-        a, b = r["original"] or {}, r["mutant"] or {}
-        for k in list(a) + list(b):
-            if a.get(k) != b.get(k) and k not in differing:
+        if r["original"] is None or r["mutant"] is None:
+            continue  # shown in the `takes the step` column
+        a, b = r["original"], r["mutant"]
+        for k in a:
+            if a[k] != b[k] and k not in differing:
                 differing.append(k)
+    one_sided = any(r["original"] is None or r["mutant"] is None for r in rows)
     inputs = list(rows[0]["inputs"])
     header = ["step"] + inputs + [f"{k} (orig | mutant)" for k in differing]
+    if one_sided:
+        header.append("takes the step (orig | mutant)")
     table = [header]
     for i, r in enumerate(rows):
         cells = [str(i)] + [_clip(r["inputs"][k]) for k in inputs]
@@ -102,6 +108,9 @@ def write_trace(out: TextIO, o: Outcome, indent: str = "") -> None:
             a = r["original"][k] if r["original"] else "-"
             b = r["mutant"][k] if r["mutant"] else "-"
             cells.append(_clip(a) if a == b else f"{_clip(a)} | {_clip(b)}")
+        if one_sided:
+            a, b = ("yes" if r[side] is not None else "no" for side in ("original", "mutant"))
+            cells.append(a if a == b else f"{a} | {b}")
         table.append(cells)
     widths = [max(len(row[j]) for row in table) for j in range(len(header))]
     for row in table:
