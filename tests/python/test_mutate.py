@@ -170,3 +170,19 @@ def test_every_operator_is_documented_in_docs_mutate() -> None:
     for name, op in OPERATORS.items():
         assert f"| `{name}` |" in doc, name
         assert op.doc, name
+
+
+def test_every_registered_system_declares_inputs_and_observables_of_its_model() -> None:
+    """Issue 28: observables and inputs are declared once per system (system.toml
+    [mutate]); a renamed model variable must fail here, not in a mutation run."""
+    from safestate.checker.model import load_model
+    from safestate.systems.registry import load_all
+    systems = load_all()
+    assert systems
+    for s in systems:
+        decl = s.extra.get("mutate")
+        assert decl and decl.get("inputs") and decl.get("observables"), s.name
+        variables = load_model(str(s.model), str(s.ci_config)).variables
+        for name in decl["inputs"] + decl["observables"]:
+            assert name in variables, (s.name, name)
+        assert not set(decl["inputs"]) & set(decl["observables"]), s.name

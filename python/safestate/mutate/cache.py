@@ -2,7 +2,7 @@
 
 The key hashes the mutated model's files (every .tla and .cfg of its folder, the mutant
 applied), the cfg as used (invariants the original violates left out), the inputs and
-observables, the budgets, and the sources of the checker and of this package (their
+observables, the budgets, and the sources of the checker and of the classifier (their
 "version": any change to the checker gives new keys).  Timeouts and errors of the worker
 itself are not cached, so a later run with a larger budget retries them.
 
@@ -24,7 +24,9 @@ from .generate import Mutant
 
 CACHE_ENV = "SAFESTATE_CACHE_DIR"
 _PACKAGE = Path(__file__).resolve().parent.parent
-_SOURCES = ("checker", "tla", "mutate")
+# What decides an outcome: the checker, the front end, the classifier and the product
+# search (the mutant's own text is in the key; the report and the CLI are not).
+_SOURCES = ("checker", "tla", "mutate/classify.py", "mutate/product.py")
 
 
 def cache_dir() -> Path:
@@ -37,10 +39,11 @@ def cache_dir() -> Path:
 
 @lru_cache(maxsize=1)
 def checker_version() -> str:
-    """safestate's version and a hash of the checker's and this package's sources."""
+    """safestate's version and a hash of the sources that decide an outcome."""
     h = hashlib.sha256(__version__.encode())
     for sub in _SOURCES:
-        for f in sorted((_PACKAGE / sub).rglob("*.py")):
+        path = _PACKAGE / sub
+        for f in sorted(path.rglob("*.py")) if path.is_dir() else [path]:
             h.update(str(f.relative_to(_PACKAGE)).encode() + b"\0" + f.read_bytes() + b"\0")
     try:
         from .. import _tla_native  # type: ignore[attr-defined]
