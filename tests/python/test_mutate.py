@@ -186,3 +186,35 @@ def test_every_registered_system_declares_inputs_and_observables_of_its_model() 
         for name in decl["inputs"] + decl["observables"]:
             assert name in variables, (s.name, name)
         assert not set(decl["inputs"]) & set(decl["observables"]), s.name
+
+
+VIEWED = r"""---- MODULE Viewed ----
+EXTENDS Naturals
+VARIABLES inp, h, note
+View == <<inp, h>>
+Init == inp = 0 /\ h = 0 /\ note = "a"
+Next == \E i \in {0, 1} :
+    /\ inp' = i
+    /\ h' = IF i = 1 THEN 0 ELSE h
+    /\ note' = IF i = 1 THEN "b" ELSE note
+TypeOK == inp \in 0..1 /\ h \in 0..1 /\ note \in {"a", "b"}
+====
+"""
+
+
+def test_view_hidden_sticky_variable_gives_no_false_survivor(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    """`note` is outside the VIEW and kept from state to state: the original's state
+    (0, 0, "b") shares its fingerprint with the initial (0, 0, "a").  The mutant
+    `THEN 1` changes only the unobserved h (to 1 after the first input 1), so it is
+    equivalent; taking the successors of the pair (0, 0, "b") / (0, 1, "b") from the
+    initial state, which has the same fingerprint, would show a false difference in note."""
+    (tmp_path / "Viewed.tla").write_text(VIEWED)
+    (tmp_path / "Viewed.cfg").write_text("INIT Init\nNEXT Next\nVIEW View\nINVARIANT TypeOK\n")
+    monkeypatch.setenv("SAFESTATE_CACHE_DIR", str(tmp_path / "cache"))
+    code = main(["mutate", str(tmp_path / "Viewed.tla"), "--inputs", "inp", "--observables", "note",
+                 "--operator", "literal", "--json"])
+    report = json.loads(capsys.readouterr().out)
+    assert code == 0
+    m = _find(report, "literal", "THEN 1 ELSE h")
+    assert m["status"] == "equivalent", m
