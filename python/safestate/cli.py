@@ -21,6 +21,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "check": ("safestate.checker.cli", "model-check a TLA+ specification (TLC-equivalent)"),
     "prove": ("safestate.prove.cli", "prove invariants with z3 (BMC, k-induction, PDR)"),
     "conform": ("safestate.conform.cli", "check the C++ implementation against the model"),
+    "mutate": ("safestate.mutate.cli", "mutation score: do the model's properties pin down its behaviour?"),
     "evidence": ("safestate.evidence.cli", "build (or --verify) the certification evidence package"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
     "panel": ("safestate.panel.cli", "the operator panel: cell simulator + C++ core + web bridge, prints the URL"),
@@ -34,6 +35,7 @@ safestate: formally verified safety state machines.  The pipeline, per system
   safestate check   SYSTEM|MODEL.tla      model checking, TLC's verdicts and counts
   safestate prove   SYSTEM|MODEL.tla      unbounded proofs of every invariant (z3)
   safestate conform SYSTEM|MODEL.tla      the C++ against the model (replay, Hypothesis)
+  safestate mutate  SYSTEM|MODEL.tla      mutation score of the model's properties
   safestate evidence [--out DIR]          the evidence package: matrix, diagrams, manifest
 """
 
@@ -44,7 +46,8 @@ exit codes (every subcommand):
         evidence: a step failed (the package is still written) / --verify found a difference
   2     usage or input error (bad argument, missing or malformed file, unknown system
         or binding module, unwritable output path): one line on stderr, no traceback
-  3     check --tlc: TLC could not be run (TLA2TOOLS_JAR not a TLC jar, java failed)
+  3     check --tlc: TLC could not be run (TLA2TOOLS_JAR not a TLC jar, java failed);
+        mutate: the mutation score is below --min-score
   12    an invariant is violated (check: TLC's code; prove: a counterexample)
   10/11/13/14  check: assumption / deadlock / liveness / Assert failure (TLC's codes)
   13    prove: an invariant is ill-defined (a reachable evaluation TLA+ leaves undefined,

@@ -1,0 +1,282 @@
+"""Classification of a mutant with the model's CI cfg, and the pool that classifies many.
+
+* killed: `safestate check` (the native core where it accepts the model, else the Python
+  engine) reports a violated invariant or property, a deadlock or an Assert failure --
+  named, with the trace length;
+* survived: every property holds, and the product search (`product.py`) finds an input
+  trace after which the mutant's observables differ from the original's;
+* equivalent: every property holds and the product is exhausted without a difference;
+* timeout: the check or the product search ran out of its budget;
+* error: the mutant does not load, or its evaluation fails (`check` exit 75/150...).
+
+Only killed and survived count in the score.  Each mutant is classified in a forked
+child process (the original model is loaded once, before the fork), at most `workers` at
+a time; a child past its time budget is ended by its process id and the mutant listed as
+a timeout.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import os
+import re
+import shutil
+import tempfile
+import time
+import traceback
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from multiprocessing.connection import Connection, wait
+from pathlib import Path
+from typing import Any
+
+from ..checker.itf import value_to_itf
+from ..checker.model import Model, load_model
+from ..tla.errors import TlaError
+from ..tla.values import fmt
+from .generate import Mutant
+from .product import DiffStep, OriginalSide, Projection, search
+
+KILLING_RESULTS = {"safety failure", "deadlock failure", "liveness failure", "temporal safety failure",
+                   "action property failure", "init property failure", "assert failure"}
+STATUSES = ("killed", "survived", "equivalent", "timeout", "error")
+
+
+@dataclass
+class Outcome:
+    mutant: str                  # Mutant.id
+    status: str                  # one of STATUSES
+    violated: str | None = None  # killed: the property (or "deadlock")
+    trace_length: int | None = None
+    reason: str = ""             # timeout / error: why; survived/equivalent: search figures
+    seconds: float = 0.0
+    pairs: int = 0
+    nondeterministic: bool = False
+    table: list[dict[str, Any]] = field(default_factory=list)   # the difference trace, printed values
+    itf: dict[str, Any] | None = None                           # the same as ITF JSON
+    cached: bool = False
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @staticmethod
+    def from_json(d: dict[str, Any]) -> "Outcome":
+        return Outcome(**{k: v for k, v in d.items() if k in Outcome.__dataclass_fields__})
+
+
+@dataclass
+class Subject:
+    """What every mutant of one model is checked against."""
+
+    model: Path                  # the original .tla
+    cfg: Path                    # the CI cfg
+    projection: Projection
+    dropped: tuple[str, ...] = ()  # invariants the original itself violates (not used)
+    engine: str = "auto"
+    timeout: float = 300.0
+    max_pairs: int = 2_000_000
+    max_memory_mb: int = 3000
+    original: Model | None = None  # loaded once, before the workers fork
+    side: OriginalSide | None = None  # its successors, explored once before the fork
+
+    def load_original(self) -> Model:
+        if self.original is None:
+            self.original = load_model(str(self.model), str(self.cfg))
+        return self.original
+
+
+def without_invariants(cfg_text: str, names: tuple[str, ...]) -> str:
+    """The cfg with the named invariants left out of its INVARIANT(S) sections."""
+    if not names:
+        return cfg_text
+    out = []
+    for line in cfg_text.splitlines():
+        words = line.split()
+        keep = [w for w in words if w not in names]
+        if words and not keep:
+            continue
+        out.append(line if keep == words else re.sub(r"\b(" + "|".join(map(re.escape, names)) + r")\b", "", line))
+    return "\n".join(out) + "\n"
+
+
+def materialise(subject: Subject, mutant: Mutant | None, dest: Path) -> tuple[Path, Path]:
+    """The model's folder copied into `dest` with the mutant applied; (model, cfg) there."""
+    for f in subject.model.parent.iterdir():
+        if f.is_file() and f.suffix in (".tla", ".cfg"):
+            shutil.copyfile(f, dest / f.name)
+    if mutant is not None:
+        target = dest / mutant.file
+        target.write_bytes(mutant.apply(target.read_bytes()))
+    cfg = dest / ("__mutate__" + subject.cfg.name)
+    cfg.write_text(without_invariants(subject.cfg.read_text(encoding="utf-8"), subject.dropped), encoding="utf-8")
+    return dest / subject.model.name, cfg
+
+
+def check_model(model: Model, engine: str, max_memory_mb: int) -> Any:
+    from ..checker.native.engine_choice import check
+    # The engine's notes (Python fallback...) are not the mutant's result: kept off stderr.
+    with contextlib.redirect_stderr(io.StringIO()):
+        return check(model, engine, workers=1, max_memory_mb=max_memory_mb)
+
+
+def classify(subject: Subject, mutant: Mutant) -> Outcome:
+    """The mutant's outcome (in this process)."""
+    start = time.monotonic()
+    original = subject.load_original()
+    with tempfile.TemporaryDirectory(prefix="safestate-mutant-") as tmp:
+        try:
+            tla, cfg = materialise(subject, mutant, Path(tmp))
+            model = load_model(str(tla), str(cfg))
+            result = check_model(model, subject.engine, subject.max_memory_mb)
+        except TlaError as e:
+            return Outcome(mutant.id, "error", reason=_where(e, tmp), seconds=time.monotonic() - start)
+        if result.result in KILLING_RESULTS:
+            what = "deadlock" if result.result == "deadlock failure" else (result.violated or result.result)
+            return Outcome(mutant.id, "killed", violated=what, trace_length=len(result.trace or []),
+                           seconds=time.monotonic() - start)
+        if result.result != "success":
+            why = result.error.message if result.error else result.result
+            kind = result.error.kind if result.error else ""
+            if kind == "assert":
+                return Outcome(mutant.id, "killed", violated=f"Assert: {why[:120]}",
+                               trace_length=len(result.trace or []), seconds=time.monotonic() - start)
+            if kind == "memory" or "memory" in why.lower():
+                return Outcome(mutant.id, "timeout", reason=f"check: {why}", seconds=time.monotonic() - start)
+            return Outcome(mutant.id, "error", reason=f"check: {_where(result.error, tmp) if result.error else why}",
+                           seconds=time.monotonic() - start)
+        deadline = start + subject.timeout
+        try:
+            pr = search(subject.side or original, model, subject.projection, subject.max_pairs, deadline)
+        except TlaError as e:
+            return Outcome(mutant.id, "error", reason=f"product search: {_where(e, tmp)}",
+                           seconds=time.monotonic() - start)
+    out = Outcome(mutant.id, {"difference": "survived"}.get(pr.verdict, pr.verdict), pairs=pr.pairs,
+                  nondeterministic=pr.nondeterministic, reason=pr.reason, seconds=time.monotonic() - start)
+    if pr.verdict == "difference":
+        out.table = [_row(s) for s in pr.steps]
+        out.itf = difference_itf(subject.projection, pr.steps, mutant)
+        out.reason = f"observables differ after {len(pr.steps) - 1} step(s)"
+    return out
+
+
+def _where(e: TlaError, tmp: str) -> str:
+    loc = f"{Path(e.loc.file).name}:{e.loc.line}:{e.loc.column}: " if e.loc else ""
+    return (loc + e.message.replace(tmp + os.sep, "")).splitlines()[0][:300]
+
+
+def _row(s: DiffStep) -> dict[str, Any]:
+    def side(d: dict | None) -> dict[str, str] | None:
+        return None if d is None else {k: fmt(v) for k, v in d.items()}
+    return {"inputs": {k: fmt(v) for k, v in s.inputs.items()}, "original": side(s.original),
+            "mutant": side(s.mutant)}
+
+
+def difference_itf(proj: Projection, steps: list[DiffStep], mutant: Mutant) -> dict[str, Any]:
+    """The difference trace as ITF: the inputs, and each observable of the original
+    (`original.x`) and the mutant (`mutant.x`); a side that cannot take the last step
+    has `#unserializable: "no step"` there."""
+    names = list(proj.inputs) + [f"original.{o}" for o in proj.observables] + [f"mutant.{o}" for o in proj.observables]
+    none = {"#unserializable": "no step"}
+    states = []
+    for i, s in enumerate(steps):
+        st: dict[str, Any] = {"#meta": {"index": i}}
+        for k, v in s.inputs.items():
+            st[k] = value_to_itf(v)
+        for side, d in (("original", s.original), ("mutant", s.mutant)):
+            for o in proj.observables:
+                st[f"{side}.{o}"] = none if d is None else value_to_itf(d[o])
+        states.append(st)
+    return {"#meta": {"format": "ITF", "format-description": "https://apalache-mc.org/docs/adr/015adr-trace.html",
+                      "source": mutant.file, "description": f"difference trace of mutant {mutant.id}: "
+                      f"the same inputs, observables differ in the last state"},
+            "vars": names, "states": states}
+
+
+def prepare(subject: Subject) -> None:
+    """Explores the original's successors once (before the workers fork)."""
+    if subject.side is None:
+        subject.side = OriginalSide(subject.load_original())
+        subject.side.explore(time.monotonic() + subject.timeout)
+
+
+def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
+                 on_done: Callable[[Mutant, Outcome], None]) -> None:
+    """Classifies every mutant in forked children, at most `workers` at once."""
+    prepare(subject)
+    todo = list(mutants)
+    running: dict[Connection, tuple[Mutant, int, float]] = {}
+    try:
+        while todo or running:
+            while todo and len(running) < max(1, workers):
+                m = todo.pop(0)
+                conn, pid = _fork(subject, m)
+                running[conn] = (m, pid, time.monotonic())
+            ready = wait(list(running), timeout=1.0)
+            for r in ready:
+                assert isinstance(r, Connection)
+                m, pid, t0 = running.pop(r)
+                on_done(m, _receive(r, pid, m, t0))
+            now = time.monotonic()
+            for conn, (m, pid, t0) in list(running.items()):
+                if now - t0 > subject.timeout + 30:  # the product search stops itself at the budget
+                    _end(pid)
+                    conn.close()
+                    del running[conn]
+                    on_done(m, Outcome(m.id, "timeout", reason=f"check exceeded {subject.timeout:.0f} s",
+                                       seconds=now - t0))
+    finally:
+        for conn, (_m, pid, _t) in running.items():
+            _end(pid)
+            conn.close()
+
+
+def _fork(subject: Subject, m: Mutant) -> tuple[Connection, int]:
+    from multiprocessing import Pipe
+    parent, child = Pipe(duplex=False)
+    pid = os.fork()
+    if pid == 0:  # the child: classify, send, exit without the parent's cleanup handlers
+        code = 0
+        try:
+            _die_with_parent()
+            parent.close()
+            try:
+                out = classify(subject, m)
+            except Exception as e:  # noqa: BLE001 - reported as the mutant's error, never a traceback
+                out = Outcome(m.id, "error", reason=f"internal error: {type(e).__name__}: {e}; "
+                              + traceback.format_exc(limit=2).splitlines()[-1])
+            child.send_bytes(json.dumps(out.to_json()).encode())
+        except BaseException:  # noqa: BLE001
+            code = 1
+        finally:
+            os._exit(code)
+    child.close()
+    return parent, pid
+
+
+def _die_with_parent() -> None:
+    """Linux: the child gets SIGKILL when the parent ends (killed, interrupted), so no
+    worker outlives the run."""
+    import ctypes
+    import signal
+    with contextlib.suppress(OSError, AttributeError):
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, int(signal.SIGKILL))  # PR_SET_PDEATHSIG
+
+
+def _receive(conn: Connection, pid: int, m: Mutant, t0: float) -> Outcome:
+    try:
+        out = Outcome.from_json(json.loads(conn.recv_bytes()))
+    except (EOFError, OSError, ValueError):
+        out = Outcome(m.id, "error", reason="the worker process ended without a result (out of memory?)",
+                      seconds=time.monotonic() - t0)
+    conn.close()
+    os.waitpid(pid, 0)
+    return out
+
+
+def _end(pid: int) -> None:
+    import signal
+    with contextlib.suppress(ProcessLookupError, ChildProcessError):
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
