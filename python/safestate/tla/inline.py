@@ -57,12 +57,28 @@ def can_inline(compiler: Any, sym: DefSym) -> bool:
 
 
 def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
-    """The body of `sym` compiled in the caller's frame (see the module docstring)."""
+    """The body of `sym` compiled in the caller's frame (see the module docstring); with
+    an argument that must be passed unevaluated, a speculative call
+    (`compile/lazy_args.py`)."""
     from .compiler import _prefix
-    from .compile.lazy_args import lazy_binding, passed_by_value
+    from .compile.lazy_args import passed_by_value, speculable, speculative
+    eager = passed_by_value(compiler, sym.defn.params, args, sym.defn.body, sym.scope, env)
+    if all(eager) or not speculable(compiler, args):
+        return _prefix(*_inline(compiler, sym, args, env, eager))
+    pre, by_value = _inline(compiler, sym, args, env, [True] * len(args))
+    compiler._lazy_mode += 1
+    try:
+        lazy = _prefix(*_inline(compiler, sym, args, env, eager))
+    finally:
+        compiler._lazy_mode -= 1
+    return speculative(pre, by_value, lazy)
+
+
+def _inline(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, eager: list[bool]
+            ) -> tuple[list[tuple[int, Code]], Code]:
+    from .compile.lazy_args import lazy_binding
     bindings: dict[str, Any] = {}
     pre: list[tuple[int, Code]] = []
-    eager = passed_by_value(compiler, sym.defn.params, args, sym.defn.body, sym.scope, env)
     for p, a, by_value in zip(sym.defn.params, args, eager):
         if isinstance(a, A.Name):
             local = env.locals.get(a.name)
@@ -86,4 +102,4 @@ def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: L
         body = compiler.expr(sym.defn.body, Env(sym.scope, env.frame, bindings, env.init_mode, env.primed))
     finally:
         compiler._inline_depth -= 1
-    return _prefix(pre, body)
+    return pre, body

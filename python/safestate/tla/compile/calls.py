@@ -15,7 +15,8 @@ from ..modules import BuiltinSym, DefSym
 from ..inline import can_inline, inline_call
 from ..tlcget import RUNTIME
 from .closures import Value, EMPTY, _prefix, _guard, _apply_fn, _operator_value
-from .lazy_args import cannot_fail, first_evaluated, lazy_binding, passed_by_value, thunk_code
+from .lazy_args import (cannot_fail, first_evaluated, lazy_binding, passed_by_value, speculable,
+                        speculative_call, thunk_code)
 from .operators import _CORE_BINARY
 from .syntax import all_names
 
@@ -135,9 +136,11 @@ class CallsMixin:
         if d.fn_bounds is not None:
             return self._fn_def_ref(sym)
         eager = passed_by_value(self, d.params, args, d.body, sym.scope, env)
-        # The memo's key is every argument's value: only where evaluating them all
-        # first cannot be told from TLC's lazy arguments.
-        if self.fast_paths and self.memoise_operators and all(eager) and self.op_memo.applies(sym, args):
+        # The memo's key is every argument's value, evaluated first: only where that
+        # cannot be told from TLC's lazy arguments (an argument that fails: the memo
+        # makes the ordinary call, which evaluates what TLC evaluates).
+        if self.fast_paths and self.memoise_operators and (all(eager) or speculable(self, args)) \
+                and self.op_memo.applies(sym, args):
             self.op_memo.skip.add(id(sym))
             try:
                 plain = self._call_def(sym, args, env, loc)
@@ -157,6 +160,12 @@ class CallsMixin:
             if size == 0:
                 return lambda s, t, L: body(s, t, EMPTY)
             return lambda s, t, L: body(s, t, [None] * size)
+        if not all(eager) and speculable(self, args):
+            by_value = self._compiled_def(sym)
+            values = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
+            thunks = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, False)
+                      for a, p, ok in zip(args, d.params, eager)]
+            return speculative_call(values, by_value, thunks, compiled)
         arg_codes = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, False)
                      for a, p, ok in zip(args, d.params, eager)]
         holder = compiled
@@ -215,7 +224,12 @@ class CallsMixin:
         for p in sym.defn.params:
             slot = frame.alloc()
             bindings[p.name] = OpLocal(slot, p.arity) if p.arity else ThunkLocal(slot) if lazy else SlotLocal(slot)
-        holder.body = self.expr(sym.defn.body, Env(sym.scope, frame, bindings))
+        # The version for lazy arguments makes lazy calls; the other speculative ones.
+        mode, self._lazy_mode = self._lazy_mode, int(lazy)
+        try:
+            holder.body = self.expr(sym.defn.body, Env(sym.scope, frame, bindings))
+        finally:
+            self._lazy_mode = mode
         holder.size = frame.size
         holder.holder_only = False
         return holder

@@ -89,14 +89,14 @@ class ExpansionMixin:
                     pre.append(reset)
         return bindings, pre
 
-    def _bind_args_by_value(self, args: list[A.Expr], env: Env) -> tuple[dict, list]:
+    def _bind_args_by_value(self, args: list[A.Expr], env: Env, lazy: bool = True) -> tuple[dict, list]:
         """Arguments of an operator given as an expression (a substituted operator
-        constant), bound to names the callee's arguments refer to: unevaluated unless
-        they cannot fail."""
+        constant, an instance's operator), bound to names the callee's arguments refer
+        to: unevaluated unless they cannot fail (or `lazy` is False)."""
         bindings: dict[str, Any] = {}
         pre: list[tuple[int, Code]] = []
         for i, a in enumerate(args):
-            if cannot_fail(self, a, env):
+            if not lazy or cannot_fail(self, a, env):
                 slot = env.frame.alloc()
                 pre.append((slot, self.expr(a, env)))
                 bindings[f"$arg{i}"] = SlotLocal(slot, self.state_source(a, env))

@@ -22,6 +22,15 @@ for the recursive call ``Sum(k - 1)``).  Every other argument is passed lazily:
   callee runs -- except a LET operator's, which shares its frame with its caller: its
   thunks keep a copy.  A parameter passed on as an argument is passed as it is, value
   or thunk, as TLC passes its lazy value on.
+
+Lazy parameters cost every read a check and take the fast paths of `specialise.py`
+away from the body, so where the body is a value (not an action) the call is
+speculative (`speculative`): it evaluates every argument first, as before, and runs
+the body compiled for values; only if an argument fails does it run the body compiled
+for lazy arguments, which evaluates what TLC evaluates.  An argument's evaluation has
+no effect but its value or its error (arguments that print or set TLC registers are
+never speculated), so the two cannot be told apart.  The lazy body is compiled with
+`Compiler._lazy_mode` set: calls inside it are lazy, not speculative again.
 """
 
 from __future__ import annotations
@@ -29,9 +38,10 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast as A
-from ..constfold import NO_VALUE, const_value
+from ..constfold import IMPURE_BUILTINS, NO_VALUE, const_value
 from ..env import NOTSET, Code, Env, LazyArgLocal, LazyLocal, SlotLocal, ThunkLocal
 from ..modules import ConstSym, DefSym, VarSym
+from .syntax import all_names
 
 
 class Thunk:
@@ -206,3 +216,42 @@ def thunk_code(c: Any, a: A.Expr, env: Env, copy_frame: bool) -> Code:
     if copy_frame:
         return lambda s, t, L: Thunk(code, s, t, L.copy())
     return lambda s, t, L: Thunk(code, s, t, L)
+
+
+def speculable(c: Any, args: list[A.Expr]) -> bool:
+    """May these arguments be evaluated and, on an error, evaluated again lazily?"""
+    if c._lazy_mode:
+        return False
+    for a in args:
+        names = c.folder.free_names(a)
+        if (names if names is not None else all_names(a)) & IMPURE_BUILTINS:
+            return False
+    return True
+
+
+def speculative(eager_pre: list[tuple[int, Code]], by_value: Code, lazy: Code) -> Code:
+    """Evaluate the arguments into their slots and run `by_value`; if an argument
+    fails, run `lazy` (the body with unevaluated arguments) instead."""
+    def spec(s: Any, t: Any, L: list) -> Any:
+        try:
+            for sl, a in eager_pre:
+                L[sl] = a(s, t, L)
+        except Exception:  # noqa: BLE001 - the lazy body raises it if TLC would
+            return lazy(s, t, L)
+        return by_value(s, t, L)
+    return spec
+
+
+def speculative_call(values: list[Code], by_value: Any, thunks: list[Code], lazy: Any) -> Code:
+    """The same for a body run with a frame of its own: `by_value` and `lazy` are the
+    two compiled versions (`CompiledDef`: body and frame size, read at the call, as a
+    recursive body's size is known only once it is compiled)."""
+    n = len(values)
+
+    def spec(s: Any, t: Any, L: list) -> Any:
+        try:
+            frame = [a(s, t, L) for a in values]
+        except Exception:  # noqa: BLE001 - the lazy body raises it if TLC would
+            return lazy.body(s, t, [a(s, t, L) for a in thunks] + [None] * (lazy.size - n))
+        return by_value.body(s, t, frame + [None] * (by_value.size - n))
+    return spec
