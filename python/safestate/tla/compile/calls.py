@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from .. import ast as A
-from ..env import NOTSET, UNSET, Code, Env, Frame, LetOpLocal, OpLocal, SlotLocal, ThunkLocal
+from ..env import NOTSET, UNSET, Code, Env, Frame, LetOpLocal, Local, OpLocal, SlotLocal, ThunkLocal
 from ..errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from ..modules import BuiltinSym, DefSym
 from ..inline import can_inline, inline_call
@@ -53,6 +53,9 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 
 class CallsMixin:
     """Calls of user, LET, LAMBDA and built-in operators."""
+
+    _lazy_defs: dict[int, tuple[Any, Any]]  # set by Compiler.__init__, as _lazy_mode
+    _lazy_mode: int
 
     def _arity(self, name: str, arity: int, args: list[A.Expr], loc: Loc) -> None:
         if len(args) != arity:
@@ -282,7 +285,7 @@ class CallsMixin:
         self._arity(name, len(d.params), args, loc)
         if not local.holder:
             local.holder.extend([None, []])
-            bindings = {}
+            bindings: dict[str, Local] = {}
             for p, sl in zip(d.params, local.param_slots):
                 bindings[p.name] = OpLocal(sl, p.arity) if p.arity else ThunkLocal(sl)
             self._no_inline += 1

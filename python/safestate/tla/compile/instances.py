@@ -17,6 +17,8 @@ from .lazy_args import cannot_fail, speculable, speculative
 class InstancesMixin:
     """References through ``I!`` prefixes."""
 
+    _lazy_mode: int  # set by Compiler.__init__ (compile/lazy_args.py)
+
     def _instance_scope(self, e: A.Prefixed, env: Env) -> Scope:
         scope = env.scope
         for step in e.path:
