@@ -53,3 +53,18 @@ def test_an_argument_the_body_reaches_fails_at_its_own_position(engine: str, tmp
     assert got["result"] == "error"
     assert "nonexistent field 'dest'" in got["error"]["message"]
     assert (got["error"]["line"], got["error"]["column"]) == (8, 32)  # m.dest
+
+
+@pytest.mark.parametrize("engine", ["python", "native"])
+def test_an_instance_operator_gets_its_arguments_unevaluated(engine: str, tmp_path: Path) -> None:
+    (tmp_path / "G.tla").write_text('---- MODULE G ----\nEXTENDS Naturals\n'
+                                    'Targeted(d, m) == m.method = "join" => d \\in 1..2\n====\n')
+    (tmp_path / "InstLazy.tla").write_text(
+        '---- MODULE InstLazy ----\nVARIABLE x\nI == INSTANCE G\n'
+        'Msgs == {[method |-> "join", dest |-> 1], [method |-> "leave"]}\n'
+        'Init == x = 0\nNext == x\' = x\nInv == \\A m \\in Msgs : I!Targeted(m.dest, m)\n====\n')
+    (tmp_path / "InstLazy.cfg").write_text("INIT Init\nNEXT Next\nINVARIANT Inv\n")
+    p = run_safestate("check", str(tmp_path / "InstLazy.tla"), "--engine", engine, "--json")
+    got = json.loads(p.stdout)
+    assert (got["result"], got["distinct_states"], got["states_generated"], got["depth"]) == ("success", 1, 2, 1)
+    assert p.returncode == 0
