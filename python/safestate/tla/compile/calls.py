@@ -304,9 +304,19 @@ class CallsMixin:
         eager = passed_by_value(self, d.params, args, d.body, local.env.scope, env)
         arg_codes = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, True)
                      for a, p, ok in zip(args, d.params, eager)]
+        speculate = not all(eager) and speculable(self, args)
+        # Speculative (lazy_args.py): the values, or if one fails the thunks; the body
+        # reads its parameters through thunk_read either way.
+        values = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)] if speculate else arg_codes
 
         def call(s: Any, t: Any, L: list) -> Value:
-            vals = [a(s, t, L) for a in arg_codes]
+            if speculate:
+                try:
+                    vals = [a(s, t, L) for a in values]
+                except Exception:  # noqa: BLE001 - the body raises it if TLC would
+                    vals = [a(s, t, L) for a in arg_codes]
+            else:
+                vals = [a(s, t, L) for a in arg_codes]
             slots = param_slots + holder[1] if holder[1] else param_slots
             saved = [L[sl] for sl in slots]
             for sl, v in zip(slots, vals):
