@@ -154,6 +154,10 @@ def _first_uncached(e: Any, scope: Any, depth: int) -> str | None:
             e = e.fn
         elif isinstance(e, A.Except):
             e = e.base
+        elif isinstance(e, A.Binary) and e.op == "=" and isinstance(e.lhs, A.Prime) \
+                and isinstance(e.lhs.arg, A.Name) and scope is not None \
+                and isinstance(scope.lookup(e.lhs.arg.name), VarSym):
+            e = e.rhs  # x' = e: an assignment evaluates e (reading an assigned x' cannot fail)
         elif isinstance(e, A.Binary):
             e = e.lhs
         elif isinstance(e, A.Unary) and e.op in ("~", "-", "-.", "DOMAIN", "SUBSET", "UNION"):
