@@ -236,6 +236,17 @@ def speculable(c: Any, args: list[A.Expr]) -> bool:
 def speculative(eager_pre: list[tuple[int, Code]], by_value: Code, lazy: Code) -> Code:
     """Evaluate the arguments into their slots and run `by_value`; if an argument
     fails, run `lazy` (the body with unevaluated arguments) instead."""
+    if len(eager_pre) == 1:
+        (sl, a), = eager_pre
+
+        def spec1(s: Any, t: Any, L: list) -> Any:
+            try:
+                L[sl] = a(s, t, L)
+            except Exception:  # noqa: BLE001 - the lazy body raises it if TLC would
+                return lazy(s, t, L)
+            return by_value(s, t, L)
+        return spec1
+
     def spec(s: Any, t: Any, L: list) -> Any:
         try:
             for sl, a in eager_pre:
