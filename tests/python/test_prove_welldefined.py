@@ -143,3 +143,13 @@ def test_strengthening_that_excludes_init_fails_the_proof(capsys: pytest.Capture
     r = by_invariant(report)["NonNegative"]
     assert r["status"] == "unknown" and "strengthening Wrong" in r["note"] and "not an invariant" in r["note"]
     assert code == 1
+
+
+def test_an_argument_the_body_does_not_reach_is_not_obliged(capsys: pytest.CaptureFixture[str]) -> None:
+    # Issue 27, item 0: Get(f[x], x) / Step(f[x], x) read f[x] only where x \in DOMAIN f
+    # (TLC passes arguments unevaluated); x = 2 is reachable and outside the domain.
+    code, report, err = prove(capsys, spec("WdLazyArgument.tla"))
+    assert report is not None, err
+    results = by_invariant(report)
+    assert {n: results[n]["status"] for n in ("TypeOK", "Lazy")} == {"TypeOK": "proved", "Lazy": "proved"}
+    assert code == 0

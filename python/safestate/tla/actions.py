@@ -94,6 +94,8 @@ class ActionCompiler:
                 def body(b: A.Expr, benv: Env) -> Code:
                     for p in sym.defn.params:
                         loc_ = benv.locals.get(p.name)
+                        # An argument passed unevaluated (LazyArgLocal) may never get a
+                        # value: it is not one of the action's parameters.
                         if isinstance(loc_, SlotLocal):
                             new_params.append((p.name, loc_.slot))
                     return self.split(b, benv, sym.defn.name, sym.defn.loc, params + new_params, make_k)

@@ -77,6 +77,8 @@ class Compiler(AnalysisMixin, NamesMixin, CallsMixin, ExpansionMixin, InstancesM
         self.op_memo = OpMemo(self)
         # (id of a LET's INSTANCE, id of the enclosing scope) -> the LET body's scope
         self._let_scopes: dict[tuple[int, int], Scope] = {}
+        self._lazy_defs: dict[int, tuple[Any, Any]] = {}  # compile/calls.py: _compiled_def(lazy=True)
+        self._lazy_mode = 0  # compiling a body for lazy arguments (compile/lazy_args.py)
 
     # ================================================================ entry points
     def compile_unit(self, e: A.Expr, scope: Scope) -> tuple[Code, int]:

@@ -73,6 +73,29 @@ class LazyLocal:
 
 
 @dataclass(eq=False)
+class LazyArgLocal(LazyLocal):
+    """An operator argument passed unevaluated, as TLC passes it (a `LazyValue`): the
+    body is expanded in the caller's frame, the call resets ``L[slot]`` to NOTSET and
+    the body's first use evaluates the argument there (`compile/lazy_args.py`).
+    `arg_source` is the argument and its environment when it reads state."""
+
+    arg_source: "tuple[A.Expr, Env] | None" = None
+
+    @property
+    def source(self) -> "tuple[A.Expr, Env] | None":
+        return self.arg_source
+
+
+@dataclass(eq=False)
+class ThunkLocal:
+    """A parameter of a body compiled once and called with a frame of its own: ``L[slot]``
+    holds the argument's value or a `Thunk` that computes it in the caller's context,
+    replaced by its value at the first use (`compile/lazy_args.py`)."""
+
+    slot: int
+
+
+@dataclass(eq=False)
 class ByNameLocal:
     """An argument substituted by name (action-level arguments, instance parameters)."""
 
@@ -98,7 +121,7 @@ class LetOpLocal:
     holder: list  # [compiled body] once compiled
 
 
-Local = SlotLocal | LazyLocal | ByNameLocal | OpLocal | LetOpLocal
+Local = SlotLocal | LazyLocal | ThunkLocal | ByNameLocal | OpLocal | LetOpLocal
 
 
 @dataclass(eq=False)

@@ -11,8 +11,10 @@ body into the caller's frame instead:
 * an argument that folds to a constant is substituted by name, so constant
   folding and the constant fast paths apply inside the body (``Enter(m, "IDLE")``
   folds ``"IDLE" \\in Powered``);
-* any other argument is evaluated once, before the body, into a fresh slot --
-  the same eager order as a real call.
+* an argument that cannot fail, or that the body evaluates first, is evaluated once,
+  before the body, into a fresh slot;
+* any other argument is passed unevaluated, as TLC passes it: a lazy slot that the
+  body's first use fills (`compile/lazy_args.py`).
 
 Only operators without operator parameters, not recursive and not too large are
 inlined, and never inside bodies that run re-entrantly on a shared frame (LET
@@ -55,11 +57,29 @@ def can_inline(compiler: Any, sym: DefSym) -> bool:
 
 
 def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
-    """The body of `sym` compiled in the caller's frame (see the module docstring)."""
+    """The body of `sym` compiled in the caller's frame (see the module docstring); with
+    an argument that must be passed unevaluated, a speculative call
+    (`compile/lazy_args.py`)."""
     from .compiler import _prefix
+    from .compile.lazy_args import passed_by_value, speculable, speculative
+    eager = passed_by_value(compiler, sym.defn.params, args, sym.defn.body, sym.scope, env)
+    if all(eager) or not speculable(compiler, args):
+        return _prefix(*_inline(compiler, sym, args, env, eager))
+    pre, by_value = _inline(compiler, sym, args, env, [True] * len(args))
+    compiler._lazy_mode += 1
+    try:
+        lazy = _prefix(*_inline(compiler, sym, args, env, eager))
+    finally:
+        compiler._lazy_mode -= 1
+    return speculative(pre, by_value, lazy)
+
+
+def _inline(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, eager: list[bool]
+            ) -> tuple[list[tuple[int, Code]], Code]:
+    from .compile.lazy_args import lazy_binding
     bindings: dict[str, Any] = {}
     pre: list[tuple[int, Code]] = []
-    for p, a in zip(sym.defn.params, args):
+    for p, a, by_value in zip(sym.defn.params, args, eager):
         if isinstance(a, A.Name):
             local = env.locals.get(a.name)
             if isinstance(local, SlotLocal):
@@ -68,6 +88,11 @@ def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: L
         code = compiler.expr(a, env)
         if const_value(code) is not NO_VALUE:
             bindings[p.name] = ByNameLocal(a, env)
+            continue
+        if not by_value:
+            reset, bindings[p.name] = lazy_binding(compiler, a, env, code)
+            if reset is not None:
+                pre.append(reset)
             continue
         slot = env.frame.alloc()
         pre.append((slot, code))
@@ -78,4 +103,4 @@ def inline_call(compiler: Any, sym: DefSym, args: list[A.Expr], env: Env, loc: L
                                                 enabled_cut=env.enabled_cut))
     finally:
         compiler._inline_depth -= 1
-    return _prefix(pre, body)
+    return pre, body

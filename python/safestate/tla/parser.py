@@ -15,6 +15,7 @@ import tree_sitter_tlaplus
 from tree_sitter import Language, Node, Parser
 
 from . import ast as A
+from .comments import blank_comments
 from .errors import Loc, TlaError, UnsupportedError
 
 with warnings.catch_warnings():
@@ -89,6 +90,7 @@ _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "f": "\f", '"': '"', "\\": "\\"}
 def parse_text(text: str, file: str) -> list[A.Module]:
     """Parse a file's text; returns its top-level modules (normally exactly one)."""
     parser = Parser(_LANGUAGE)
+    text = blank_comments(text)
     data = text.encode("utf-8")
     tree = parser.parse(data)
     conv = _Converter(data, file)
@@ -105,7 +107,8 @@ def parse_text(text: str, file: str) -> list[A.Module]:
 
 def _token_order(text: str) -> tuple[list[str], list[str]]:
     """The words (identifiers and keywords) and the string contents of a file, each in
-    order of first appearance, skipping comments and the text before the first module.
+    order of first appearance, skipping the text before the first module (comments
+    are already blanked out).
 
     TLC's string order is the order in which names are interned: SANY interns every
     word while parsing a file, but the content of a string literal only when the
@@ -113,8 +116,6 @@ def _token_order(text: str) -> tuple[list[str], list[str]]:
     start = _MODULE_START_RE.search(text)
     if start is not None:
         text = text[start.start():]
-    text = re.sub(r"\(\*.*?\*\)", " ", text, flags=re.S)
-    text = re.sub(r"\\\*[^\n]*", " ", text)
     words: dict[str, None] = {}
     strings: dict[str, None] = {}
     for tok in _TOKEN_RE.findall(text):

@@ -17,6 +17,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from ...tla import ast as A
+from ...tla.compile.lazy_args import first_evaluated
 from ...tla.errors import Loc, UnsupportedError
 from ...tla.modules import BuiltinSym, ConstSym, DefSym, Scope, VarSym
 from ...tla.values import BOOLEAN, string_rank
@@ -51,6 +52,15 @@ class SlotArg:
     """A parameter evaluated into a slot; priming it primes the argument (`source`)."""
     slot: int
     source: tuple[A.Expr, TEnv] | None  # None for a bound variable (x' is x)
+
+
+@dataclass
+class LazyArg:
+    """A parameter bound to its argument unevaluated, as TLC binds it: a LETREF node
+    (evaluated at the first use, the slot reset at each call, `tla/compile/lazy_args.py`);
+    priming it primes the argument (`source`)."""
+    node: Node
+    source: tuple[A.Expr, TEnv]
 
 
 @dataclass
@@ -176,6 +186,11 @@ class Translator:
                 src, senv = local.source
                 return self.expr(src, replace(senv, primed=True))
             return self.node(Op.SLOT, loc, (local.slot,))
+        if isinstance(local, LazyArg):
+            if env.primed:
+                src, senv = local.source
+                return self.expr(src, replace(senv, primed=True))
+            return local.node
         if isinstance(local, ByName):
             return self.expr(local.expr, replace(local.env, primed=local.env.primed or env.primed))
         if isinstance(local, LetRef):
@@ -213,7 +228,9 @@ class Translator:
     def inline(self, d: A.OpDef, args: list[A.Expr], scope: Scope, base: dict, env: TEnv, loc: Loc,
                body_of: Any) -> Node:
         """An operator expanded at its call: arguments into fresh slots (by name when
-        action-level or in Init, as `Compiler.bind_params`), then the body."""
+        action-level or in Init, as `Compiler.bind_params`; unevaluated into a lazy slot
+        where evaluating them first could be told from TLC's lazy arguments), then the
+        body."""
         if len(args) != len(d.params):
             raise unsupported(f"{d.name} applied to {len(args)} arguments", loc)
         self._depth += 1
@@ -223,19 +240,31 @@ class Translator:
             locals_ = dict(base)
             slots: list[int] = []
             values: list[Node] = []
-            for p, a in zip(d.params, args):
+            lazy: list[int] = []
+            for p, a, by_value in zip(d.params, args, self.passed_by_value(d.params, args, d.body, scope, env)):
                 if p.arity:
                     raise unsupported(f"the operator parameter {p.name}", p.loc)
                 if env.init or _mentions_prime(a):
                     locals_[p.name] = ByName(a, env)
-                else:
+                elif by_value:
                     slot = self.alloc()
                     slots.append(slot)
                     values.append(self.expr(a, env))
                     locals_[p.name] = SlotArg(slot, (a, env))
+                else:
+                    outer = env.locals.get(a.name) if isinstance(a, A.Name) else None
+                    if isinstance(outer, LazyArg) and not env.primed:
+                        locals_[p.name] = outer  # passed on: the same lazy slot
+                        continue
+                    slot = self.alloc()
+                    lazy.append(slot)
+                    locals_[p.name] = LazyArg(self.node(Op.LETREF, a.loc, (slot,), kids=(self.expr(a, env),)),
+                                              (a, env))
             body = body_of(d.body, TEnv(scope, locals_, env.primed, env.init))
         finally:
             self._depth -= 1
+        if lazy:
+            body = self.node(Op.LET if body_of == self.expr else Op.A_LET, loc, lazy, kids=(body,))
         if not slots:
             return body
         if body_of != self.expr:
@@ -248,6 +277,36 @@ class Translator:
             pure = not (self.free_slots(body) - set(slots))
             op = Op.BIND_MEMO if pure and self.iterates(body) else Op.BIND
         return self.node(op, loc, slots, kids=tuple(values) + (body,))
+
+    def passed_by_value(self, params: list[A.Param], args: list[A.Expr], body: A.Expr, scope: Scope,
+                        env: TEnv) -> list[bool]:
+        """For each argument: may it be evaluated before the call?  The rule of
+        `tla/compile/lazy_args.py`: when it cannot fail, or when it is the only one that
+        can and the body evaluates its parameter first."""
+        eager = [p.arity > 0 or self.cannot_fail(a, env) for p, a in zip(params, args)]
+        risky = [i for i, ok in enumerate(eager) if not ok]
+        if len(risky) == 1 and first_evaluated(body, scope) == params[risky[0]].name:
+            eager[risky[0]] = True
+        return eager
+
+    def cannot_fail(self, a: A.Expr, env: TEnv) -> bool:
+        if isinstance(a, (A.Num, A.Str, A.Bool)):
+            return True
+        if isinstance(a, A.Name):
+            local = env.locals.get(a.name)
+            if local is not None:
+                return isinstance(local, SlotArg) and not (env.primed and local.source is not None)
+            sym = self.lookup(a.name, env)
+            if hasattr(sym, "value"):
+                return True
+            if isinstance(sym, ConstSym):
+                return a.name in self.c.constants
+            return isinstance(sym, VarSym) and not (env.primed or env.init)
+        if isinstance(a, (A.TupleLit, A.SetEnum)):
+            return all(self.cannot_fail(x, env) for x in a.elems)
+        if isinstance(a, A.RecLit):
+            return all(self.cannot_fail(x, env) for _, x in a.fields)
+        return False
 
     def iterates(self, n: Node) -> bool:
         """Does the expression iterate over a set (a quantifier, set filter or map,
@@ -752,7 +811,7 @@ class Translator:
         if local is not None:
             if isinstance(local, ByName):
                 return local.expr, local.env
-            if isinstance(local, SlotArg):
+            if isinstance(local, (SlotArg, LazyArg)):
                 return local.source
             if isinstance(local, LetRef):
                 return local.expr, local.env

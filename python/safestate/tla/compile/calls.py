@@ -9,12 +9,14 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from .. import ast as A
-from ..env import NOTSET, UNSET, Code, Env, Frame, LetOpLocal, OpLocal, SlotLocal
+from ..env import NOTSET, UNSET, Code, Env, Frame, LetOpLocal, Local, OpLocal, SlotLocal, ThunkLocal
 from ..errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from ..modules import BuiltinSym, DefSym
 from ..inline import can_inline, inline_call
 from ..tlcget import RUNTIME
 from .closures import Value, EMPTY, _prefix, _guard, _apply_fn, _operator_value
+from .lazy_args import (cannot_fail, first_evaluated, lazy_binding, passed_by_value, speculable,
+                        speculative_call, thunk_code)
 from .operators import _CORE_BINARY
 from .syntax import all_names
 
@@ -52,6 +54,9 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
 class CallsMixin:
     """Calls of user, LET, LAMBDA and built-in operators."""
 
+    _lazy_defs: dict[int, tuple[Any, Any]]  # set by Compiler.__init__, as _lazy_mode
+    _lazy_mode: int
+
     def _arity(self, name: str, arity: int, args: list[A.Expr], loc: Loc) -> None:
         if len(args) != arity:
             raise TlaError("semantic", f"The operator {name} requires {arity} arguments, but "
@@ -76,11 +81,19 @@ class CallsMixin:
 
     def _inline_lambda(self, lam: A.Lambda, args: list[A.Expr], lam_env: Env, env: Env, loc: Loc) -> Code:
         self._arity("LAMBDA", len(lam.params), args, loc)
-        bindings, pre = {}, []
-        for p, a in zip(lam.params, args):
-            slot = env.frame.alloc()
-            pre.append((slot, self.expr(a, env)))
-            bindings[p] = SlotLocal(slot, self.state_source(a, env))
+        bindings: dict[str, Any] = {}
+        pre: list[tuple[int, Code]] = []
+        risky = [i for i, a in enumerate(args) if not cannot_fail(self, a, env)]
+        first = first_evaluated(lam.body, lam_env.scope)
+        for i, (p, a) in enumerate(zip(lam.params, args)):
+            if i not in risky or (len(risky) == 1 and first == p):
+                slot = env.frame.alloc()
+                pre.append((slot, self.expr(a, env)))
+                bindings[p] = SlotLocal(slot, self.state_source(a, env))
+            else:  # unevaluated, as TLC passes it (lazy_args.py)
+                reset, bindings[p] = lazy_binding(self, a, env)
+                if reset is not None:
+                    pre.append(reset)
         body = self.expr(lam.body, Env(lam_env.scope, env.frame, {**lam_env.locals, **bindings}, env.init_mode, env.primed))
         return _prefix(pre, body)
 
@@ -125,7 +138,12 @@ class CallsMixin:
             return _prefix(pre, body)
         if d.fn_bounds is not None:
             return self._fn_def_ref(sym)
-        if self.fast_paths and self.memoise_operators and self.op_memo.applies(sym, args):
+        eager = passed_by_value(self, d.params, args, d.body, sym.scope, env)
+        # The memo's key is every argument's value, evaluated first: only where that
+        # cannot be told from TLC's lazy arguments (an argument that fails: the memo
+        # makes the ordinary call, which evaluates what TLC evaluates).
+        if self.fast_paths and self.memoise_operators and (all(eager) or speculable(self, args)) \
+                and self.op_memo.applies(sym, args):
             self.op_memo.skip.add(id(sym))
             try:
                 plain = self._call_def(sym, args, env, loc)
@@ -134,7 +152,7 @@ class CallsMixin:
             return self.op_memo.wrap(sym, plain, [self.expr(a, env) for a in args])
         if self.fast_paths and (d.params or info.vars) and can_inline(self, sym):
             return inline_call(self, sym, args, env, loc)
-        compiled = self._compiled_def(sym)
+        compiled = self._compiled_def(sym, lazy=not all(eager))
         if not d.params:
             if compiled.constant:
                 return compiled.constant_ref()
@@ -145,7 +163,14 @@ class CallsMixin:
             if size == 0:
                 return lambda s, t, L: body(s, t, EMPTY)
             return lambda s, t, L: body(s, t, [None] * size)
-        arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
+        if not all(eager) and speculable(self, args):
+            by_value = self._compiled_def(sym)
+            values = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
+            thunks = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, False)
+                      for a, p, ok in zip(args, d.params, eager)]
+            return speculative_call(values, by_value, thunks, compiled)
+        arg_codes = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, False)
+                     for a, p, ok in zip(args, d.params, eager)]
         holder = compiled
         if compiled.holder_only:  # a recursive call: the frame size is not known yet
             n = len(args)
@@ -165,8 +190,10 @@ class CallsMixin:
         cannot be expanded at its call site, so its compiled body is run with the state
         being built (or the next state) in place of the current one; its arguments are
         compiled in the caller's primed (or Init) environment."""
-        arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, sym.defn.params)]
-        holder = self._compiled_def(sym)
+        eager = passed_by_value(self, sym.defn.params, args, sym.defn.body, sym.scope, env)
+        arg_codes = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, False)
+                     for a, p, ok in zip(args, sym.defn.params, eager)]
+        holder = self._compiled_def(sym, lazy=not all(eager))
         names = self.var_names
         reads = sorted(i for i in self.def_info(sym).vars if i >= 0)
         mark = "" if env.init_mode else "'"
@@ -180,19 +207,35 @@ class CallsMixin:
             return holder.body(t, None, frame + [None] * (holder.size - len(frame)))
         return call
 
-    def _compiled_def(self, sym: DefSym) -> "CompiledDef":
-        if sym.compiled is None:
-            holder = CompiledDef(self, sym)
+    def _compiled_def(self, sym: DefSym, lazy: bool = False) -> "CompiledDef":
+        """The body compiled once, with a frame of its own.  `lazy`: the version whose
+        parameters may hold thunks (arguments passed unevaluated, lazy_args.py), for
+        the calls that pass any; the others use the plain version."""
+        if lazy and sym.defn.params:
+            hit = self._lazy_defs.get(id(sym))
+            if hit is not None and hit[0] is sym:
+                return hit[1]
+        elif sym.compiled is not None:
+            return sym.compiled  # type: ignore[return-value]
+        holder = CompiledDef(self, sym)
+        if lazy and sym.defn.params:
+            self._lazy_defs[id(sym)] = (sym, holder)
+        else:
             sym.compiled = holder
-            frame = Frame()
-            bindings: dict[str, Any] = {}
-            for p in sym.defn.params:
-                slot = frame.alloc()
-                bindings[p.name] = OpLocal(slot, p.arity) if p.arity else SlotLocal(slot)
+        frame = Frame()
+        bindings: dict[str, Any] = {}
+        for p in sym.defn.params:
+            slot = frame.alloc()
+            bindings[p.name] = OpLocal(slot, p.arity) if p.arity else ThunkLocal(slot) if lazy else SlotLocal(slot)
+        # The version for lazy arguments makes lazy calls; the other speculative ones.
+        mode, self._lazy_mode = self._lazy_mode, int(lazy)
+        try:
             holder.body = self.expr(sym.defn.body, Env(sym.scope, frame, bindings))
-            holder.size = frame.size
-            holder.holder_only = False
-        return sym.compiled  # type: ignore[return-value]
+        finally:
+            self._lazy_mode = mode
+        holder.size = frame.size
+        holder.holder_only = False
+        return holder
 
     def _arg(self, a: A.Expr, arity: int, env: Env, loc: Loc) -> Code:
         """Compile an argument; operator arguments become Python callables."""
@@ -242,9 +285,9 @@ class CallsMixin:
         self._arity(name, len(d.params), args, loc)
         if not local.holder:
             local.holder.extend([None, []])
-            bindings = {}
+            bindings: dict[str, Local] = {}
             for p, sl in zip(d.params, local.param_slots):
-                bindings[p.name] = OpLocal(sl, p.arity) if p.arity else SlotLocal(sl)
+                bindings[p.name] = OpLocal(sl, p.arity) if p.arity else ThunkLocal(sl)
             self._no_inline += 1
             lo = local.env.frame.size
             try:
@@ -257,10 +300,23 @@ class CallsMixin:
                 local.holder[1] = list(range(lo, local.env.frame.size))
         holder = local.holder
         param_slots = local.param_slots
-        arg_codes = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)]
+        # The body shares the caller's frame and overwrites its slots: a thunk keeps a copy.
+        eager = passed_by_value(self, d.params, args, d.body, local.env.scope, env)
+        arg_codes = [self._arg(a, p.arity, env, loc) if ok else thunk_code(self, a, env, True)
+                     for a, p, ok in zip(args, d.params, eager)]
+        speculate = not all(eager) and speculable(self, args)
+        # Speculative (lazy_args.py): the values, or if one fails the thunks; the body
+        # reads its parameters through thunk_read either way.
+        values = [self._arg(a, p.arity, env, loc) for a, p in zip(args, d.params)] if speculate else arg_codes
 
         def call(s: Any, t: Any, L: list) -> Value:
-            vals = [a(s, t, L) for a in arg_codes]
+            if speculate:
+                try:
+                    vals = [a(s, t, L) for a in values]
+                except Exception:  # noqa: BLE001 - the body raises it if TLC would
+                    vals = [a(s, t, L) for a in arg_codes]
+            else:
+                vals = [a(s, t, L) for a in arg_codes]
             slots = param_slots + holder[1] if holder[1] else param_slots
             saved = [L[sl] for sl in slots]
             for sl, v in zip(slots, vals):

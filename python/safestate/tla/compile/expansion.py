@@ -17,6 +17,7 @@ RECURSION_LIMIT = 50
 from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLocal
 from ..errors import Loc, UnsupportedError
 from ..modules import DefSym
+from .lazy_args import cannot_fail, lazy_binding, passed_by_value
 from .syntax import all_names
 
 
@@ -69,7 +70,7 @@ class ExpansionMixin:
         self._arity(name, len(d.params), args, loc)
         self.enter_expansion(name, loc, d)
         try:
-            bindings, pre = self.bind_params(d.params, args, env, loc)
+            bindings, pre = self.bind_params(d.params, args, env, loc, d.body, local.env.scope)
             body_env = Env(local.env.scope, env.frame, {**local.env.locals, **bindings},
                            env.init_mode, env.primed, enabled_cut=env.enabled_cut)
             return pre, compile_body(d.body, body_env)
@@ -83,7 +84,8 @@ class ExpansionMixin:
         self._arity(d.name, len(d.params), args, loc)
         self.enter_expansion(d.name, loc, d)
         try:
-            bindings, pre = self.bind_params(d.params, args, env, loc)
+            bindings, pre = self.bind_params(d.params, args, env, loc, d.body if d.fn_bounds is None else None,
+                                             sym.scope)
             inst = {p: env.locals[p] for p in sym.scope.instance_params if p in env.locals}
             body_env = Env(sym.scope, env.frame, {**inst, **bindings}, env.init_mode, env.primed,
                            enabled_cut=env.enabled_cut)
@@ -95,32 +97,48 @@ class ExpansionMixin:
             self.leave_expansion(d)
         return pre, body
 
-    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc) -> tuple[dict, list]:
+    def bind_params(self, params: list[A.Param], args: list[A.Expr], env: Env, loc: Loc,
+                    body: A.Expr | None = None, body_scope: Any = None) -> tuple[dict, list]:
         """Bind operator parameters: by value into fresh slots (remembering an argument
-        that reads state, which a prime in the body primes), or by name for
-        action-level arguments (which the body must see unevaluated)."""
+        that reads state, which a prime in the body primes) where that cannot be told
+        from TLC's lazy arguments, else unevaluated into a lazy slot (`lazy_args.py`;
+        `body`, if given, is the body they are bound for, in `body_scope`); by name for action-level
+        arguments (which the body must see unevaluated) and in Init."""
         bindings: dict[str, Any] = {}
         pre: list[tuple[int, Code]] = []
-        for p, a in zip(params, args):
+        eager = passed_by_value(self, params, args, body, body_scope, env)
+        for p, a, by_value in zip(params, args, eager):
             if p.arity:
                 slot = env.frame.alloc()
                 pre.append((slot, self._arg(a, p.arity, env, loc)))
                 bindings[p.name] = OpLocal(slot, p.arity)
             elif self.info(a, env).action or env.init_mode:
                 bindings[p.name] = ByNameLocal(a, env)
-            else:
+            elif by_value:
                 slot = env.frame.alloc()
                 pre.append((slot, self.expr(a, env)))
                 bindings[p.name] = SlotLocal(slot, self.state_source(a, env))
+            else:
+                reset, bindings[p.name] = lazy_binding(self, a, env)
+                if reset is not None:
+                    pre.append(reset)
         return bindings, pre
 
-    def _bind_args_by_value(self, args: list[A.Expr], env: Env) -> tuple[dict, list]:
+    def _bind_args_by_value(self, args: list[A.Expr], env: Env, lazy: bool = True) -> tuple[dict, list]:
+        """Arguments of an operator given as an expression (a substituted operator
+        constant, an instance's operator), bound to names the callee's arguments refer
+        to: unevaluated unless they cannot fail (or `lazy` is False)."""
         bindings: dict[str, Any] = {}
         pre: list[tuple[int, Code]] = []
         for i, a in enumerate(args):
-            slot = env.frame.alloc()
-            pre.append((slot, self.expr(a, env)))
-            bindings[f"$arg{i}"] = SlotLocal(slot, self.state_source(a, env))
+            if not lazy or cannot_fail(self, a, env):
+                slot = env.frame.alloc()
+                pre.append((slot, self.expr(a, env)))
+                bindings[f"$arg{i}"] = SlotLocal(slot, self.state_source(a, env))
+            else:
+                reset, bindings[f"$arg{i}"] = lazy_binding(self, a, env)
+                if reset is not None:
+                    pre.append(reset)
         return bindings, pre
 
     def state_source(self, a: A.Expr, env: Env) -> tuple[A.Expr, Env] | None:

@@ -11,10 +11,13 @@ from ..env import Code, Env
 from ..errors import TlaError
 from ..modules import DefSym, InstanceSym, Scope
 from .closures import _prefix
+from .lazy_args import cannot_fail, speculable, speculative
 
 
 class InstancesMixin:
     """References through ``I!`` prefixes."""
+
+    _lazy_mode: int  # set by Compiler.__init__ (compile/lazy_args.py)
 
     def _instance_scope(self, e: A.Prefixed, env: Env) -> Scope:
         scope = env.scope
@@ -26,9 +29,18 @@ class InstancesMixin:
         return scope
 
     def c_Prefixed(self, e: A.Prefixed, env: Env) -> Code:
-        return self.prefixed(e, env, self.expr)
+        if all(cannot_fail(self, a, env) for a in e.args) or not speculable(self, e.args):
+            return self.prefixed(e, env, self.expr)
+        # An argument that may fail: a speculative call (compile/lazy_args.py).
+        pre, by_value = self.prefixed(e, env, self.expr, lazy=False)
+        self._lazy_mode += 1
+        try:
+            lazy = self.prefixed(e, env, self.expr)
+        finally:
+            self._lazy_mode -= 1
+        return speculative(pre, by_value, lazy)
 
-    def prefixed(self, e: A.Prefixed, env: Env, compile_body: Callable) -> Any:
+    def prefixed(self, e: A.Prefixed, env: Env, compile_body: Callable, lazy: bool = True) -> Any:
         scope = env.scope
         bindings: dict[str, Any] = {}
         pre: list = []
@@ -47,7 +59,7 @@ class InstancesMixin:
         if sym is None:
             raise self._unknown(e.name, e.loc)
         # Operator arguments are compiled in the caller's environment, by value.
-        arg_bindings, arg_pre = self._bind_args_by_value(e.args, env)
+        arg_bindings, arg_pre = self._bind_args_by_value(e.args, env, lazy)
         fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
         inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed,
                         enabled_cut=env.enabled_cut)
@@ -61,6 +73,6 @@ class InstancesMixin:
                                             env.primed, enabled_cut=env.enabled_cut))
             return pre + pp, body
         code = self._symbol_ref(e.name, sym, fake, inner_env, e.loc)
-        if compile_body != self.expr:
+        if compile_body != self.expr or not lazy:
             return pre, code
         return _prefix(pre, code)

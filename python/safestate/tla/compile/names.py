@@ -10,12 +10,13 @@ from dataclasses import replace
 from typing import Any
 
 from .. import ast as A
-from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLocal
+from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLocal, ThunkLocal
 from ..errors import Loc, TlaError, UnsupportedError
 from ..modules import BuiltinSym, ConstSym, DefSym, InstanceSym, SubstSym, VarSym
 from ..specialise import lazy_read, slot_read, var_read
 from ..values import BOOLEAN, STRING
 from .closures import _prefix
+from .lazy_args import thunk_read
 
 
 class NamesMixin:
@@ -52,6 +53,9 @@ class NamesMixin:
         if isinstance(local, LazyLocal):
             self._arity(name, 0, args, loc)
             return lazy_read(local.slot, local.code)
+        if isinstance(local, ThunkLocal):
+            self._arity(name, 0, args, loc)
+            return thunk_read(local.slot)
         if isinstance(local, ByNameLocal):
             self._arity(name, 0, args, loc)
             return self.expr(local.expr, replace(local.env, primed=local.env.primed or env.primed))
