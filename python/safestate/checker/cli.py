@@ -27,7 +27,8 @@ from .model import Model, default_config_path, load_model
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("model", help="the .tla module to check")
     p.add_argument("--config", help="the .cfg file (default: MODEL.cfg beside the module)")
-    p.add_argument("--workers", default="1", help="workers (processes of the Python engine, threads of the native one): a number or 'auto' (default 1)")
+    p.add_argument("--workers", default="1",
+                   help="workers (processes of the Python engine, threads of the native one): a number or 'auto' (default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.add_argument("--itf", metavar="FILE", help="write the counterexample as an ITF JSON trace")
     p.add_argument("--graph", metavar="FILE", help="write the whole reachable state graph as JSON")

@@ -213,7 +213,6 @@ class Explorer:
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
-        m = self.m
         if RUNTIME.used:
             RUNTIME.search = self
         ENUM_WATCH.arm(self.max_memory_mb, self.progress)
@@ -316,7 +315,7 @@ class Explorer:
                 err = TlaError("eval", f"{e.message}\nWhile working on the initial state", e.loc)
                 self.outcome = CheckResult("error", len(self.states), self.generated, 1,
                                            len(self.states) - self.head, None, [Step(st, "Init", {})], err)
-                raise _Stop()
+                raise _Stop() from None  # ends the search; the error is in self.outcome
             err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
             if idx >= 0:
                 self._finish("error", None, idx, error=err)
@@ -325,7 +324,6 @@ class Explorer:
             raise  # not reached: _finish raises _Stop
 
     def _expand_all(self) -> None:
-        m = self.m
         while self.head < len(self.states):
             self.expand(self.head)
             if self.live_edges:
@@ -341,7 +339,6 @@ class Explorer:
         before = self.generated
         seen_get = self.seen.get
         invariants = m.invariants
-        holds = m.holds
         constrained = bool(m.constraints or m.action_constraints)
         keyed = m.view is not None or m.symmetry is not None
         graph = self.graph

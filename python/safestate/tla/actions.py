@@ -490,7 +490,8 @@ class ActionCompiler:
                 try:
                     ok = member(cur, S)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
                 if ok:
                     k(s, t, L)
         return assign_in
@@ -582,7 +583,8 @@ def _eq(a: Any, b: Any, loc: Loc) -> bool:
     try:
         return values_equal(a, b)
     except EvalError as err:
-        raise err.with_loc(loc)
+        err.with_loc(loc)
+        raise
 
 
 def _flat_bounds(bounds: list[A.Bound]) -> list[list[str]]:

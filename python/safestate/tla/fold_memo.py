@@ -27,7 +27,7 @@ the first compile reached below its site.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Hashable
+from typing import Callable, Hashable
 
 from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_value

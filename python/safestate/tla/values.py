@@ -271,7 +271,6 @@ class FnSetValue(LazySet):
 
     def contains(self, v: Value) -> bool:
         if type(v) is tuple:
-            keys: Iterable = range(1, len(v) + 1)
             vals: Iterable = v
             if not set_equal_keys(self.dom, len(v), None):
                 return False

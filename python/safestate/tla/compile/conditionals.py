@@ -99,6 +99,6 @@ class ConditionalsMixin:
                     return v
                 if r is not False:
                     check_bool(r, e.body.loc, "CHOOSE body")
-            raise EvalError(f"Attempted to compute the value of an expression of form\nCHOOSE x \\in S: P, "
-                            f"but no element of S satisfied P.", loc)
+            raise EvalError("Attempted to compute the value of an expression of form\nCHOOSE x \\in S: P, "
+                            "but no element of S satisfied P.", loc)
         return choose

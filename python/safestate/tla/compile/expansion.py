@@ -99,4 +99,4 @@ class ExpansionMixin:
             return True
         # A name bound to a state-reading argument reads state too.
         locs = [env.locals.get(n) for n in all_names(a)]
-        return any(isinstance(l, (SlotLocal, LazyLocal)) and l.source is not None for l in locs)
+        return any(isinstance(b, (SlotLocal, LazyLocal)) and b.source is not None for b in locs)

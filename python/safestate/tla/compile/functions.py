@@ -101,7 +101,8 @@ class FunctionsMixin:
                 try:
                     return fv.apply(k)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             elif type(fv) is str and type(k) is int and 0 < k <= len(fv):
                 return fv[k - 1]
             else:

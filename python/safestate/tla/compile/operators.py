@@ -69,7 +69,8 @@ def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callabl
                     return fast(x, y)
                 return fn(x, y)
             except EvalError as err:
-                raise err.with_loc(loc)
+                err.with_loc(loc)
+                raise
             except (TypeError, RecursionError) as err:
                 raise EvalError(_python_error(err), loc) from None
         c = const_value(b)
@@ -78,7 +79,8 @@ def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callabl
                 try:
                     x = a(s, t, L)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
                 except (TypeError, RecursionError) as err:
                     raise EvalError(_python_error(err), loc) from None
                 if type(x) is int:
@@ -86,7 +88,8 @@ def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callabl
                 try:
                     return fn(x, c)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             return code_c
         return code
     return make
@@ -135,7 +138,8 @@ class OperatorsMixin:
                 try:
                     return values_equal(x, y)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             return eq
         if op == "/=":
             def neq(s: Any, t: Any, L: list) -> bool:
@@ -145,7 +149,8 @@ class OperatorsMixin:
                 try:
                     return not values_equal(x, y)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             return neq
         if op == "=>":
             la, lb = e.lhs.loc, e.rhs.loc
