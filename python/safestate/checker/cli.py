@@ -166,10 +166,10 @@ def _itf(model: Model, result: CheckResult) -> dict:
 
 def _summary(model: Model, r: CheckResult, itf: dict | None, seconds: float) -> dict[str, Any]:
     if r.result == "error" and r.error is not None:
-        out = _json_error(r.error, seconds, r)
+        out: dict[str, Any] = _json_error(r.error, seconds, r)
         out["trace"] = itf
         return out
-    out: dict[str, Any] = {
+    out = {
         "result": r.result, "distinct_states": r.distinct_states, "states_generated": r.states_generated,
         "depth": r.depth, "violated": r.violated, "trace": itf, "seconds": round(seconds, 3),
         "left_on_queue": r.left_on_queue,
@@ -195,7 +195,7 @@ def _property_summary(model: Model, r: CheckResult) -> dict[str, Any]:
     lasso = None
     if r.loop is not None and r.trace is not None:
         lasso = {"length": len(r.trace), "loop": r.loop, "stuttering": r.loop_step is None}
-    names = r.violated_properties or ([r.violated] if violated else [])
+    names: list[Any] = r.violated_properties or ([r.violated] if violated else [])
     return {"names": list(model.properties), "result": verdict, "violated": names, "lasso": lasso}
 
 

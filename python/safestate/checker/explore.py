@@ -32,6 +32,7 @@ from typing import Any, Callable
 
 from ..tla.enum_watch import ENUM_WATCH, MemoryLimitExceeded, rss_mb
 from ..tla.errors import EvalError, JavaOverrideError, ModuleEvalError, TlaError
+from ..tla.modules import DefSym
 from ..tla.tlcget import RUNTIME
 from .model import Model
 from .deep_stack import call_with_deep_stack, stack_overflow_message
@@ -524,7 +525,7 @@ def _check_postcondition(model: Model, result: CheckResult) -> None:
         return
     if not ok:
         sym = model.scope.lookup(post.name)
-        loc = sym.defn.body.loc if hasattr(sym, "defn") else post.loc
+        loc = sym.defn.body.loc if isinstance(sym, DefSym) else post.loc
         result.result = "error"
         result.error = TlaError("assumption", f"Postcondition {post.name} at line {loc.line}, col {loc.column} "
                                 f"of module {model.module.name} is false.", loc)

@@ -42,12 +42,16 @@ class Leaf:
     params: list[tuple[str, int]] = field(default_factory=list)
 
 
+def _not_compiled(s: Any, t: Any, L: list) -> None:
+    raise EvalError("recursive action run before its body is compiled")
+
+
 @dataclass
 class _RecursiveAction:
     """The compiled body of a recursive action-level operator (see
     `ActionCompiler.recursive_action`)."""
 
-    body: Code | None = None
+    body: Code = _not_compiled
     size: int = 0
     ret: int = 0
 
@@ -90,13 +94,13 @@ class ActionCompiler:
                 args = e.args if isinstance(e, A.Apply) else []
                 new_params: list[tuple[str, int]] = []
 
-                def body(b: A.Expr, benv: Env) -> Code:
+                def inline_body(b: A.Expr, benv: Env) -> Code:
                     for p in sym.defn.params:
                         loc_ = benv.locals.get(p.name)
                         if isinstance(loc_, SlotLocal):
                             new_params.append((p.name, loc_.slot))
                     return self.split(b, benv, sym.defn.name, sym.defn.loc, params + new_params, make_k)
-                pre, code = self.c.inline_def(sym, args, env, e.loc, body)
+                pre, code = self.c.inline_def(sym, args, env, e.loc, inline_body)
                 return _prefix_act(pre, code)
         return self.action(e, env, make_k(Leaf(label, label_loc, list(params))))
 

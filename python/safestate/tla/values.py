@@ -34,6 +34,8 @@ class ModelValue:
     """A TLC model value (declared in the .cfg as ``a = a`` or ``S = {a, b}``)."""
 
     __slots__ = ("name", "rank")
+    name: str
+    rank: int
     _interned: dict[str, "ModelValue"] = {}
 
     def __new__(cls, name: str) -> "ModelValue":

@@ -12,9 +12,10 @@ from ..env import Code, Env
 from ..errors import EvalError
 from .binders import _enum_checked, _assign
 from .closures import Value, check_bool
+from .host import CompilerHost
 
 
-class ConditionalsMixin:
+class ConditionalsMixin(CompilerHost):
     """IF, CASE and CHOOSE."""
 
     def c_If(self, e: A.If, env: Env) -> Code:

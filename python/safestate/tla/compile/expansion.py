@@ -14,9 +14,10 @@ from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLo
 from ..errors import Loc, UnsupportedError
 from ..modules import DefSym
 from .syntax import all_names
+from .host import CompilerHost
 
 
-class ExpansionMixin:
+class ExpansionMixin(CompilerHost):
     """Operators expanded at their call site, and the binding of their parameters."""
 
     def enter_expansion(self, name: str, loc: Loc) -> None:

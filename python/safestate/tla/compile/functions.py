@@ -4,7 +4,7 @@ access, and EXCEPT with its ``@``.  Tuples are functions on 1..n, so they live h
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 
 from .. import ast as A
 from ..constfold import NO_VALUE, const_code, const_value
@@ -15,6 +15,7 @@ from ..values import FnSetValue, FnValue, IntervalSet, RecSetValue, fmt, kind, m
 from .binders import _enum_checked, _comprehension
 from .closures import Value, _guard, _need_set
 from .recursive_functions import RecursiveFunction
+from .host import CompilerHost
 
 
 def _update(f: Value, keys: list, i: int, val: Code, s: Any, t: Any, L: list, at_slot: int, loc: Loc) -> Value:
@@ -41,7 +42,7 @@ def _update(f: Value, keys: list, i: int, val: Code, s: Any, t: Any, L: list, at
     return FnValue(d)
 
 
-class FunctionsMixin:
+class FunctionsMixin(CompilerHost):
     """Functions, records, tuples and EXCEPT."""
 
     def c_FnLit(self, e: A.FnLit, env: Env) -> Code:
@@ -148,7 +149,7 @@ class FunctionsMixin:
                 if kind_ == "field":
                     path.append(const_code(item))
                 else:
-                    exprs = item  # type: ignore[assignment]
+                    exprs = cast("list[A.Expr]", item)  # an ("index", [exprs]) item
                     if len(exprs) == 1:
                         path.append(self.expr(exprs[0], env))
                     else:

@@ -11,9 +11,10 @@ from ..env import Code, Env
 from ..errors import TlaError
 from ..modules import DefSym, InstanceSym, Scope
 from .closures import _prefix
+from .host import CompilerHost
 
 
-class InstancesMixin:
+class InstancesMixin(CompilerHost):
     """References through ``I!`` prefixes."""
 
     def _instance_scope(self, e: A.Prefixed, env: Env) -> Scope:
@@ -48,7 +49,7 @@ class InstancesMixin:
             raise self._unknown(e.name, e.loc)
         # Operator arguments are compiled in the caller's environment, by value.
         arg_bindings, arg_pre = self._bind_args_by_value(e.args, env)
-        fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
+        fake: list[A.Expr] = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
         inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed)
         pre = pre + arg_pre
         if isinstance(sym, DefSym) and compile_body != self.expr:

@@ -7,7 +7,7 @@ shared with operator arguments (`calls.py`).
 from __future__ import annotations
 
 import operator
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, cast
 
 from .. import ast as A
 from ..constfold import const_value
@@ -18,6 +18,10 @@ from ..specialise import eq_code, member_const
 from ..stdlib import NATURALS, cap, cup, domain, non_integer_error, setminus, subseteq, union
 from ..values import IntervalSet, LazySet, PowerSet, as_set, fmt, member, values_equal
 from .closures import Value, check_bool, _guard, _python_error, _need_set
+from .host import CompilerHost
+
+if TYPE_CHECKING:
+    from ..compiler import Compiler
 
 
 def _subset(a: Value, b: Value) -> bool:
@@ -105,7 +109,7 @@ _FAST_INT = {
 }
 
 
-class OperatorsMixin:
+class OperatorsMixin(CompilerHost):
     """Binary and unary operators."""
 
     def c_Binary(self, e: A.Binary, env: Env) -> Code:
@@ -171,11 +175,11 @@ class OperatorsMixin:
         if core is not None:
             return _guard(lambda s, t, L: core(a(s, t, L), b(s, t, L)), loc)
         if isinstance(sym, BuiltinSym):
-            fast = _FAST_INT.get(op) if sym.builtin is NATURALS.get(op) else None
-            if fast is not None:
+            fast_int = _FAST_INT.get(op) if sym.builtin is NATURALS.get(op) else None
+            if fast_int is not None:
                 if op == "..":
                     a, b = self._interval_bound(e.lhs, a, env), self._interval_bound(e.rhs, b, env)
-                return fast(a, b, loc)
+                return fast_int(a, b, loc)
             fn = sym.builtin.fn
             return _guard(lambda s, t, L: fn(a(s, t, L), b(s, t, L)), loc)
         if op in ("~>", "-+->"):
@@ -190,7 +194,7 @@ class OperatorsMixin:
             raise UnsupportedError(f"temporal operator {op} in an expression evaluated by the checker", e.loc)
         if op == "ENABLED":
             from ..actions import compile_enabled
-            return compile_enabled(self, e.arg, env)
+            return compile_enabled(cast("Compiler", self), e.arg, env)  # a mixin is only ever part of a Compiler
         if op == "UNCHANGED":
             return self._unchanged_expr(e.arg, env)
         user = env.scope.lookup("-." if op == "-" else op)
