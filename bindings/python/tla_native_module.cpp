@@ -99,7 +99,7 @@ public:
 
 private:
     static constexpr size_t kBits = 16, kBlock = size_t(1) << kBits, kBlocks = size_t(1) << 15;
-    std::unique_ptr<std::unique_ptr<Val[]>[]> blocks_{new std::unique_ptr<Val[]>[kBlocks]};
+    std::unique_ptr<std::unique_ptr<Val[]>[]> blocks_ = std::make_unique<std::unique_ptr<Val[]>[]>(kBlocks);
     size_t n_ = 0;
 };
 

@@ -262,6 +262,7 @@ class PlcopenAxis {
   /// One step of the §8 table from `current` toward `desired`; `speed_zero` = the cycle's
   /// speed level is ZERO. The manager never desires Homing or DiscreteMotion; for those
   /// (inputs outside the table) an axis that is enabled and not stopping stays where it is.
+  // clang-format off
   [[nodiscard]] static constexpr AxisState step_toward(AxisState current, AxisState desired,
                                                        bool speed_zero) noexcept {
     using S = AxisState;
@@ -288,6 +289,7 @@ class PlcopenAxis {
     }
     return current;                                              // Homing / DiscreteMotion desired
   }
+  // clang-format on
 
   /// Applies step_toward() to this axis (keeps MC_Power.Status in step).
   void track(AxisState desired, bool speed_zero) noexcept;

@@ -75,10 +75,12 @@ inline void cooling_run(PressContext& c, const Requests& r) noexcept {
   if (c.in.temp_ok) go(r, cooling, cool_idle);
 }
 
+// clang-format off
 inline constexpr const char* step_names[3][stroke_steps] = {
     {"M1_Ready", "M1_Feed", "M1_Locate", "M1_Clamp", "M1_FastAdvance", "M1_Pressing", "M1_Blow", "M1_Eject", "M1_ClearScrap"},
     {"M2_Ready", "M2_Feed", "M2_Locate", "M2_Clamp", "M2_FastAdvance", "M2_Pressing", "M2_Blow", "M2_Eject", "M2_ClearScrap"},
     {"M3_Ready", "M3_Feed", "M3_Locate", "M3_Clamp", "M3_FastAdvance", "M3_Pressing", "M3_Blow", "M3_Eject", "M3_ClearScrap"}};
+// clang-format on
 inline constexpr const char* mode_names[3] = {"Mode1", "Mode2", "Mode3"};
 
 template <int M, int K>
@@ -100,6 +102,7 @@ constexpr void put_mode(std::array<StateDef<PressContext>, state_count>& t,
 
 constexpr std::array<StateDef<PressContext>, state_count> make_table() noexcept {
   std::array<StateDef<PressContext>, state_count> t{};
+  // clang-format off
   t[root] = {"Press", no_state, motor_off, false, nullptr, nullptr, nullptr, nullptr};
   t[motor_off] = {"MotorOff", root, no_state, false, nullptr, nullptr, &motor_off_run, nullptr};
   t[motor_on] = {"MotorOn", root, no_state, true, &set_on<Output::motor>, &set_off<Output::motor>, &motor_on_run, nullptr};
@@ -110,6 +113,7 @@ constexpr std::array<StateDef<PressContext>, state_count> make_table() noexcept 
   t[aux] = {"Aux", motor_on, cool_idle, false, &set_on<Output::lamp>, &set_off<Output::lamp>, nullptr, nullptr};
   t[cool_idle] = {"CoolIdle", aux, no_state, false, nullptr, nullptr, &cool_idle_run, nullptr};
   t[cooling] = {"Cooling", aux, no_state, false, &set_on<Output::cool_pump>, &set_off<Output::cool_pump>, &cooling_run, nullptr};
+  // clang-format on
   return t;
 }
 

@@ -78,6 +78,7 @@ inline constexpr Mask kRaising = static_cast<Mask>(kAnyState & ~bit(SafState::Op
 inline constexpr Mask kOperational = bit(SafState::Operational);
 
 /// Design §7, first match wins: K01-K09 in PAIRING, EMERGENCY and FAULT; K10 in OPERATIONAL.
+// clang-format off
 inline constexpr std::array<ControlRow, 10> kControlRows{{
     {"K01", kRaising, bit(ControlStatus::Released), ControlGuard::True, ControlEffect::Request},
     {"K02", kRaising, kWaiting, ControlGuard::EventAccepted, ControlEffect::Grant},
@@ -90,5 +91,6 @@ inline constexpr std::array<ControlRow, 10> kControlRows{{
     {"K09", kRaising, kAnyControl, ControlGuard::True, ControlEffect::Tick},
     {"K10", kOperational, bit(ControlStatus::Released), ControlGuard::EventAcceptedNoRelease, ControlEffect::ReleaseAgain},
 }};
+// clang-format on
 
 }  // namespace safestate::saf
