@@ -24,26 +24,25 @@ struct PressContext {
 namespace press {
 
 // Table indices, pre-order (design page §3).
-inline constexpr StateIndex root = 0, motor_off = 1, motor_on = 2, stroke = 3, aux = 34,
-                            cool_idle = 35, cooling = 36;
+inline constexpr StateIndex root = 0, motor_off = 1, motor_on = 2, stroke = 3, aux = 34, cool_idle = 35, cooling = 36;
 inline constexpr std::size_t state_count = 37;
-[[nodiscard]] constexpr StateIndex mode_state(int m) noexcept {
-  return static_cast<StateIndex>(4 + 10 * (m - 1));
-}
+[[nodiscard]] constexpr StateIndex mode_state(int m) noexcept { return static_cast<StateIndex>(4 + 10 * (m - 1)); }
 [[nodiscard]] constexpr StateIndex step_state(int m, int k) noexcept {
   return static_cast<StateIndex>(mode_state(m) + 1 + k);
 }
 
 template <Output O>
-void set_on(PressContext& c, const Requests&) noexcept { c.out.set(O, true); }
+void set_on(PressContext& c, const Requests&) noexcept {
+  c.out.set(O, true);
+}
 template <Output O>
-void set_off(PressContext& c, const Requests&) noexcept { c.out.set(O, false); }
+void set_off(PressContext& c, const Requests&) noexcept {
+  c.out.set(O, false);
+}
 
 // A transition requested by a run function; the result is always ok for these sibling
 // pairs of the fixed table (tested), so it is not acted on.
-inline void go(const Requests& r, StateIndex src, StateIndex dst) noexcept {
-  static_cast<void>(r.request(src, dst));
-}
+inline void go(const Requests& r, StateIndex src, StateIndex dst) noexcept { static_cast<void>(r.request(src, dst)); }
 
 inline void motor_off_run(PressContext& c, const Requests& r) noexcept {
   if (c.in.motor_on && !c.in.motor_off) go(r, motor_off, motor_on);
@@ -88,14 +87,13 @@ constexpr StateDef<PressContext> step_def() noexcept {
   if constexpr (K == 0) {
     return {step_names[M - 1][K], mode_state(M), no_state, false, nullptr, nullptr, &step_run<M, K>, nullptr};
   } else {
-    return {step_names[M - 1][K], mode_state(M), no_state, false, &set_on<valve_of_step(K)>,
+    return {step_names[M - 1][K],       mode_state(M),   no_state, false, &set_on<valve_of_step(K)>,
             &set_off<valve_of_step(K)>, &step_run<M, K>, nullptr};
   }
 }
 
 template <int M, std::size_t... K>
-constexpr void put_mode(std::array<StateDef<PressContext>, state_count>& t,
-                        std::index_sequence<K...>) noexcept {
+constexpr void put_mode(std::array<StateDef<PressContext>, state_count>& t, std::index_sequence<K...>) noexcept {
   t[mode_state(M)] = {mode_names[M - 1], stroke, step_state(M, 0), false, nullptr, nullptr, &mode_run<M>, nullptr};
   ((t[step_state(M, static_cast<int>(K))] = step_def<M, static_cast<int>(K)>()), ...);
 }

@@ -21,11 +21,11 @@ inline constexpr Mask kAnyState = 0x0F;
 
 enum class StateGuard : std::uint8_t {
   True,
-  HardwareFault,         // the cycle's hardware_fault input
-  PairedAndSafe,         // estop != NONE and not danger
-  Danger,                // estop = SET or timed out or health bad
+  HardwareFault,  // the cycle's hardware_fault input
+  PairedAndSafe,  // estop != NONE and not danger
+  Danger,         // estop = SET or timed out or health bad
   EstopTimedOut,
-  ClearAndSafe,          // estop = CLEAR and not danger
+  ClearAndSafe,  // estop = CLEAR and not danger
 };
 
 enum class StateEffect : std::uint8_t { Stay, EnterFault, LeaveEmergency, EnterEmergency };
@@ -57,8 +57,8 @@ enum class ControlGuard : std::uint8_t {
   EventAccepted,
   EventRefused,
   EventOther,
-  AgeReportDataTimeout,  // control_age >= ReportDataTimeoutCycles
-  AgeMessageInterval,    // control_age >= MessageIntervalCycles
+  AgeReportDataTimeout,    // control_age >= ReportDataTimeoutCycles
+  AgeMessageInterval,      // control_age >= MessageIntervalCycles
   EventAcceptedNoRelease,  // ev = ACCEPTED and no release sent yet this cycle
 };
 
