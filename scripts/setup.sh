@@ -11,7 +11,7 @@ log() { printf '[setup] %s\n' "$*"; }
 
 # 1. Debian packages.
 need_pkgs=()
-for pkg in cmake ninja-build g++ libeigen3-dev libgtest-dev googletest valgrind python3-venv graphviz libmodbus-dev libboost-dev nlohmann-json3-dev chromium chromium-driver ccache; do
+for pkg in cmake ninja-build g++ libeigen3-dev libgtest-dev googletest valgrind python3-venv graphviz libmodbus-dev libboost-dev nlohmann-json3-dev chromium chromium-driver ccache clang-format; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need_pkgs+=("$pkg")
 done
 if ((${#need_pkgs[@]})); then
