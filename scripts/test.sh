@@ -13,6 +13,6 @@ echo "== lint, types and C++ format (ruff, mypy, clang-format)"
 .venv/bin/mypy
 bash scripts/check_format.sh
 echo "== C++ unit tests (ctest)"
-ctest --test-dir build/cpp --output-on-failure -j"$(nproc)"
+ctest --preset dev -j"$(nproc)"  # build/cpp, output on failure (CMakePresets.json)
 echo "== Python tests (pytest, 2 workers; docs/testing.md)"
 .venv/bin/python -m pytest -q -p no:cacheprovider -n "${SAFESTATE_TEST_WORKERS:-2}" --dist loadfile "$@"
