@@ -2,7 +2,7 @@
 # Sets up (scripts/setup.sh) and runs every test: the Python lint and type check (ruff,
 # mypy, configured in pyproject.toml), the C++ format check (clang-format, .clang-format),
 # GoogleTest through ctest, then pytest (unit tests of the Python tools, model checks,
-# proofs and conformance as tests).
+# proofs and conformance as tests).  .pre-commit-config.yaml runs the first three gates.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
