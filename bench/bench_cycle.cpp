@@ -74,14 +74,20 @@ void counted_free(void* p) noexcept {
 void* operator new(std::size_t n) { return counted_alloc(n); }
 void* operator new[](std::size_t n) { return counted_alloc(n); }
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try { return counted_alloc(n); } catch (...) { return nullptr; }
+  try {
+    return counted_alloc(n);
+  } catch (...) {
+    return nullptr;
+  }
 }
 void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  try { return counted_alloc(n); } catch (...) { return nullptr; }
+  try {
+    return counted_alloc(n);
+  } catch (...) {
+    return nullptr;
+  }
 }
-void* operator new(std::size_t n, std::align_val_t a) {
-  return counted_alloc_aligned(n, static_cast<std::size_t>(a));
-}
+void* operator new(std::size_t n, std::align_val_t a) { return counted_alloc_aligned(n, static_cast<std::size_t>(a)); }
 void* operator new[](std::size_t n, std::align_val_t a) {
   return counted_alloc_aligned(n, static_cast<std::size_t>(a));
 }
@@ -243,9 +249,7 @@ class Scenario {
       return n;
     }
     switch (st.state) {
-      case StateId::EstopResetNeeded:
-        buf[static_cast<std::size_t>(n++)] = Command::reset();
-        break;
+      case StateId::EstopResetNeeded: buf[static_cast<std::size_t>(n++)] = Command::reset(); break;
       case StateId::Idle:
         if (st.selector == SelectorReading::T2 && !st.t2_confirmed) {
           buf[static_cast<std::size_t>(n++)] = Command::t2_confirm();
@@ -267,8 +271,7 @@ class Scenario {
       case StateId::ManualIdle:
         buf[static_cast<std::size_t>(n++)] =
             rng_.one_in(12) ? Command::servo_off()
-                            : Command::jog_start(rng_.range(1, 6), rng_.one_in(2) ? 1 : -1,
-                                                 rng_.range(20, 600));
+                            : Command::jog_start(rng_.range(1, 6), rng_.one_in(2) ? 1 : -1, rng_.range(20, 600));
         break;
       case StateId::ManualJogging:
         if (rng_.one_in(3)) {
@@ -370,8 +373,8 @@ class Scenario {
         // The jog axis ramps to a joint rate matching the commanded TCP speed (~0.8 m lever),
         // the others hold. In T1 a rare sensor glitch / runaway exceeds the limit.
         const std::size_t ax = static_cast<std::size_t>(st.jog_axis >= 1 && st.jog_axis <= 6 ? st.jog_axis - 1 : 0);
-        double target = static_cast<double>(st.jog_direction) *
-                        static_cast<double>(out.commanded_speed_mm_s) / 1000.0 / 0.8;
+        double target =
+            static_cast<double>(st.jog_direction) * static_cast<double>(out.commanded_speed_mm_s) / 1000.0 / 0.8;
         if (rng_.one_in(30'000)) target *= 4.0;
         for (std::size_t i = 0; i < qd_.size(); ++i) {
           const double goal = i == ax ? target : 0.0;
@@ -491,22 +494,20 @@ class Runner {
     std::printf("impl=%s cycles=%" PRIu64 " seed=%" PRIu64 "\n", name, opt_.cycles, opt_.seed);
     std::printf("heap_allocations_construction=%" PRIu64 "\n", construct_allocs_);
     std::printf("heap_allocations_after_construction=%" PRIu64 "\n", run_allocs_);
-    std::printf("commands_submitted=%" PRIu64 " queue_full=%" PRIu64 " accepted=%" PRIu64
-                " rejected=%" PRIu64 "\n",
+    std::printf("commands_submitted=%" PRIu64 " queue_full=%" PRIu64 " accepted=%" PRIu64 " rejected=%" PRIu64 "\n",
                 stats_.submitted, stats_.queue_full, stats_.accepted, stats_.rejected);
-    std::printf("state_changes=%" PRIu64 " power_cycles=%" PRIu64 "\n", stats_.transitions,
-                stats_.power_cycles);
+    std::printf("state_changes=%" PRIu64 " power_cycles=%" PRIu64 "\n", stats_.transitions, stats_.power_cycles);
     std::printf("lockouts:");
     for (const safestate::FaultCode f : safestate::kAllFaultCodes) {
       if (f == safestate::FaultCode::None) continue;
-      std::printf(" %.*s=%" PRIu64, static_cast<int>(safestate::to_string(f).size()),
-                  safestate::to_string(f).data(), stats_.lockouts[static_cast<std::size_t>(f)]);
+      std::printf(" %.*s=%" PRIu64, static_cast<int>(safestate::to_string(f).size()), safestate::to_string(f).data(),
+                  stats_.lockouts[static_cast<std::size_t>(f)]);
     }
     std::printf("\n");
     std::printf("cycles_per_state:");
     for (const StateId s : safestate::kAllStates) {
-      std::printf(" %.*s=%" PRIu64, static_cast<int>(safestate::to_string(s).size()),
-                  safestate::to_string(s).data(), stats_.state_cycles[static_cast<std::size_t>(s)]);
+      std::printf(" %.*s=%" PRIu64, static_cast<int>(safestate::to_string(s).size()), safestate::to_string(s).data(),
+                  stats_.state_cycles[static_cast<std::size_t>(s)]);
     }
     std::printf("\n");
   }
@@ -545,14 +546,12 @@ void print_status(const char* who, const StatusRecord& s, const ScanOutputs& o) 
       "  %-7s state=%.*s selector=%.*s session=%.*s stop=%.*s fault=%.*s last_reject=%.*s "
       "result=%.*s\n          mm(estop,guard,enable,sel)=(%u,%u,%u,%u) state_cycles=%u t2=%d "
       "resume_to=%.*s jog=(%d,%d,%d) queue=%zu\n",
-      who, sv(st), st.data(), sv(sel), sel.data(), sv(mode), mode.data(), sv(cat), cat.data(),
-      sv(fault), fault.data(), sv(rej), rej.data(), sv(res), res.data(), s.estop_mismatch,
-      s.safeguard_mismatch, s.enabling_mismatch, s.selector_invalid, s.state_cycles,
-      s.t2_confirmed ? 1 : 0, sv(res_to), res_to.data(), s.jog_axis, s.jog_direction,
-      s.jog_speed_mm_s, s.queue_length);
-  std::printf("          out: contactor=%d enable=%d brake=%d ramp=%d lamp=%d speed=%d axes=",
-              o.contactor_closed, o.drive_enable, o.brake_release, o.ramp_down_request,
-              o.reset_lamp, o.commanded_speed_mm_s);
+      who, sv(st), st.data(), sv(sel), sel.data(), sv(mode), mode.data(), sv(cat), cat.data(), sv(fault), fault.data(),
+      sv(rej), rej.data(), sv(res), res.data(), s.estop_mismatch, s.safeguard_mismatch, s.enabling_mismatch,
+      s.selector_invalid, s.state_cycles, s.t2_confirmed ? 1 : 0, sv(res_to), res_to.data(), s.jog_axis,
+      s.jog_direction, s.jog_speed_mm_s, s.queue_length);
+  std::printf("          out: contactor=%d enable=%d brake=%d ramp=%d lamp=%d speed=%d axes=", o.contactor_closed,
+              o.drive_enable, o.brake_release, o.ramp_down_request, o.reset_lamp, o.commanded_speed_mm_s);
   for (const auto a : o.axes) {
     const auto n = safestate::to_string(a);
     std::printf("%.*s ", sv(n), n.data());
@@ -561,19 +560,19 @@ void print_status(const char* who, const StatusRecord& s, const ScanOutputs& o) 
 }
 
 void print_inputs(const ScanInputs& in) {
-  std::printf("  inputs: estop=(%d,%d) guard=(%d,%d) enabling=(%d,%d) selector(auto,t1,t2)=(%d,%d,%d) "
-              "self_test=%d ready=%d fault=%d\n          qd=[",
-              in.estop_closed.a, in.estop_closed.b, in.safeguard_closed.a, in.safeguard_closed.b,
-              static_cast<int>(in.enabling.a), static_cast<int>(in.enabling.b), in.selector.auto_,
-              in.selector.t1, in.selector.t2, in.self_test_ok, in.servo_ready, in.drive_fault);
+  std::printf(
+      "  inputs: estop=(%d,%d) guard=(%d,%d) enabling=(%d,%d) selector(auto,t1,t2)=(%d,%d,%d) "
+      "self_test=%d ready=%d fault=%d\n          qd=[",
+      in.estop_closed.a, in.estop_closed.b, in.safeguard_closed.a, in.safeguard_closed.b,
+      static_cast<int>(in.enabling.a), static_cast<int>(in.enabling.b), in.selector.auto_, in.selector.t1,
+      in.selector.t2, in.self_test_ok, in.servo_ready, in.drive_fault);
   for (const double v : in.qd) std::printf(" %.5f", v);
   std::printf(" ]\n");
 }
 
 void print_command(const Command& c) {
   const auto k = safestate::to_string(c.kind);
-  std::printf("  submit %.*s(%d,%d,%d)\n", static_cast<int>(k.size()), k.data(), c.axis,
-              c.direction, c.speed_mm_s);
+  std::printf("  submit %.*s(%d,%d,%d)\n", static_cast<int>(k.size()), k.data(), c.axis, c.direction, c.speed_mm_s);
 }
 
 int crosscheck(const Options& opt, bool describe) {
@@ -652,8 +651,8 @@ int crosscheck(const Options& opt, bool describe) {
       std::printf("crosscheck: states never reached (compared nowhere):%s\n", missed.c_str());
       if (opt.require_every_state) return 1;
     }
-    std::printf("crosscheck: %" PRIu64 " cycles, %" PRIu64 " steps, %" PRIu64
-                " power cycles, seed %" PRIu64 ": no divergence (status record and outputs equal after every step)\n",
+    std::printf("crosscheck: %" PRIu64 " cycles, %" PRIu64 " steps, %" PRIu64 " power cycles, seed %" PRIu64
+                ": no divergence (status record and outputs equal after every step)\n",
                 opt.cycles, steps, power_cycles, opt.seed);
   }
   return 0;

@@ -101,8 +101,8 @@ std::string load_average() {
 }
 
 void print_row(const std::string& label, const CycleTimeHistogram& h) {
-  std::printf("%-34s %8.1f %8.1f %8.1f %8llu\n", label.c_str(), h.percentile_us(0.50), h.percentile_us(0.99), h.max_us(),
-              static_cast<unsigned long long>(h.count()));
+  std::printf("%-34s %8.1f %8.1f %8.1f %8llu\n", label.c_str(), h.percentile_us(0.50), h.percentile_us(0.99),
+              h.max_us(), static_cast<unsigned long long>(h.count()));
 }
 
 }  // namespace
@@ -127,10 +127,11 @@ int main(int argc, char** argv) {
     else if (a == "--control-cpu") where.control_cpu = v;
     else if (a == "--bridge-cpu") where.bridge_cpu = v;
     else {
-      std::fprintf(stderr,
-                   "bench_link: unknown argument '%s' (expected --seconds, --clients, --flood, --rounds, --control-cpu, "
-                   "--bridge-cpu)\n",
-                   argv[i]);
+      std::fprintf(
+          stderr,
+          "bench_link: unknown argument '%s' (expected --seconds, --clients, --flood, --rounds, --control-cpu, "
+          "--bridge-cpu)\n",
+          argv[i]);
       return 2;
     }
   }

@@ -52,9 +52,7 @@ OperatingMode flat_mode_of(SelectorReading sel) noexcept {
 }  // namespace
 
 SwitchCaseSsm::SwitchCaseSsm(const safestate::Config& config) noexcept
-    : config_(config),
-      kin_(config.dh),
-      config_ok_(safestate::validate(config) == safestate::ConfigError::None) {}
+    : config_(config), kin_(config.dh), config_ok_(safestate::validate(config) == safestate::ConfigError::None) {}
 
 safestate::SubmitResult SwitchCaseSsm::submit(const safestate::Command& command) noexcept {
   if (queue_.size() >= config_.command_queue_limit || !queue_.try_push(command)) {
@@ -117,10 +115,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   // ---- §2 derived inputs ---------------------------------------------------------------
   const bool estop_tripped = !in.estop_closed.a || !in.estop_closed.b;
   const bool gate_open = !in.safeguard_closed.a || !in.safeguard_closed.b;
-  const bool enable_middle =
-      in.enabling.a == EnablePosition::Middle && in.enabling.b == EnablePosition::Middle;
-  const bool enable_panic =
-      in.enabling.a == EnablePosition::Panic || in.enabling.b == EnablePosition::Panic;
+  const bool enable_middle = in.enabling.a == EnablePosition::Middle && in.enabling.b == EnablePosition::Middle;
+  const bool enable_panic = in.enabling.a == EnablePosition::Panic || in.enabling.b == EnablePosition::Panic;
   const SelectorReading sel = in.selector.reading();
 
   SpeedLevel speed = SpeedLevel::Zero;
@@ -166,8 +162,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   const bool manual = session_ == OperatingMode::T1 || session_ == OperatingMode::T2;
   // C12-C14 hold off in STOPPING CAT1, and with the stop timer expired and the arm moving (C20).
   const bool stopping_cat1 =
-      state_ == StateId::Stopping && (stopping_cat_ == StopCategory::Cat1 ||
-                                      (state_cycles_ == config_.max_stop_cycles && speed != SpeedLevel::Zero));
+      state_ == StateId::Stopping &&
+      (stopping_cat_ == StopCategory::Cat1 || (state_cycles_ == config_.max_stop_cycles && speed != SpeedLevel::Zero));
   const StateId state_at_start = state_;
   const auto queued_at_start = static_cast<std::uint32_t>(queue_.size());
 
@@ -206,12 +202,11 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     enter(StateId::Idle);  // C11
     status_.stop_category = StopCategory::Cat0;
   } else if (powered && !stopping_cat1 &&
-             (!flat_same_mode(sel, session_) ||                        // C12
-              (session_ == OperatingMode::Auto && gate_open) ||        // C13
-              (manual && !enable_middle))) {                           // C14
+             (!flat_same_mode(sel, session_) ||                  // C12
+              (session_ == OperatingMode::Auto && gate_open) ||  // C13
+              (manual && !enable_middle))) {                     // C14
     // Escalating a Cat 2 stop in progress keeps its timer and counts the cycle.
-    const std::uint32_t kept =
-        state_ == StateId::Stopping ? std::min(state_cycles_ + 1U, config_.max_stop_cycles) : 0U;
+    const std::uint32_t kept = state_ == StateId::Stopping ? std::min(state_cycles_ + 1U, config_.max_stop_cycles) : 0U;
     stop(StopCategory::Cat1);
     state_cycles_ = kept;
   } else if (state_ == StateId::ManualJogging && !in.operator_link_ok) {
@@ -249,8 +244,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
       case StateId::Idle:
         if (sel != SelectorReading::T2) t2_confirmed_ = false;  // C22
         break;
-      default:
-        break;  // C23
+      default: break;  // C23
     }
   }
 
@@ -279,21 +273,13 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
       break;
     case StateId::AutoIdle:
     case StateId::ManualIdle:
-    case StateId::Hold:
-      desired = AxisState::StandStill;
-      break;
-    case StateId::AutoRunning:
-      desired = AxisState::SynchronizedMotion;
-      break;
+    case StateId::Hold: desired = AxisState::StandStill; break;
+    case StateId::AutoRunning: desired = AxisState::SynchronizedMotion; break;
     case StateId::ManualJogging:
       desired = AxisState::StandStill;  // ContinuousMotion for the jog axis, below
       break;
-    case StateId::Stopping:
-      desired = AxisState::Stopping;
-      break;
-    default:
-      desired = AxisState::Disabled;
-      break;
+    case StateId::Stopping: desired = AxisState::Stopping; break;
+    default: desired = AxisState::Disabled; break;
   }
   const bool speed_zero = speed == SpeedLevel::Zero;
   for (std::size_t i = 0; i < safestate::kAxisCount; ++i) {
@@ -327,8 +313,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   return out_;
 }
 
-void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading sel, bool gate_open,
-                                   bool enable_middle, bool drive_fault, StateId state_at_start) noexcept {
+void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading sel, bool gate_open, bool enable_middle,
+                                   bool drive_fault, StateId state_at_start) noexcept {
   if (state_ == StateId::ErrorLockout) {
     reject(RejectReason::LockedOut);  // K01
     return;
@@ -435,8 +421,7 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
     case CommandKind::JogStart:
       if (in_auto) {
         reject(RejectReason::JogInAuto);  // K25
-      } else if (c.axis < 1 || c.axis > 6 || (c.direction != -1 && c.direction != 1) ||
-                 c.speed_mm_s <= 0) {
+      } else if (c.axis < 1 || c.axis > 6 || (c.direction != -1 && c.direction != 1) || c.speed_mm_s <= 0) {
         reject(RejectReason::InvalidArgument);  // K26
       } else if (state_ != StateId::ManualIdle) {
         reject(RejectReason::WrongState);  // K27

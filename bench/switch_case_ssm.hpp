@@ -42,8 +42,8 @@ class SwitchCaseSsm {
   void stop(safestate::StopCategory cat) noexcept;
   void reject(safestate::RejectReason r) noexcept;
   void pause() noexcept;
-  void handle_command(const safestate::Command& c, safestate::SelectorReading sel, bool gate_open,
-                      bool enable_middle, bool drive_fault, safestate::StateId state_at_start) noexcept;
+  void handle_command(const safestate::Command& c, safestate::SelectorReading sel, bool gate_open, bool enable_middle,
+                      bool drive_fault, safestate::StateId state_at_start) noexcept;
 
   safestate::Config config_;
   safestate::ArmKinematics kin_;

@@ -1,7 +1,7 @@
 # component_library(NAME ALIAS EXCLUDE regex TESTS dir)
 # The static library of one component under src/<component>/ (the Safety service, the
 # protection active object): every .cpp of the calling directory but those matching
-# EXCLUDE (demos, fuzz targets), include/ as its public headers, the project's warnings,
+# EXCLUDE (demos, fuzz targets), include/ as its public headers, SAFESTATE_WARNINGS,
 # position-independent (the Python modules link it), its GoogleTest directory TESTS and
 # its install rule (neither in a scikit-build wheel build).
 function(component_library NAME ALIAS)
@@ -13,7 +13,7 @@ function(component_library NAME ALIAS)
   target_include_directories(${NAME} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:include>)
-  target_compile_options(${NAME} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror)
+  target_compile_options(${NAME} PRIVATE ${SAFESTATE_WARNINGS})
   set_target_properties(${NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   if(SKBUILD)
     return()

@@ -106,6 +106,7 @@ int main() {
     const char* event;
     void (*apply)(Plant&, SystemStateManager&);
   };
+  // clang-format off
   static const Step script[] = {
       {1, "power on, E-stop pressed", [](Plant& p, SystemStateManager&) { p.inputs().estop_closed = {false, false}; }},
       {6, "E-stop released", [](Plant& p, SystemStateManager&) { p.inputs().estop_closed = {true, true}; }},
@@ -131,6 +132,7 @@ int main() {
       {220, "E-stop channel B stuck open", [](Plant& p, SystemStateManager&) { p.inputs().estop_closed.b = false; }},
       {280, "operator: RESET", [](Plant&, SystemStateManager& m) { (void)m.submit(Command::reset()); }},
   };
+  // clang-format on
 
   std::size_t next = 0;
   constexpr std::uint32_t kLastCycle = 290;

@@ -18,8 +18,8 @@ Eigen::Isometry3d ArmKinematics::link_transform(const DhRow& row, double theta) 
   // Rot_z(th) * Trans_z(d) * Trans_x(a) * Rot_x(alpha)
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.matrix() << ct, -st * ca, st * sa, row.a_m * ct,  //
-      st, ct * ca, -ct * sa, row.a_m * st,             //
-      0.0, sa, ca, row.d_m,                            //
+      st, ct * ca, -ct * sa, row.a_m * st,            //
+      0.0, sa, ca, row.d_m,                           //
       0.0, 0.0, 0.0, 1.0;
   return t;
 }

@@ -15,8 +15,7 @@ namespace {
 const TransitionRow& first_match(RowEvent event, const StepContext& ctx) noexcept {
   const StateId current = state_id(ctx.state);
   for (const TransitionRow& row : kTransitionTable) {
-    const bool event_matches =
-        row.event == event || (row.event == RowEvent::AnyCommand && event != RowEvent::Cycle);
+    const bool event_matches = row.event == event || (row.event == RowEvent::AnyCommand && event != RowEvent::Cycle);
     if (event_matches && row.source.contains(current) && row.guard(ctx)) {
       return row;
     }
@@ -107,8 +106,8 @@ void SystemStateManager::fire(const TransitionRow& row, StepContext& ctx, bool i
 
 ScanOutputs SystemStateManager::cycle(const ScanInputs& inputs) noexcept {
   derive_inputs(inputs);
-  StepContext ctx{state_,  derived_, config_, config_error_ == ConfigError::None, Command{}, reset_,
-                  queue_.size(), state_id(state_)};
+  StepContext ctx{state_,    derived_, config_,       config_error_ == ConfigError::None,
+                  Command{}, reset_,   queue_.size(), state_id(state_)};
 
   // §5: safety evaluation, exactly one row.
   const TransitionRow& safety_row = first_match(RowEvent::Cycle, ctx);
@@ -141,23 +140,18 @@ AxisState desired_axis_state(const MachineState& s, std::size_t axis_index) noex
       return fault_code(s) == FaultCode::DriveFault ? AxisState::ErrorStop : AxisState::Disabled;
     case StateId::AutoIdle:
     case StateId::ManualIdle:
-    case StateId::Hold:
-      return AxisState::StandStill;
-    case StateId::AutoRunning:
-      return AxisState::SynchronizedMotion;  // slaved to the path interpolator
+    case StateId::Hold: return AxisState::StandStill;
+    case StateId::AutoRunning: return AxisState::SynchronizedMotion;  // slaved to the path interpolator
     case StateId::ManualJogging: {
       const JogSetpoint j = jog(s);
-      return static_cast<std::size_t>(j.axis) == axis_index + 1 ? AxisState::ContinuousMotion
-                                                                 : AxisState::StandStill;
+      return static_cast<std::size_t>(j.axis) == axis_index + 1 ? AxisState::ContinuousMotion : AxisState::StandStill;
     }
-    case StateId::Stopping:
-      return AxisState::Stopping;
+    case StateId::Stopping: return AxisState::Stopping;
     case StateId::Boot:
     case StateId::Idle:
     case StateId::EstopActive:
     case StateId::EstopResetNeeded:
-    case StateId::Arming:
-      return AxisState::Disabled;
+    case StateId::Arming: return AxisState::Disabled;
   }
   return AxisState::Disabled;
 }

@@ -26,9 +26,7 @@ namespace guards {
 bool always(const StepContext&) noexcept { return true; }
 
 // C02: a failed platform self-test, or a Config that validate() refuses.
-bool self_test_failed_or_config_invalid(const StepContext& c) noexcept {
-  return !c.in.self_test_ok || !c.config_valid;
-}
+bool self_test_failed_or_config_invalid(const StepContext& c) noexcept { return !c.in.self_test_ok || !c.config_valid; }
 
 // C03: a counter of §3 above D.
 bool discrepancy_fault(const StepContext& c) noexcept { return c.in.discrepancy != FaultCode::None; }
@@ -78,9 +76,7 @@ bool stopped_cat2(const StepContext& c) noexcept {
 }
 
 // C20: the robot had max_stop_cycles full cycles to stop.
-bool stop_timer_expired(const StepContext& c) noexcept {
-  return state_cycles(c.state) == c.config.max_stop_cycles;
-}
+bool stop_timer_expired(const StepContext& c) noexcept { return state_cycles(c.state) == c.config.max_stop_cycles; }
 
 bool selector_not_t2(const StepContext& c) noexcept { return c.in.selector != SelectorReading::T2; }
 bool selector_invalid(const StepContext& c) noexcept { return c.in.selector == SelectorReading::Invalid; }
@@ -90,8 +86,7 @@ bool selector_auto_and_gate_open(const StepContext& c) noexcept {
 }
 
 bool selector_manual_and_enable_not_middle(const StepContext& c) noexcept {
-  return (c.in.selector == SelectorReading::T1 || c.in.selector == SelectorReading::T2) &&
-         !c.in.enable_middle;
+  return (c.in.selector == SelectorReading::T1 || c.in.selector == SelectorReading::T2) && !c.in.enable_middle;
 }
 
 bool selector_t2_and_not_confirmed(const StepContext& c) noexcept {
@@ -128,9 +123,7 @@ bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
 bool operator_link_lost(const StepContext& c) noexcept { return !c.in.operator_link_ok; }
 
 // C25: power on, no motion commanded (every axis Disabled/StandStill), measured motion.
-bool moving_at_standstill(const StepContext& c) noexcept {
-  return c.in.axes_at_rest && c.in.speed != SpeedLevel::Zero;
-}
+bool moving_at_standstill(const StepContext& c) noexcept { return c.in.axes_at_rest && c.in.speed != SpeedLevel::Zero; }
 
 // K36: the Reset was queued before the E-stop release (C07 counted it as stale).
 bool reset_submitted_before_release(const StepContext& c) noexcept { return c.reset.stale_commands > 0; }
@@ -149,15 +142,11 @@ namespace actions {
 
 void none(StepContext&) noexcept {}
 
-void lockout_self_test_failed(StepContext& c) noexcept {
-  c.state = states::ErrorLockout{FaultCode::SelfTestFailed};
-}
+void lockout_self_test_failed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::SelfTestFailed}; }
 void lockout_discrepancy(StepContext& c) noexcept { c.state = states::ErrorLockout{c.in.discrepancy}; }
 void lockout_drive_fault(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::DriveFault}; }
 void lockout_t1_overspeed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::T1Overspeed}; }
-void lockout_arming_timeout(StepContext& c) noexcept {
-  c.state = states::ErrorLockout{FaultCode::ArmingTimeout};
-}
+void lockout_arming_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::ArmingTimeout}; }
 void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
 void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::FieldbusLoss}; }
 void lockout_standstill_violation(StepContext& c) noexcept {
@@ -243,9 +232,8 @@ void resume_motion(StepContext& c) noexcept {
 // K29: the commanded speed is clamped to the T1 limit in T1 (RSM-10, INV-T1SPEED).
 void start_jog(StepContext& c) noexcept {
   const OperatingMode mode = session_mode(c.state);
-  const std::int32_t speed = mode == OperatingMode::T1
-                                 ? std::min(c.command.speed_mm_s, c.config.t1_speed_limit_mm_s)
-                                 : c.command.speed_mm_s;
+  const std::int32_t speed =
+      mode == OperatingMode::T1 ? std::min(c.command.speed_mm_s, c.config.t1_speed_limit_mm_s) : c.command.speed_mm_s;
   c.state = states::ManualJogging{mode, JogSetpoint{c.command.axis, c.command.direction, speed}};
 }
 

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "plan_replayer.hpp"
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
 #include "safestate/enum_strings.hpp"
@@ -21,7 +22,6 @@
 #include "safestate/system_state_manager.hpp"
 #include "safestate/transition_table.hpp"
 #include "safestate/transition_table_export.hpp"
-#include "plan_replayer.hpp"
 
 namespace py = pybind11;
 using namespace safestate;  // NOLINT
@@ -265,17 +265,41 @@ void observe_key(const SystemStateManager& m, std::string& k) {
   const StatusRecord s = m.status();
   const ScanOutputs o = m.outputs();
   k.clear();
-  const auto add = [&k](std::string_view v) { k.append(v.data(), v.size()); k.push_back('|'); };
-  const auto num = [&k](long long v) { k.append(std::to_string(v)); k.push_back('|'); };
-  add(to_string(s.state)); add(to_string(s.selector)); add(to_string(s.session_mode));
-  add(to_string(s.stop_category)); add(to_string(s.fault_code)); add(to_string(s.last_reject_reason));
+  const auto add = [&k](std::string_view v) {
+    k.append(v.data(), v.size());
+    k.push_back('|');
+  };
+  const auto num = [&k](long long v) {
+    k.append(std::to_string(v));
+    k.push_back('|');
+  };
+  add(to_string(s.state));
+  add(to_string(s.selector));
+  add(to_string(s.session_mode));
+  add(to_string(s.stop_category));
+  add(to_string(s.fault_code));
+  add(to_string(s.last_reject_reason));
   add(to_string(s.command_result));
-  num(s.estop_mismatch); num(s.safeguard_mismatch); num(s.enabling_mismatch); num(s.selector_invalid);
-  num(s.state_cycles); num(s.t2_confirmed ? 1 : 0); add(to_string(s.resume_to));
-  num(s.jog_axis); num(s.jog_direction); num(s.jog_speed_mm_s); num(static_cast<long long>(s.queue_length));
-  num(static_cast<long long>(s.stale_commands)); num(s.estop_tested_a ? 1 : 0); num(s.estop_tested_b ? 1 : 0);
-  num(o.contactor_closed ? 1 : 0); num(o.drive_enable ? 1 : 0); num(o.brake_release ? 1 : 0);
-  num(o.ramp_down_request ? 1 : 0); num(o.reset_lamp ? 1 : 0); num(o.commanded_speed_mm_s);
+  num(s.estop_mismatch);
+  num(s.safeguard_mismatch);
+  num(s.enabling_mismatch);
+  num(s.selector_invalid);
+  num(s.state_cycles);
+  num(s.t2_confirmed ? 1 : 0);
+  add(to_string(s.resume_to));
+  num(s.jog_axis);
+  num(s.jog_direction);
+  num(s.jog_speed_mm_s);
+  num(static_cast<long long>(s.queue_length));
+  num(static_cast<long long>(s.stale_commands));
+  num(s.estop_tested_a ? 1 : 0);
+  num(s.estop_tested_b ? 1 : 0);
+  num(o.contactor_closed ? 1 : 0);
+  num(o.drive_enable ? 1 : 0);
+  num(o.brake_release ? 1 : 0);
+  num(o.ramp_down_request ? 1 : 0);
+  num(o.reset_lamp ? 1 : 0);
+  num(o.commanded_speed_mm_s);
   for (std::size_t i = 0; i < o.axes.size(); ++i) {
     if (i > 0) k.push_back(',');
     const std::string_view a = to_string(o.axes[i]);
@@ -348,7 +372,8 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("command_queue_limit", &Config::command_queue_limit,
                      "Commands the queue holds, 1..16 (default 8).")
       .def_property(
-          "tool_offset_m", [](const Config& c) { return py::make_tuple(c.tool_offset_m[0], c.tool_offset_m[1], c.tool_offset_m[2]); },
+          "tool_offset_m",
+          [](const Config& c) { return py::make_tuple(c.tool_offset_m[0], c.tool_offset_m[1], c.tool_offset_m[2]); },
           [](Config& c, const py::sequence& v) {
             if (py::len(v) != 3) throw py::value_error("tool_offset_m is (x, y, z) in metres");
             for (std::size_t i = 0; i < 3; ++i) c.tool_offset_m[i] = v[i].cast<double>();
@@ -371,12 +396,14 @@ PYBIND11_MODULE(_core, m) {
                ", command_queue_limit=" + std::to_string(c.command_queue_limit) + ")";
       });
 
-  py::class_<SystemStateManager>(m, "Manager",
-                                 "One SystemStateManager. A new Manager is a power cycle: it starts in BOOT.",
-                                 py::module_local())
+  py::class_<SystemStateManager>(
+      m, "Manager", "One SystemStateManager. A new Manager is a power cycle: it starts in BOOT.", py::module_local())
       .def(py::init<const Config&>(), py::arg("config") = Config{})
       .def(
-          "cycle", [](SystemStateManager& self, const py::dict& inputs) { return outputs_dict(self.cycle(scan_inputs(inputs))); },
+          "cycle",
+          [](SystemStateManager& self, const py::dict& inputs) {
+            return outputs_dict(self.cycle(scan_inputs(inputs)));
+          },
           py::arg("inputs"),
           "Run one scan cycle. `inputs` keys: estop_closed_a/_b, safeguard_closed_a/_b (bool),\n"
           "enabling_a/_b ('RELEASED'|'MIDDLE'|'PANIC'), selector_auto/_t1/_t2, self_test_ok,\n"
@@ -403,8 +430,7 @@ PYBIND11_MODULE(_core, m) {
            "contactor_closed, drive_enable, brake_release, ramp_down_request, reset_lamp,\n"
            "commanded_speed_mm_s, axes.")
       .def(
-          "last_rows",
-          [](const SystemStateManager& self) { return rows_dict(self); },
+          "last_rows", [](const SystemStateManager& self) { return rows_dict(self); },
           "Rows fired by the last cycle: {'cycle': 'C17', 'command': 'K12' or None}\n"
           "(cycle is None before the first cycle).")
       .def(
@@ -425,9 +451,9 @@ PYBIND11_MODULE(_core, m) {
         py::list out;
         for (const auto& p : probes) {
           // A probe is one cycle's inputs, or a list of steps (e.g. a submit, then a cycle).
-          const std::vector<BatchStep> tail =
-              py::isinstance<py::list>(p) ? batch_steps(p.cast<py::list>())
-                                          : std::vector<BatchStep>{BatchStep(scan_inputs(p.cast<py::dict>()))};
+          const std::vector<BatchStep> tail = py::isinstance<py::list>(p)
+                                                  ? batch_steps(p.cast<py::list>())
+                                                  : std::vector<BatchStep>{BatchStep(scan_inputs(p.cast<py::dict>()))};
           auto mgr = std::make_unique<SystemStateManager>(config);  // not movable: one per probe
           for (const auto& s : steps) run_step(*mgr, s);
           for (const auto& s : tail) run_step(*mgr, s);
@@ -495,13 +521,14 @@ PYBIND11_MODULE(_core, m) {
   py::class_<ManagerPlanReplayer>(m, "PlanReplayer", py::module_local(),
                                   "conform's compact replay plan (python/safestate/conform/replay_plan.py)\n"
                                   "walked in C++: one fresh Manager per trace, no Python per step.")
-      .def(py::init([](const Config& config, const py::list& calls, std::vector<std::string> lines, const py::buffer& aux,
-                       std::vector<std::string> row_lines, const py::buffer& starts, const py::buffer& call_ids,
-                       const py::buffer& exp_ids, const py::buffer& initial_ids, const py::buffer& rows_at,
-                       const py::buffer& rows_exp) {
-             return ManagerPlanReplayer(config, calls,
-                                        safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts,
-                                                                       call_ids, exp_ids, initial_ids, rows_at, rows_exp));
+      .def(py::init([](const Config& config, const py::list& calls, std::vector<std::string> lines,
+                       const py::buffer& aux, std::vector<std::string> row_lines, const py::buffer& starts,
+                       const py::buffer& call_ids, const py::buffer& exp_ids, const py::buffer& initial_ids,
+                       const py::buffer& rows_at, const py::buffer& rows_exp) {
+             return ManagerPlanReplayer(
+                 config, calls,
+                 safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts, call_ids, exp_ids,
+                                                initial_ids, rows_at, rows_exp));
            }),
            py::arg("config"), py::arg("calls"), py::arg("lines"), py::arg("aux"), py::arg("row_lines"),
            py::arg("starts"), py::arg("call_ids"), py::arg("exp_ids"), py::arg("initial_ids"), py::arg("rows_at"),
@@ -511,9 +538,14 @@ PYBIND11_MODULE(_core, m) {
            "row_lines: expected fired rows ('C17|K12|'); the rest are array.array buffers (see the header).")
       .def("run", &ManagerPlanReplayer::run, py::arg("first"), py::arg("last"),
            "Replay traces [first, last): (trace, step in it) of the first disagreement, or (-1, -1).");
-  m.def("observe_key",
-        [](const SystemStateManager& self) { std::string k; observe_key(self, k); return k; },
-        "The canonical observable line that replay_compare compares (see there).");
+  m.def(
+      "observe_key",
+      [](const SystemStateManager& self) {
+        std::string k;
+        observe_key(self, k);
+        return k;
+      },
+      "The canonical observable line that replay_compare compares (see there).");
   m.def("transition_table", &transition_table_list,
         "The transition table, rows C01..C23 then K01..K35, as dicts: id, section, event, source,\n"
         "effective_source, guard, kind (ENTER|STAY|REJECT), targets, reason, stop_category,\n"

@@ -42,19 +42,18 @@ std::vector<T> buffer_vector(const py::buffer& b, const char* what) {
 
 /// The model side of a plan, as ints and canonical lines.
 struct PlanArrays {
-  std::vector<std::string> lines;      // expected observe lines, by id
-  std::vector<std::int8_t> aux;        // per line id: the adapter's aux of that state
-  std::vector<std::string> row_lines;  // expected fired-row lines, by id
-  std::vector<std::int64_t> starts;    // trace t is steps [starts[t], starts[t+1])
-  std::vector<std::int32_t> call_ids;  // per step: index into the binding's call table
-  std::vector<std::int32_t> exp_ids;   // per step: expected line id after the step
+  std::vector<std::string> lines;         // expected observe lines, by id
+  std::vector<std::int8_t> aux;           // per line id: the adapter's aux of that state
+  std::vector<std::string> row_lines;     // expected fired-row lines, by id
+  std::vector<std::int64_t> starts;       // trace t is steps [starts[t], starts[t+1])
+  std::vector<std::int32_t> call_ids;     // per step: index into the binding's call table
+  std::vector<std::int32_t> exp_ids;      // per step: expected line id after the step
   std::vector<std::int32_t> initial_ids;  // per trace: the line id of its initial state
-  std::vector<std::int64_t> rows_at;   // sorted step indices whose fired rows are compared
-  std::vector<std::int32_t> rows_exp;  // per rows_at entry: expected row line id
+  std::vector<std::int64_t> rows_at;      // sorted step indices whose fired rows are compared
+  std::vector<std::int32_t> rows_exp;     // per rows_at entry: expected row line id
 
   PlanArrays(std::vector<std::string> l, const py::buffer& a, std::vector<std::string> rl, const py::buffer& s,
-             const py::buffer& c, const py::buffer& e, const py::buffer& i, const py::buffer& ra,
-             const py::buffer& re)
+             const py::buffer& c, const py::buffer& e, const py::buffer& i, const py::buffer& ra, const py::buffer& re)
       : lines(std::move(l)),
         aux(buffer_vector<std::int8_t>(a, "aux")),
         row_lines(std::move(rl)),
@@ -92,7 +91,8 @@ std::pair<std::int64_t, std::int64_t> run_plan(const PlanArrays& p, const std::v
   const auto traces = static_cast<std::int64_t>(p.initial_ids.size());
   if (first < 0 || last > traces || first > last) throw py::value_error("replay plan: trace range out of bounds");
   for (const std::int32_t c : p.call_ids) {
-    if (c < 0 || static_cast<std::size_t>(c) >= calls.size()) throw py::value_error("replay plan: a call id is out of range");
+    if (c < 0 || static_cast<std::size_t>(c) >= calls.size())
+      throw py::value_error("replay plan: a call id is out of range");
   }
   std::string got;
   std::string fired;
@@ -103,7 +103,8 @@ std::pair<std::int64_t, std::int64_t> run_plan(const PlanArrays& p, const std::v
     const std::int64_t from = p.starts[static_cast<std::size_t>(first)];
     while (lo < hi) {
       const std::size_t mid = (lo + hi) / 2;
-      if (p.rows_at[mid] < from) lo = mid + 1; else hi = mid;
+      if (p.rows_at[mid] < from) lo = mid + 1;
+      else hi = mid;
     }
     next_row = lo;
   }

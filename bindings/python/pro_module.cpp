@@ -18,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "plan_replayer.hpp"
 #include "safestate/pro/diagnostics_ao.hpp"
 #include "safestate/pro/in_process_comms.hpp"
 #include "safestate/pro/protection_row.hpp"
@@ -25,7 +26,6 @@
 #include "safestate/pro/runtime_supervisor.hpp"
 #include "safestate/pro/safety_ao.hpp"
 #include "safestate/pro/thermal_plant.hpp"
-#include "plan_replayer.hpp"
 
 namespace py = pybind11;
 using namespace safestate::pro;  // NOLINT
@@ -35,11 +35,11 @@ namespace {
 py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
 
 constexpr std::array<std::string_view, 3> kResults{"OK", "PROTECTION_ENTERED", "LATCH_BLOCKED"};
-constexpr std::array<std::string_view, 6> kFaults{"NONE", "SENSOR_INVALID", "OVER_TEMP", "UNDER_VOLT", "OVER_VOLT",
-                                                  "LATCH_BLOCKED"};
+constexpr std::array<std::string_view, 6> kFaults{"NONE",       "SENSOR_INVALID", "OVER_TEMP",
+                                                  "UNDER_VOLT", "OVER_VOLT",      "LATCH_BLOCKED"};
 constexpr std::array<std::string_view, 5> kSupStates{"INIT", "RUN", "DEGRADED", "SHUTTING_DOWN", "STOPPED"};
 constexpr std::array<std::string_view, 4> kUnitStatus{"INIT", "READY", "FAILED", "STOPPED"};
-constexpr std::array<std::string_view, kUnitCount> kUnits{"timer", "dispatcher", "monitoring", "control",
+constexpr std::array<std::string_view, kUnitCount> kUnits{"timer",  "dispatcher",  "monitoring", "control",
                                                           "safety", "diagnostics", "comms"};
 constexpr std::array<std::string_view, 5> kAos{"monitoring", "control", "safety", "diagnostics", "comms"};
 
@@ -162,7 +162,8 @@ class SupervisorDouble {
     py::dict d;
     d["sup_state"] = str(kSupStates[static_cast<std::size_t>(sup_.state())]);
     py::dict status;
-    for (std::size_t u = 0; u < kUnitCount; ++u) status[str(kUnits[u])] = str(kUnitStatus[static_cast<std::size_t>(in_.status[u])]);
+    for (std::size_t u = 0; u < kUnitCount; ++u)
+      status[str(kUnits[u])] = str(kUnitStatus[static_cast<std::size_t>(in_.status[u])]);
     d["status"] = status;
     d["init_ticks"] = sup_.init_ticks();
     d["stop_step"] = sup_.stop_step();
@@ -197,7 +198,9 @@ class SupervisorPlanReplayer {
   std::pair<std::int64_t, std::int64_t> run(std::int64_t first, std::int64_t last) const {
     return safestate_bindings::run_plan(
         plan_, calls_, first, last,
-        [this] { return std::make_unique<SupervisorRun>(SupervisorRun{SupervisorDouble(init_timeout_ticks_), {}}); },
+        [this] {
+          return std::make_unique<SupervisorRun>(SupervisorRun{SupervisorDouble(init_timeout_ticks_), {}});
+        },
         [](SupervisorRun& r, const std::pair<std::string, std::string>& c, std::int8_t) {
           r.row = r.sut.tick(c.first, c.second);
           return true;
@@ -221,25 +224,31 @@ PYBIND11_MODULE(_pro, m) {
   m.attr("SAFE_FAN_COMMAND") = kSafeFanCommandPercent;
   m.attr("REGULATED_COMMAND") = kRegulatedCommand;
 
-  m.def("transition_table", [] {
-    py::list rows;
-    for (const ProtectionRowSpec& r : kProtectionRows) {
-      py::dict d;
-      d["id"] = str(r.id);
-      rows.append(d);
-    }
-    return rows;
-  }, "The rows P01..P05 of sm_protection (design §4), for the conformance audit.");
+  m.def(
+      "transition_table",
+      [] {
+        py::list rows;
+        for (const ProtectionRowSpec& r : kProtectionRows) {
+          py::dict d;
+          d["id"] = str(r.id);
+          rows.append(d);
+        }
+        return rows;
+      },
+      "The rows P01..P05 of sm_protection (design §4), for the conformance audit.");
 
-  m.def("supervisor_table", [] {
-    py::list rows;
-    for (const SupervisorRow& r : kSupervisorRows) {
-      py::dict d;
-      d["id"] = str(r.id);
-      rows.append(d);
-    }
-    return rows;
-  }, "The rows X01..T01 of the supervisor (design §7), for the conformance audit.");
+  m.def(
+      "supervisor_table",
+      [] {
+        py::list rows;
+        for (const SupervisorRow& r : kSupervisorRows) {
+          py::dict d;
+          d["id"] = str(r.id);
+          rows.append(d);
+        }
+        return rows;
+      },
+      "The rows X01..T01 of the supervisor (design §7), for the conformance audit.");
 
   py::class_<ProtectionChain>(m, "Protection", py::module_local())
       .def(py::init([](int temp_limit, int volt_min, int volt_max) {
@@ -272,11 +281,11 @@ PYBIND11_MODULE(_pro, m) {
                        std::vector<std::string> lines, const py::buffer& aux, std::vector<std::string> row_lines,
                        const py::buffer& starts, const py::buffer& call_ids, const py::buffer& exp_ids,
                        const py::buffer& initial_ids, const py::buffer& rows_at, const py::buffer& rows_exp) {
-             return SupervisorPlanReplayer(
-                 init_timeout_ticks, std::move(calls),
-                 safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts, call_ids, exp_ids,
-                                                initial_ids, rows_at, rows_exp));
-           }))
+        return SupervisorPlanReplayer(
+            init_timeout_ticks, std::move(calls),
+            safestate_bindings::PlanArrays(std::move(lines), aux, std::move(row_lines), starts, call_ids, exp_ids,
+                                           initial_ids, rows_at, rows_exp));
+      }))
       .def("run", &SupervisorPlanReplayer::run, py::arg("first"), py::arg("last"),
            "Replay traces [first, last): (trace, step in it) of the first disagreement, or (-1, -1).");
 }

@@ -7,14 +7,14 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <utility>
-#include <string_view>
 #include <vector>
 
+#include "plan_replayer.hpp"
 #include "safestate/saf/safety_service.hpp"
 #include "safestate/saf/transition_table.hpp"
-#include "plan_replayer.hpp"
 
 namespace py = pybind11;
 using namespace safestate::saf;  // NOLINT
@@ -29,9 +29,7 @@ constexpr std::uint32_t kOtherComponentId = 0x0009'0909;
 
 py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
 
-py::bytes to_bytes(const Encoded& e) {
-  return py::bytes(reinterpret_cast<const char*>(e.bytes.data()), e.size);
-}
+py::bytes to_bytes(const Encoded& e) { return py::bytes(reinterpret_cast<const char*>(e.bytes.data()), e.size); }
 
 std::string field(const py::dict& inbox, const char* key) {
   if (!inbox.contains(key)) throw py::key_error(std::string("inbox has no field '") + key + "'");
@@ -108,10 +106,19 @@ CycleResult cycle_raw(SafetyService& s, const std::vector<py::bytes>& datagrams,
 void observe_line(const SafetyService& s, std::string& k) {
   const Observable& o = s.observe();
   k.clear();
-  const auto add = [&k](std::string_view v) { k.append(v.data(), v.size()); k.push_back('|'); };
-  add(to_string(o.state)); add(to_string(o.estop)); add(std::to_string(o.estop_age));
-  add(to_string(o.health)); add(std::to_string(o.health_age)); add(to_string(o.control));
-  add(std::to_string(o.control_age)); add(to_string(o.out_request)); add(to_string(o.out_set_state));
+  const auto add = [&k](std::string_view v) {
+    k.append(v.data(), v.size());
+    k.push_back('|');
+  };
+  add(to_string(o.state));
+  add(to_string(o.estop));
+  add(std::to_string(o.estop_age));
+  add(to_string(o.health));
+  add(std::to_string(o.health_age));
+  add(to_string(o.control));
+  add(std::to_string(o.control_age));
+  add(to_string(o.out_request));
+  add(to_string(o.out_set_state));
 }
 
 /// One step of a plan: the inbox's datagrams and the hardware fault line.
@@ -139,7 +146,10 @@ class SafPlanReplayer {
 
   std::pair<std::int64_t, std::int64_t> run(std::int64_t first, std::int64_t last) const {
     return safestate_bindings::run_plan(
-        plan_, calls_, first, last, [this] { return std::make_unique<SafRun>(SafRun{SafetyService(timing_, kAuthorityCode), 0, {}}); },
+        plan_, calls_, first, last,
+        [this] {
+          return std::make_unique<SafRun>(SafRun{SafetyService(timing_, kAuthorityCode), 0, {}});
+        },
         [this](SafRun& r, const SafCall& c, std::int8_t) {
           const std::string& garbage = garbage_[r.steps % garbage_.size()];
           const std::size_t at = r.steps % (c.first.size() + 1);
@@ -175,29 +185,38 @@ PYBIND11_MODULE(_saf, m) {
   m.attr("MAX_INBOUND_PER_CYCLE") = kMaxInboundPerCycle;
   m.attr("COMPONENT_ID") = kSafetyComponentId;
 
-  m.def("encode_inbox", [](const py::dict& inbox) {
-    py::list out;
-    for (const Encoded& e : encode_inbox(inbox)) out.append(to_bytes(e));
-    return out;
-  }, py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded.");
+  m.def(
+      "encode_inbox",
+      [](const py::dict& inbox) {
+        py::list out;
+        for (const Encoded& e : encode_inbox(inbox)) out.append(to_bytes(e));
+        return out;
+      },
+      py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded.");
 
-  m.def("transition_table", [] {
-    py::list rows;
-    auto add = [&rows](std::string_view id, const char* table) {
-      py::dict d;
-      d["id"] = str(id);
-      d["table"] = table;
-      rows.append(d);
-    };
-    for (const StateRow& r : kStateRows) add(r.id, "state");
-    for (const ControlRow& r : kControlRows) add(r.id, "control");
-    return rows;
-  }, "Every row of design §6 (state) and §7 (control): [{id, table}], for the conformance audit.");
+  m.def(
+      "transition_table",
+      [] {
+        py::list rows;
+        auto add = [&rows](std::string_view id, const char* table) {
+          py::dict d;
+          d["id"] = str(id);
+          d["table"] = table;
+          rows.append(d);
+        };
+        for (const StateRow& r : kStateRows) add(r.id, "state");
+        for (const ControlRow& r : kControlRows) add(r.id, "control");
+        return rows;
+      },
+      "Every row of design §6 (state) and §7 (control): [{id, table}], for the conformance audit.");
 
-  m.def("decode_error", [](const py::bytes& b) {
-    const std::string_view v = b;
-    return str(to_string(decode(reinterpret_cast<const std::uint8_t*>(v.data()), v.size()).error));
-  }, py::arg("datagram"), "NONE for a well-formed datagram, else the reject reason.");
+  m.def(
+      "decode_error",
+      [](const py::bytes& b) {
+        const std::string_view v = b;
+        return str(to_string(decode(reinterpret_cast<const std::uint8_t*>(v.data()), v.size()).error));
+      },
+      py::arg("datagram"), "NONE for a well-formed datagram, else the reject reason.");
 
   // module_local: the wrong-variant build (conform/wrong_variant/) loads a second module
   // with the same C++ type into the same process.
@@ -223,49 +242,61 @@ PYBIND11_MODULE(_saf, m) {
            "datagram per step in turn; calls: (datagrams, hardware fault) per call id.")
       .def("run", &SafPlanReplayer::run, py::arg("first"), py::arg("last"),
            "Replay traces [first, last): (trace, step in it) of the first disagreement, or (-1, -1).");
-  m.def("observe_line", [](const SafetyService& s) { std::string k; observe_line(s, k); return k; },
-        "The canonical observe line PlanReplayer compares.");
+  m.def(
+      "observe_line",
+      [](const SafetyService& s) {
+        std::string k;
+        observe_line(s, k);
+        return k;
+      },
+      "The canonical observe line PlanReplayer compares.");
 
   py::class_<SafetyService>(m, "SafetyService", py::module_local())
       .def(py::init([](std::uint32_t estop_timeout_cycles, std::uint32_t report_data_timeout_cycles,
                        std::uint32_t message_interval_cycles, std::uint32_t check_interval_cycles,
                        std::uint8_t authority_code) {
-             if (estop_timeout_cycles == 0 || report_data_timeout_cycles == 0 ||
-                 message_interval_cycles == 0 || check_interval_cycles == 0) {
+             if (estop_timeout_cycles == 0 || report_data_timeout_cycles == 0 || message_interval_cycles == 0 ||
+                 check_interval_cycles == 0) {
                throw py::value_error("every timer must be at least 1 cycle");
              }
-             return SafetyService(Timing{estop_timeout_cycles, report_data_timeout_cycles,
-                                         message_interval_cycles, check_interval_cycles},
+             return SafetyService(Timing{estop_timeout_cycles, report_data_timeout_cycles, message_interval_cycles,
+                                         check_interval_cycles},
                                   authority_code);
            }),
-           py::arg("estop_timeout_cycles"), py::arg("report_data_timeout_cycles"),
-           py::arg("message_interval_cycles"), py::arg("check_interval_cycles") = 20,
-           py::arg("authority_code") = kAuthorityCode)
-      .def("cycle", [](SafetyService& s, const py::dict& inbox) {
-             const std::vector<Encoded> encoded = encode_inbox(inbox);
-             InboundBatch batch{};
-             for (const Encoded& e : encoded) (void)batch.push(e);
-             const py::handle hw = inbox.contains("hw_fault") ? inbox["hw_fault"] : py::handle(Py_False);
-             if (!py::isinstance<py::bool_>(hw)) throw py::type_error("inbox.hw_fault must be a bool");
-             return result_dict(s.cycle(batch, hw.cast<bool>()));
-           }, py::arg("inbox"), "One cycle with the model's inbox record (encoded per design §12).")
-      .def("cycle_raw", [](SafetyService& s, const std::vector<py::bytes>& datagrams, bool hardware_fault) {
-             return result_dict(cycle_raw(s, datagrams, hardware_fault));
-           }, py::arg("datagrams"), py::arg("hardware_fault") = false,
-           "One cycle with raw datagrams (the codec path; garbage allowed).")
-      .def("copy", [](const SafetyService& s) { return SafetyService(s); },
-           "An independent copy (the service is plain data): replay branches from one state.")
+           py::arg("estop_timeout_cycles"), py::arg("report_data_timeout_cycles"), py::arg("message_interval_cycles"),
+           py::arg("check_interval_cycles") = 20, py::arg("authority_code") = kAuthorityCode)
+      .def(
+          "cycle",
+          [](SafetyService& s, const py::dict& inbox) {
+            const std::vector<Encoded> encoded = encode_inbox(inbox);
+            InboundBatch batch{};
+            for (const Encoded& e : encoded) (void)batch.push(e);
+            const py::handle hw = inbox.contains("hw_fault") ? inbox["hw_fault"] : py::handle(Py_False);
+            if (!py::isinstance<py::bool_>(hw)) throw py::type_error("inbox.hw_fault must be a bool");
+            return result_dict(s.cycle(batch, hw.cast<bool>()));
+          },
+          py::arg("inbox"), "One cycle with the model's inbox record (encoded per design §12).")
+      .def(
+          "cycle_raw",
+          [](SafetyService& s, const std::vector<py::bytes>& datagrams, bool hardware_fault) {
+            return result_dict(cycle_raw(s, datagrams, hardware_fault));
+          },
+          py::arg("datagrams"), py::arg("hardware_fault") = false,
+          "One cycle with raw datagrams (the codec path; garbage allowed).")
+      .def(
+          "copy", [](const SafetyService& s) { return SafetyService(s); },
+          "An independent copy (the service is plain data): replay branches from one state.")
       .def("observe", &observe, "The model's variables: state, estop, estop_age, ...")
       .def("diagnostics", [](const SafetyService& s) {
-             const Diagnostics& d = s.diagnostics();
-             py::dict out;
-             out["cycles"] = d.cycles;
-             out["accepted"] = d.accepted;
-             py::dict rej;
-             for (std::size_t i = 1; i < kDecodeErrorCount; ++i) {
-               rej[str(to_string(static_cast<DecodeError>(i)))] = d.rejected[i];
-             }
-             out["rejected"] = rej;
-             return out;
-           });
+        const Diagnostics& d = s.diagnostics();
+        py::dict out;
+        out["cycles"] = d.cycles;
+        out["accepted"] = d.accepted;
+        py::dict rej;
+        for (std::size_t i = 1; i < kDecodeErrorCount; ++i) {
+          rej[str(to_string(static_cast<DecodeError>(i)))] = d.rejected[i];
+        }
+        out["rejected"] = rej;
+        return out;
+      });
 }

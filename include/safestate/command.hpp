@@ -13,9 +13,9 @@ namespace safestate {
 /// rejected there (INVALID_ARGUMENT) instead of being narrowed by the caller.
 struct Command {
   CommandKind kind{CommandKind::Reset};
-  std::int32_t axis{0};         ///< JOG_START: 1..6
-  std::int32_t direction{0};    ///< JOG_START: -1 or +1
-  std::int32_t speed_mm_s{0};   ///< JOG_START: > 0, clamped to the T1 limit in T1 (K29)
+  std::int32_t axis{0};        ///< JOG_START: 1..6
+  std::int32_t direction{0};   ///< JOG_START: -1 or +1
+  std::int32_t speed_mm_s{0};  ///< JOG_START: > 0, clamped to the T1 limit in T1 (K29)
 
   [[nodiscard]] static constexpr Command reset() noexcept { return {CommandKind::Reset, 0, 0, 0}; }
   [[nodiscard]] static constexpr Command servo_on() noexcept { return {CommandKind::ServoOn, 0, 0, 0}; }

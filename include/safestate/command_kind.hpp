@@ -25,15 +25,8 @@ enum class CommandKind : std::uint8_t {
 inline constexpr std::size_t kCommandKindCount = 9;
 
 inline constexpr std::array<CommandKind, kCommandKindCount> kAllCommandKinds{
-    CommandKind::Reset,
-    CommandKind::ServoOn,
-    CommandKind::ServoOff,
-    CommandKind::Start,
-    CommandKind::Pause,
-    CommandKind::Resume,
-    CommandKind::JogStart,
-    CommandKind::JogStop,
-    CommandKind::T2Confirm,
+    CommandKind::Reset,  CommandKind::ServoOn,  CommandKind::ServoOff, CommandKind::Start,     CommandKind::Pause,
+    CommandKind::Resume, CommandKind::JogStart, CommandKind::JogStop,  CommandKind::T2Confirm,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.

@@ -31,13 +31,10 @@ class CommandResult {
   [[nodiscard]] constexpr bool operator==(const CommandResult& o) const noexcept {
     return outcome_ == o.outcome_ && reason_ == o.reason_;
   }
-  [[nodiscard]] constexpr bool operator!=(const CommandResult& o) const noexcept {
-    return !(*this == o);
-  }
+  [[nodiscard]] constexpr bool operator!=(const CommandResult& o) const noexcept { return !(*this == o); }
 
  private:
-  constexpr CommandResult(Outcome outcome, RejectReason reason) noexcept
-      : outcome_(outcome), reason_(reason) {}
+  constexpr CommandResult(Outcome outcome, RejectReason reason) noexcept : outcome_(outcome), reason_(reason) {}
 
   Outcome outcome_{Outcome::None};
   RejectReason reason_{RejectReason::None};

@@ -20,14 +20,14 @@ inline constexpr std::size_t kMaxQueueCapacity = 16;
 inline constexpr std::uint32_t kMaxTimerCycles = 0x7FFF'FFFFU;
 
 struct Config {
-  std::uint32_t cycle_time_us{1000};          ///< scan cycle period (informative; timers count cycles)
-  std::uint32_t discrepancy_cycles{50};       ///< D: tolerated cycles of channel disagreement (§3)
-  std::uint32_t arming_timeout_cycles{500};   ///< cycles ARMING waits for servo_ready (C16)
-  std::uint32_t max_stop_cycles{1000};        ///< cycles STOPPING waits for zero speed (C20)
-  std::int32_t t1_speed_limit_mm_s{250};      ///< T1 TCP speed limit, integer mm/s (C10, K29)
-  double zero_velocity_rad_s{0.001};          ///< |qd[i]| at or below this is standstill (§2)
-  std::uint32_t command_queue_limit{8};       ///< commands the queue holds, 1..kMaxQueueCapacity
-  DhTable dh{kUr5DhTable};                    ///< arm kinematics (UR5 standard DH)
+  std::uint32_t cycle_time_us{1000};         ///< scan cycle period (informative; timers count cycles)
+  std::uint32_t discrepancy_cycles{50};      ///< D: tolerated cycles of channel disagreement (§3)
+  std::uint32_t arming_timeout_cycles{500};  ///< cycles ARMING waits for servo_ready (C16)
+  std::uint32_t max_stop_cycles{1000};       ///< cycles STOPPING waits for zero speed (C20)
+  std::int32_t t1_speed_limit_mm_s{250};     ///< T1 TCP speed limit, integer mm/s (C10, K29)
+  double zero_velocity_rad_s{0.001};         ///< |qd[i]| at or below this is standstill (§2)
+  std::uint32_t command_queue_limit{8};      ///< commands the queue holds, 1..kMaxQueueCapacity
+  DhTable dh{kUr5DhTable};                   ///< arm kinematics (UR5 standard DH)
   /// Tool centre point in the flange (last DH) frame, metres: the T1 speed (RSM-10) is
   /// measured at the tool tip, not at the flange. Zero = a tool-less flange.
   std::array<double, 3> tool_offset_m{0.0, 0.0, 0.0};

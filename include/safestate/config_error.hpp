@@ -11,22 +11,28 @@ namespace safestate {
 
 enum class ConfigError : std::uint8_t {
   None,
-  CycleTimeZero,            ///< cycle_time_us must be > 0
-  DiscrepancyTooLarge,      ///< discrepancy_cycles above kMaxTimerCycles
-  ArmingTimeoutTooLarge,    ///< arming_timeout_cycles above kMaxTimerCycles
-  MaxStopTooLarge,          ///< max_stop_cycles above kMaxTimerCycles
-  T1LimitNotPositive,       ///< t1_speed_limit_mm_s must be > 0
-  ZeroVelocityInvalid,      ///< zero_velocity_rad_s must be finite and >= 0
-  QueueLimitOutOfRange,     ///< command_queue_limit must be in 1..kMaxQueueCapacity
-  DhTableNotFinite,         ///< every DH parameter must be a finite number
+  CycleTimeZero,          ///< cycle_time_us must be > 0
+  DiscrepancyTooLarge,    ///< discrepancy_cycles above kMaxTimerCycles
+  ArmingTimeoutTooLarge,  ///< arming_timeout_cycles above kMaxTimerCycles
+  MaxStopTooLarge,        ///< max_stop_cycles above kMaxTimerCycles
+  T1LimitNotPositive,     ///< t1_speed_limit_mm_s must be > 0
+  ZeroVelocityInvalid,    ///< zero_velocity_rad_s must be finite and >= 0
+  QueueLimitOutOfRange,   ///< command_queue_limit must be in 1..kMaxQueueCapacity
+  DhTableNotFinite,       ///< every DH parameter must be a finite number
 };
 
 inline constexpr std::size_t kConfigErrorCount = 9;
 
 inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
-    ConfigError::None,          ConfigError::CycleTimeZero,        ConfigError::DiscrepancyTooLarge,
-    ConfigError::ArmingTimeoutTooLarge, ConfigError::MaxStopTooLarge, ConfigError::T1LimitNotPositive,
-    ConfigError::ZeroVelocityInvalid, ConfigError::QueueLimitOutOfRange, ConfigError::DhTableNotFinite,
+    ConfigError::None,
+    ConfigError::CycleTimeZero,
+    ConfigError::DiscrepancyTooLarge,
+    ConfigError::ArmingTimeoutTooLarge,
+    ConfigError::MaxStopTooLarge,
+    ConfigError::T1LimitNotPositive,
+    ConfigError::ZeroVelocityInvalid,
+    ConfigError::QueueLimitOutOfRange,
+    ConfigError::DhTableNotFinite,
 };
 
 [[nodiscard]] constexpr std::string_view to_string(ConfigError e) noexcept {

@@ -10,18 +10,18 @@
 namespace safestate {
 
 struct DerivedInputs {
-  bool estop_tripped{true};    ///< either E-stop channel open (1oo2)
-  bool gate_open{true};        ///< either safeguard channel open
-  bool enable_middle{false};   ///< both enabling channels MIDDLE
-  bool enable_panic{false};    ///< either enabling channel PANIC
+  bool estop_tripped{true};   ///< either E-stop channel open (1oo2)
+  bool gate_open{true};       ///< either safeguard channel open
+  bool enable_middle{false};  ///< both enabling channels MIDDLE
+  bool enable_panic{false};   ///< either enabling channel PANIC
   SelectorReading selector{SelectorReading::Invalid};
   SpeedLevel speed{SpeedLevel::Zero};
   bool self_test_ok{false};
   bool servo_ready{false};
   bool drive_fault{false};
-  bool fieldbus_ok{false};     ///< C24: FALSE = fieldbus / cycle watchdog lost
+  bool fieldbus_ok{false};       ///< C24: FALSE = fieldbus / cycle watchdog lost
   bool operator_link_ok{false};  ///< C26: FALSE = the operator link's heartbeat expired
-  bool axes_at_rest{false};    ///< C25: every axis Disabled or StandStill at the cycle start
+  bool axes_at_rest{false};      ///< C25: every axis Disabled or StandStill at the cycle start
   /// First discrepancy fault in §3 order (E-stop, safeguard, enabling, selector), else None.
   FaultCode discrepancy{FaultCode::None};
 };

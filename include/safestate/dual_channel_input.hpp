@@ -22,9 +22,7 @@ struct ChannelTraits<bool> {
 /// Enabling device: only MIDDLE permits motion; RELEASED and PANIC are demands.
 template <>
 struct ChannelTraits<EnablePosition> {
-  [[nodiscard]] static constexpr bool healthy(EnablePosition v) noexcept {
-    return v == EnablePosition::Middle;
-  }
+  [[nodiscard]] static constexpr bool healthy(EnablePosition v) noexcept { return v == EnablePosition::Middle; }
 };
 
 /// Monitors one dual-channel input. Every cycle, in every state:
@@ -62,9 +60,7 @@ class DualChannelInput {
   /// Consecutive cycles the channels have disagreed, saturated at D + 1.
   [[nodiscard]] constexpr std::uint32_t mismatch_cycles() const noexcept { return mismatch_; }
   /// The channels disagreed for longer than the discrepancy time.
-  [[nodiscard]] constexpr bool discrepancy_fault() const noexcept {
-    return mismatch_ > discrepancy_cycles_;
-  }
+  [[nodiscard]] constexpr bool discrepancy_fault() const noexcept { return mismatch_ > discrepancy_cycles_; }
   [[nodiscard]] constexpr const ChannelPair<T>& channels() const noexcept { return channels_; }
   [[nodiscard]] constexpr std::uint32_t discrepancy_cycles() const noexcept { return discrepancy_cycles_; }
 

@@ -12,8 +12,7 @@ namespace safestate {
 /// Inverse of `to_string` for an enum whose every value is listed in `all`.
 /// Used by the Python binding and the tests; never on the control path.
 template <typename E, std::size_t N>
-[[nodiscard]] constexpr std::optional<E> enum_from_string(std::string_view text,
-                                                          const std::array<E, N>& all) noexcept {
+[[nodiscard]] constexpr std::optional<E> enum_from_string(std::string_view text, const std::array<E, N>& all) noexcept {
   for (const E value : all) {
     if (to_string(value) == text) {
       return value;

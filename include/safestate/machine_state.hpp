@@ -57,26 +57,23 @@ struct Hold {
 }  // namespace states
 
 /// Alternative order = StateId order (checked below), so index() is the StateId.
-using MachineState =
-    std::variant<states::Boot, states::ErrorLockout, states::EstopActive, states::EstopResetNeeded,
-                 states::Idle, states::Arming, states::AutoIdle, states::AutoRunning,
-                 states::ManualIdle, states::ManualJogging, states::Stopping, states::Hold>;
+using MachineState = std::variant<states::Boot, states::ErrorLockout, states::EstopActive, states::EstopResetNeeded,
+                                  states::Idle, states::Arming, states::AutoIdle, states::AutoRunning,
+                                  states::ManualIdle, states::ManualJogging, states::Stopping, states::Hold>;
 
 static_assert(std::variant_size_v<MachineState> == kStateCount, "one alternative per leaf state");
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(StateId::Hold), MachineState>,
-                             states::Hold>,
-              "variant alternatives must follow the StateId order");
+static_assert(
+    std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(StateId::Hold), MachineState>, states::Hold>,
+    "variant alternatives must follow the StateId order");
 static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(StateId::Stopping), MachineState>,
                              states::Stopping>,
               "variant alternatives must follow the StateId order");
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(StateId::Boot), MachineState>,
-                             states::Boot>,
-              "variant alternatives must follow the StateId order");
+static_assert(
+    std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(StateId::Boot), MachineState>, states::Boot>,
+    "variant alternatives must follow the StateId order");
 static_assert(std::is_trivially_copyable_v<MachineState>, "no heap, no destructor work");
 
-[[nodiscard]] constexpr StateId state_id(const MachineState& s) noexcept {
-  return static_cast<StateId>(s.index());
-}
+[[nodiscard]] constexpr StateId state_id(const MachineState& s) noexcept { return static_cast<StateId>(s.index()); }
 
 /// §4 data as the status record reports it (the "otherwise" value where not meaningful).
 [[nodiscard]] OperatingMode session_mode(const MachineState& s) noexcept;

@@ -50,9 +50,8 @@ enum class AxisState : std::uint8_t {
 inline constexpr std::size_t kAxisStateCount = 8;
 
 inline constexpr std::array<AxisState, kAxisStateCount> kAllAxisStates{
-    AxisState::Disabled,         AxisState::StandStill,         AxisState::Homing,
-    AxisState::DiscreteMotion,   AxisState::ContinuousMotion,   AxisState::SynchronizedMotion,
-    AxisState::Stopping,         AxisState::ErrorStop,
+    AxisState::Disabled,         AxisState::StandStill,         AxisState::Homing,   AxisState::DiscreteMotion,
+    AxisState::ContinuousMotion, AxisState::SynchronizedMotion, AxisState::Stopping, AxisState::ErrorStop,
 };
 
 [[nodiscard]] constexpr std::string_view to_string(AxisState s) noexcept {
@@ -89,10 +88,9 @@ enum class AxisEvent : std::uint8_t {
 inline constexpr std::size_t kAxisEventCount = 13;
 
 inline constexpr std::array<AxisEvent, kAxisEventCount> kAllAxisEvents{
-    AxisEvent::PowerOn,  AxisEvent::PowerOff,     AxisEvent::Home,   AxisEvent::MoveAbsolute,
-    AxisEvent::MoveRelative, AxisEvent::Halt,     AxisEvent::MoveVelocity, AxisEvent::GearIn,
-    AxisEvent::CamIn,    AxisEvent::Stop,         AxisEvent::Done,   AxisEvent::AxisError,
-    AxisEvent::Reset,
+    AxisEvent::PowerOn, AxisEvent::PowerOff,     AxisEvent::Home,   AxisEvent::MoveAbsolute, AxisEvent::MoveRelative,
+    AxisEvent::Halt,    AxisEvent::MoveVelocity, AxisEvent::GearIn, AxisEvent::CamIn,        AxisEvent::Stop,
+    AxisEvent::Done,    AxisEvent::AxisError,    AxisEvent::Reset,
 };
 
 [[nodiscard]] constexpr std::string_view to_string(AxisEvent e) noexcept {
@@ -117,13 +115,13 @@ inline constexpr std::array<AxisEvent, kAxisEventCount> kAllAxisEvents{
 /// Why a request was rejected (None = accepted).
 enum class AxisReject : std::uint8_t {
   None,
-  AxisDisabled,      ///< motion / MC_Home / MC_Stop / Done while Disabled
-  AxisInErrorStop,   ///< anything but MC_Reset, MC_Power and errors while in ErrorStop
-  AxisStopping,      ///< motion / MC_Home while Stopping (MC_Stop not yet released)
-  HomingActive,      ///< motion / MC_Home while Homing
-  NotStandStill,     ///< MC_Home outside StandStill
-  NothingToComplete, ///< Done in a state without a finishing motion
-  NoErrorToReset,    ///< MC_Reset outside ErrorStop
+  AxisDisabled,       ///< motion / MC_Home / MC_Stop / Done while Disabled
+  AxisInErrorStop,    ///< anything but MC_Reset, MC_Power and errors while in ErrorStop
+  AxisStopping,       ///< motion / MC_Home while Stopping (MC_Stop not yet released)
+  HomingActive,       ///< motion / MC_Home while Homing
+  NotStandStill,      ///< MC_Home outside StandStill
+  NothingToComplete,  ///< Done in a state without a finishing motion
+  NoErrorToReset,     ///< MC_Reset outside ErrorStop
 };
 
 [[nodiscard]] constexpr std::string_view to_string(AxisReject r) noexcept {
@@ -160,8 +158,7 @@ class PlcopenAxis {
 
   /// The transition `event` causes in `current`; `powered` is MC_Power.Status (it matters
   /// only for MC_Reset in ErrorStop). Rejected requests return the unchanged state.
-  [[nodiscard]] static constexpr AxisTransition transition(AxisState current, AxisEvent event,
-                                                           bool powered) noexcept {
+  [[nodiscard]] static constexpr AxisTransition transition(AxisState current, AxisEvent event, bool powered) noexcept {
     using S = AxisState;
     using E = AxisEvent;
     using R = AxisReject;
@@ -184,10 +181,8 @@ class PlcopenAxis {
     }
 
     switch (current) {
-      case S::ErrorStop:
-        return no(R::AxisInErrorStop);
-      case S::Disabled:
-        return no(R::AxisDisabled);
+      case S::ErrorStop: return no(R::AxisInErrorStop);
+      case S::Disabled: return no(R::AxisDisabled);
       case S::Stopping:
         if (event == E::Stop) return ok(S::Stopping);
         if (event == E::Done) return ok(S::StandStill);
@@ -202,23 +197,16 @@ class PlcopenAxis {
       case S::ContinuousMotion:
       case S::SynchronizedMotion:
         switch (event) {
-          case E::Home:
-            return current == S::StandStill ? ok(S::Homing) : no(R::NotStandStill);
+          case E::Home: return current == S::StandStill ? ok(S::Homing) : no(R::NotStandStill);
           case E::MoveAbsolute:
           case E::MoveRelative:
-          case E::Halt:
-            return ok(S::DiscreteMotion);
-          case E::MoveVelocity:
-            return ok(S::ContinuousMotion);
+          case E::Halt: return ok(S::DiscreteMotion);
+          case E::MoveVelocity: return ok(S::ContinuousMotion);
           case E::GearIn:
-          case E::CamIn:
-            return ok(S::SynchronizedMotion);
-          case E::Stop:
-            return ok(S::Stopping);
-          case E::Done:
-            return current == S::DiscreteMotion ? ok(S::StandStill) : no(R::NothingToComplete);
-          default:
-            break;
+          case E::CamIn: return ok(S::SynchronizedMotion);
+          case E::Stop: return ok(S::Stopping);
+          case E::Done: return current == S::DiscreteMotion ? ok(S::StandStill) : no(R::NothingToComplete);
+          default: break;
         }
         break;
     }
@@ -262,6 +250,7 @@ class PlcopenAxis {
   /// One step of the §8 table from `current` toward `desired`; `speed_zero` = the cycle's
   /// speed level is ZERO. The manager never desires Homing or DiscreteMotion; for those
   /// (inputs outside the table) an axis that is enabled and not stopping stays where it is.
+  // clang-format off
   [[nodiscard]] static constexpr AxisState step_toward(AxisState current, AxisState desired,
                                                        bool speed_zero) noexcept {
     using S = AxisState;
@@ -288,6 +277,7 @@ class PlcopenAxis {
     }
     return current;                                              // Homing / DiscreteMotion desired
   }
+  // clang-format on
 
   /// Applies step_toward() to this axis (keeps MC_Power.Status in step).
   void track(AxisState desired, bool speed_zero) noexcept;

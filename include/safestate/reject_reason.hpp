@@ -30,20 +30,11 @@ enum class RejectReason : std::uint8_t {
 inline constexpr std::size_t kRejectReasonCount = 14;
 
 inline constexpr std::array<RejectReason, kRejectReasonCount> kAllRejectReasons{
-    RejectReason::None,
-    RejectReason::LockedOut,
-    RejectReason::EstopPressed,
-    RejectReason::WrongState,
-    RejectReason::DriveFault,
-    RejectReason::SelectorInvalid,
-    RejectReason::SafeguardOpen,
-    RejectReason::EnableNotMiddle,
-    RejectReason::T2NotConfirmed,
-    RejectReason::WrongMode,
-    RejectReason::JogInAuto,
-    RejectReason::InvalidArgument,
-    RejectReason::QueueFull,
-    RejectReason::ChannelTestPending,
+    RejectReason::None,          RejectReason::LockedOut,          RejectReason::EstopPressed,
+    RejectReason::WrongState,    RejectReason::DriveFault,         RejectReason::SelectorInvalid,
+    RejectReason::SafeguardOpen, RejectReason::EnableNotMiddle,    RejectReason::T2NotConfirmed,
+    RejectReason::WrongMode,     RejectReason::JogInAuto,          RejectReason::InvalidArgument,
+    RejectReason::QueueFull,     RejectReason::ChannelTestPending,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.

@@ -13,17 +13,17 @@ namespace safestate {
 /// safe, tripped reading: E-stop pressed, gate open, enabling released, selector invalid,
 /// self-test failed, drives not ready, robot at rest. A broken wire reads as a demand.
 struct ScanInputs {
-  ChannelPair<bool> estop_closed;             ///< NC contact closed = released, healthy
-  ChannelPair<bool> safeguard_closed;         ///< gate locked / light curtain clear
-  ChannelPair<EnablePosition> enabling;       ///< three-position enabling device
-  SelectorContacts selector;                  ///< AUTO / T1 / T2 contacts
-  bool self_test_ok{false};                   ///< platform self-test passed (read in BOOT)
-  bool servo_ready{false};                    ///< every drive reports ready
-  bool drive_fault{false};                    ///< any drive reports a fault
-  bool fieldbus_ok{false};                    ///< fieldbus (EtherCAT) and cycle watchdog healthy (C24)
-  bool operator_link_ok{false};               ///< operator link heartbeat within its period (C26)
-  JointVector q{};                            ///< joint positions, rad
-  JointVector qd{};                           ///< joint velocities, rad/s
+  ChannelPair<bool> estop_closed;        ///< NC contact closed = released, healthy
+  ChannelPair<bool> safeguard_closed;    ///< gate locked / light curtain clear
+  ChannelPair<EnablePosition> enabling;  ///< three-position enabling device
+  SelectorContacts selector;             ///< AUTO / T1 / T2 contacts
+  bool self_test_ok{false};              ///< platform self-test passed (read in BOOT)
+  bool servo_ready{false};               ///< every drive reports ready
+  bool drive_fault{false};               ///< any drive reports a fault
+  bool fieldbus_ok{false};               ///< fieldbus (EtherCAT) and cycle watchdog healthy (C24)
+  bool operator_link_ok{false};          ///< operator link heartbeat within its period (C26)
+  JointVector q{};                       ///< joint positions, rad
+  JointVector qd{};                      ///< joint velocities, rad/s
 };
 
 }  // namespace safestate

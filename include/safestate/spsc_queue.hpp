@@ -28,8 +28,7 @@ class SpscQueue {
   static_assert(Capacity >= 2, "SpscQueue capacity must be at least 2");
   static_assert((Capacity & (Capacity - 1)) == 0, "SpscQueue capacity must be a power of two");
   static_assert(std::is_nothrow_copy_assignable_v<T>, "T must be nothrow copy-assignable");
-  static_assert(std::is_nothrow_default_constructible_v<T>,
-                "T must be nothrow default-constructible");
+  static_assert(std::is_nothrow_default_constructible_v<T>, "T must be nothrow default-constructible");
   static_assert(std::atomic<std::size_t>::is_always_lock_free, "size_t atomics must be lock-free");
 
  public:

@@ -61,10 +61,8 @@ inline constexpr std::array<StateId, kStateCount> kAllStates{
     case StateId::ManualIdle:
     case StateId::ManualJogging:
     case StateId::Stopping:
-    case StateId::Hold:
-      return true;
-    default:
-      return false;
+    case StateId::Hold: return true;
+    default: return false;
   }
 }
 
@@ -75,8 +73,7 @@ inline constexpr std::array<StateId, kStateCount> kAllStates{
 
 /// Sub-states of the OPERATIONAL superstate.
 [[nodiscard]] constexpr bool is_operational(StateId s) noexcept {
-  return s == StateId::AutoIdle || s == StateId::AutoRunning || s == StateId::ManualIdle ||
-         s == StateId::ManualJogging;
+  return s == StateId::AutoIdle || s == StateId::AutoRunning || s == StateId::ManualIdle || s == StateId::ManualJogging;
 }
 
 }  // namespace safestate

@@ -21,10 +21,10 @@ struct StatusRecord {
   StateId state{StateId::Boot};
   SelectorReading selector{SelectorReading::Invalid};  ///< reading of the last cycle
   OperatingMode session_mode{OperatingMode::None};
-  StopCategory stop_category{StopCategory::None};      ///< category of the most recent stop row
+  StopCategory stop_category{StopCategory::None};  ///< category of the most recent stop row
   FaultCode fault_code{FaultCode::None};
   RejectReason last_reject_reason{RejectReason::None};
-  CommandResult command_result{};                      ///< outcome of the last cycle's command
+  CommandResult command_result{};  ///< outcome of the last cycle's command
   // Diagnostics.
   std::uint32_t estop_mismatch{0};
   std::uint32_t safeguard_mismatch{0};
@@ -47,11 +47,10 @@ struct StatusRecord {
            last_reject_reason == o.last_reject_reason && command_result == o.command_result &&
            estop_mismatch == o.estop_mismatch && safeguard_mismatch == o.safeguard_mismatch &&
            enabling_mismatch == o.enabling_mismatch && selector_invalid == o.selector_invalid &&
-           state_cycles == o.state_cycles && t2_confirmed == o.t2_confirmed &&
-           resume_to == o.resume_to && jog_axis == o.jog_axis &&
-           jog_direction == o.jog_direction && jog_speed_mm_s == o.jog_speed_mm_s &&
-           queue_length == o.queue_length && stale_commands == o.stale_commands &&
-           estop_tested_a == o.estop_tested_a && estop_tested_b == o.estop_tested_b;
+           state_cycles == o.state_cycles && t2_confirmed == o.t2_confirmed && resume_to == o.resume_to &&
+           jog_axis == o.jog_axis && jog_direction == o.jog_direction && jog_speed_mm_s == o.jog_speed_mm_s &&
+           queue_length == o.queue_length && stale_commands == o.stale_commands && estop_tested_a == o.estop_tested_a &&
+           estop_tested_b == o.estop_tested_b;
   }
   [[nodiscard]] bool operator!=(const StatusRecord& o) const noexcept { return !(*this == o); }
 };

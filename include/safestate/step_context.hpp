@@ -19,7 +19,7 @@ struct StepContext {
   const DerivedInputs& in;
   const Config& config;
   bool config_valid;
-  Command command;  ///< the popped command (§6 rows only)
+  Command command;              ///< the popped command (§6 rows only)
   ResetInterlock& reset;        ///< K36/K37 memory; C07 and K05 update it
   std::size_t queued_commands;  ///< queue length before this cycle's pop (C07)
   StateId cycle_start_state;    ///< the state before §5 (K38)

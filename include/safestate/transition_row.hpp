@@ -94,14 +94,14 @@ using GuardFn = bool (*)(const StepContext&) noexcept;
 using ActionFn = void (*)(StepContext&) noexcept;
 
 struct TransitionRow {
-  std::string_view id;            ///< "C01".."C23", "K01".."K35"
+  std::string_view id;  ///< "C01".."C23", "K01".."K35"
   RowEvent event;
-  StateSet source;                ///< the row applies only in these states
-  GuardFn guard;                  ///< and only when this holds
+  StateSet source;  ///< the row applies only in these states
+  GuardFn guard;    ///< and only when this holds
   std::string_view guard_name;
   TargetKind kind;
-  StateSet targets;               ///< possible resulting states (Enter rows); empty otherwise
-  RejectReason reason;            ///< Reject rows only
+  StateSet targets;     ///< possible resulting states (Enter rows); empty otherwise
+  RejectReason reason;  ///< Reject rows only
   StopUpdate stop;
   ActionFn action;
   std::string_view action_name;

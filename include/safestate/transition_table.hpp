@@ -114,18 +114,25 @@ struct Effect {
   return {TargetKind::Reject, StateSet{}, reason, &actions::none, "none"};
 }
 
-[[nodiscard]] constexpr TransitionRow row(std::string_view id, RowEvent event, StateSet source,
-                                          GuardFn guard, std::string_view guard_name, Effect effect,
-                                          StopUpdate stop, std::string_view requirements) noexcept {
-  return {id,     event,          source,         guard,          guard_name,
-          effect.kind, effect.targets, effect.reason, stop, effect.action,
-          effect.action_name, requirements};
+[[nodiscard]] constexpr TransitionRow row(std::string_view id, RowEvent event, StateSet source, GuardFn guard,
+                                          std::string_view guard_name, Effect effect, StopUpdate stop,
+                                          std::string_view requirements) noexcept {
+  return {id,
+          event,
+          source,
+          guard,
+          guard_name,
+          effect.kind,
+          effect.targets,
+          effect.reason,
+          stop,
+          effect.action,
+          effect.action_name,
+          requirements};
 }
 
 [[nodiscard]] constexpr StateSet any() noexcept { return StateSet::all(); }
-[[nodiscard]] constexpr StateSet any_but(std::initializer_list<StateId> s) noexcept {
-  return StateSet::all_except(s);
-}
+[[nodiscard]] constexpr StateSet any_but(std::initializer_list<StateId> s) noexcept { return StateSet::all_except(s); }
 [[nodiscard]] constexpr StateSet powered() noexcept { return StateSet::powered(); }
 
 // Name and address of a guard/action in one go, so the exported name cannot drift.
@@ -221,8 +228,7 @@ inline constexpr std::size_t kCommandRowCount = 38;  // K01..K38
 namespace table_check {
 
 [[nodiscard]] constexpr bool id_is(std::string_view id, char prefix, std::size_t number) noexcept {
-  return id.size() == 3 && id[0] == prefix &&
-         id[1] == static_cast<char>('0' + number / 10) &&
+  return id.size() == 3 && id[0] == prefix && id[1] == static_cast<char>('0' + number / 10) &&
          id[2] == static_cast<char>('0' + number % 10);
 }
 
@@ -289,9 +295,9 @@ namespace table_check {
 [[nodiscard]] constexpr bool total() noexcept {
   const TransitionRow& last = kTransitionTable[kCycleRowCount - 1];
   if (last.source != StateSet::all() || last.guard_name != "always") return false;
-  constexpr std::array<RowEvent, 9> kCommandEvents{RowEvent::Reset,    RowEvent::ServoOn,  RowEvent::ServoOff,
-                                                   RowEvent::Start,    RowEvent::Pause,    RowEvent::Resume,
-                                                   RowEvent::JogStart, RowEvent::JogStop,  RowEvent::T2Confirm};
+  constexpr std::array<RowEvent, 9> kCommandEvents{RowEvent::Reset,    RowEvent::ServoOn, RowEvent::ServoOff,
+                                                   RowEvent::Start,    RowEvent::Pause,   RowEvent::Resume,
+                                                   RowEvent::JogStart, RowEvent::JogStop, RowEvent::T2Confirm};
   for (const RowEvent e : kCommandEvents) {
     bool has_catch_all = false;
     for (const TransitionRow& r : kTransitionTable) {
@@ -320,8 +326,8 @@ static_assert(table_check::total(), "the cycle and every command must always fir
   std::uint16_t bits = r.source.bits();
   for (std::size_t i = 0; i < index; ++i) {
     const TransitionRow& earlier = kTransitionTable[i];
-    const bool same_event = earlier.event == r.event ||
-                            (earlier.event == RowEvent::AnyCommand && r.event != RowEvent::Cycle);
+    const bool same_event =
+        earlier.event == r.event || (earlier.event == RowEvent::AnyCommand && r.event != RowEvent::Cycle);
     if (same_event && earlier.guard_name == "always") {
       bits = static_cast<std::uint16_t>(bits & ~earlier.source.bits());
     }

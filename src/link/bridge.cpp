@@ -102,7 +102,8 @@ json status_json(const CellStatus& c) {
   for (std::size_t i = 0; i < c.recent.size(); ++i) {
     const CellStatus::Transition& t = c.recent[(c.recent_next + i) % c.recent.size()];
     if (t.row < 0) continue;
-    recent.push_back({{"cycle", t.cycle}, {"row", row_id(t.row)}, {"from", to_string(t.from)}, {"to", to_string(t.to)}});
+    recent.push_back(
+        {{"cycle", t.cycle}, {"row", row_id(t.row)}, {"from", to_string(t.from)}, {"to", to_string(t.to)}});
   }
   return json{
       {"cycle", c.cycle},
@@ -160,8 +161,7 @@ std::optional<std::int32_t> int32_field(const json& j, const char* key) {
 class WsSession;
 
 struct Bridge::Impl {
-  Impl(ControlLoop& l, BridgeOptions o)
-      : loop(l), opts(std::move(o)), acceptor(ioc), poll(ioc) {
+  Impl(ControlLoop& l, BridgeOptions o) : loop(l), opts(std::move(o)), acceptor(ioc), poll(ioc) {
     const tcp::endpoint ep(net::ip::make_address("127.0.0.1"), opts.port);
     acceptor.open(ep.protocol());
     acceptor.set_option(net::socket_base::reuse_address(true));
@@ -214,14 +214,15 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       if (ec) return self->closed();
       self->open_ = true;
       self->send(frame([&] {
-        json j = message("hello", nullptr);
-        j["client_id"] = self->id_;
-        j["role"] = "observer";
-        j["heartbeat_period_ms"] = kHeartbeatPeriodCycles;  // 1 ms cycles
-        j["control_lease_ms"] = self->bridge_.opts.control_lease.count();
-        j["max_frame_bytes"] = self->bridge_.opts.max_frame_bytes;
-        return j;
-      }()), false);
+                   json j = message("hello", nullptr);
+                   j["client_id"] = self->id_;
+                   j["role"] = "observer";
+                   j["heartbeat_period_ms"] = kHeartbeatPeriodCycles;  // 1 ms cycles
+                   j["control_lease_ms"] = self->bridge_.opts.control_lease.count();
+                   j["max_frame_bytes"] = self->bridge_.opts.max_frame_bytes;
+                   return j;
+                 }()),
+                 false);
       self->read();
     });
   }
@@ -361,8 +362,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
           return self->reply(http::status::service_unavailable, "text/plain", "too many clients\n");
         }
         beast::get_lowest_layer(self->stream_).expires_never();
-        auto ws = std::make_shared<WsSession>(self->stream_.release_socket(), self->bridge_,
-                                              self->bridge_.next_client_id++);
+        auto ws =
+            std::make_shared<WsSession>(self->stream_.release_socket(), self->bridge_, self->bridge_.next_client_id++);
         self->bridge_.sessions.insert(ws);
         self->bridge_.counters.clients.store(self->bridge_.sessions.size());
         return ws->start(std::move(self->req_));
@@ -380,9 +381,10 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     if (target == "/") target = "/index.html";
     // One file name, no directories: nothing outside the www folder can be named.
     const std::string name = target.substr(1);
-    const bool plain = !name.empty() && name.find_first_not_of(
-        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") == std::string::npos &&
-        name[0] != '.';
+    const bool plain = !name.empty() &&
+                       name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") ==
+                           std::string::npos &&
+                       name[0] != '.';
     const std::filesystem::path file = bridge_.opts.www / name;
     std::ifstream in(file, std::ios::binary);
     if (bridge_.opts.www.empty() || !plain || !in) {
@@ -539,11 +541,12 @@ void Bridge::Impl::handle(const std::shared_ptr<WsSession>& s, const std::string
   if (controller == s.get() && s->backlogged()) {
     // Heartbeats and release_control are handled; everything else waits for no one: it
     // is counted and answered by one `busy` frame when the client has read its answers.
-    const bool keeps = req.is_object() && req.contains("type") &&
-                       (req["type"] == "heartbeat" || req["type"] == "release_control");
+    const bool keeps =
+        req.is_object() && req.contains("type") && (req["type"] == "heartbeat" || req["type"] == "release_control");
     if (!keeps) {
       counters.busy.fetch_add(1);
-      const bool has_id = req.is_object() && req.contains("id") && (req["id"].is_number_integer() || req["id"].is_string());
+      const bool has_id =
+          req.is_object() && req.contains("id") && (req["id"].is_number_integer() || req["id"].is_string());
       s->drop_busy(has_id ? req["id"] : json());
       return;
     }
@@ -554,8 +557,9 @@ void Bridge::Impl::handle(const std::shared_ptr<WsSession>& s, const std::string
   }
   const json id = req.contains("id") && (req["id"].is_number_integer() || req["id"].is_string()) ? req["id"] : json();
   if (req.contains("v") && req["v"] != kLinkSchemaVersion) {
-    return error(counters.bad_field, "UNSUPPORTED_VERSION", id,
-                 "schema version " + req["v"].dump() + " is not supported; expected " + std::to_string(kLinkSchemaVersion));
+    return error(
+        counters.bad_field, "UNSUPPORTED_VERSION", id,
+        "schema version " + req["v"].dump() + " is not supported; expected " + std::to_string(kLinkSchemaVersion));
   }
   if (!req.contains("type") || !req["type"].is_string()) {
     return error(counters.bad_field, "BAD_FIELD", id, "expected a string field 'type'");
@@ -653,8 +657,9 @@ void Bridge::Impl::handle(const std::shared_ptr<WsSession>& s, const std::string
       }
       if (!ok) {
         return error(counters.bad_field, "BAD_FIELD", id,
-                     "plant switch '" + key + "': expected estop_pressed, estop_b_stuck_open, gate_open, "
-                     "drive_fault (booleans), enabling (RELEASED|MIDDLE|PANIC) or selector (AUTO|T1|T2)");
+                     "plant switch '" + key +
+                         "': expected estop_pressed, estop_b_stuck_open, gate_open, "
+                         "drive_fault (booleans), enabling (RELEASED|MIDDLE|PANIC) or selector (AUTO|T1|T2)");
       }
     }
     loop.set_plant(p);
@@ -662,8 +667,7 @@ void Bridge::Impl::handle(const std::shared_ptr<WsSession>& s, const std::string
     return;
   }
   error(counters.unknown_type, "UNKNOWN_TYPE", id,
-        "unknown request type '" + type +
-            "'; expected request_control, release_control, heartbeat, command or plant");
+        "unknown request type '" + type + "'; expected request_control, release_control, heartbeat, command or plant");
 }
 
 Bridge::Bridge(ControlLoop& loop, BridgeOptions options) : impl_(std::make_unique<Impl>(loop, std::move(options))) {}

@@ -20,15 +20,10 @@ SafetyResult AoSafety::dispatch(const SensorSnapshot& s, std::uint32_t tick) noe
       ctx_ = SafetyContext{ProtectionState::protection, true, true, tick};
       last_fault_ = cause;
       return SafetyResult::protection_entered;
-    case ProtectionRow::p03:
-      last_fault_ = FaultCause::latch_blocked;
-      return SafetyResult::latch_blocked;
-    case ProtectionRow::p04:
-      ctx_ = SafetyContext{ProtectionState::normal, false, false, tick};
-      return SafetyResult::ok;
+    case ProtectionRow::p03: last_fault_ = FaultCause::latch_blocked; return SafetyResult::latch_blocked;
+    case ProtectionRow::p04: ctx_ = SafetyContext{ProtectionState::normal, false, false, tick}; return SafetyResult::ok;
     case ProtectionRow::p02:
-    case ProtectionRow::p05:
-      break;
+    case ProtectionRow::p05: break;
   }
   return SafetyResult::ok;
 }

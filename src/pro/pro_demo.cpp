@@ -30,7 +30,8 @@ const char* name(AoId a) {
   return kNames[static_cast<int>(a)];
 }
 const char* name(UnitId u) {
-  static const char* const kNames[] = {"timer", "dispatcher", "monitoring", "control", "safety", "diagnostics", "comms"};
+  static const char* const kNames[] = {"timer",  "dispatcher",  "monitoring", "control",
+                                       "safety", "diagnostics", "comms"};
   return kNames[static_cast<int>(u)];
 }
 
@@ -50,12 +51,11 @@ struct Demo {
       if (!d.empty()) d += ",";
       d += name(last.dispatched.order[i]);
     }
-    std::printf("t=%4u %4d C %4.1f V  fan %3u%% (actual %3.0f%%)  %-10s %-13s %s  %-18s [%s]%s%s\n",
-                last.tick, in.sample.temperature_c, in.sample.voltage_dv / 10.0, last.fan_output,
-                plant.fan_percent(), name(rt.safety().context().protection_state), name(last.state),
-                last.row ? std::string(last.row->id).c_str() : "---",
-                last.safety_ran ? name(last.safety_result) : "-", d.c_str(), note.empty() ? "" : "  <- ",
-                note.c_str());
+    std::printf("t=%4u %4d C %4.1f V  fan %3u%% (actual %3.0f%%)  %-10s %-13s %s  %-18s [%s]%s%s\n", last.tick,
+                in.sample.temperature_c, in.sample.voltage_dv / 10.0, last.fan_output, plant.fan_percent(),
+                name(rt.safety().context().protection_state), name(last.state),
+                last.row ? std::string(last.row->id).c_str() : "---", last.safety_ran ? name(last.safety_result) : "-",
+                d.c_str(), note.empty() ? "" : "  <- ", note.c_str());
     return last;
   }
   void expect(bool ok, const char* what) {
@@ -70,8 +70,9 @@ int main() {
   Demo d;
   std::printf("Fan controller demo: tick = %u ms, protection budget 10 ticks (1 s), limits 85 C, 18.0 V, 30.0 V\n",
               kTickPeriodMs);
-  std::printf("columns: tick, sampled temperature, supply, fan command (and actual), protection, supervisor, row, "
-              "ao_safety result, AOs dispatched in order\n\n== start-up and regulation (heat load 600 W)\n");
+  std::printf(
+      "columns: tick, sampled temperature, supply, fan command (and actual), protection, supervisor, row, "
+      "ao_safety result, AOs dispatched in order\n\n== start-up and regulation (heat load 600 W)\n");
   d.plant.set_heat_load_w(600);
   d.tick("init: every unit started");
   d.expect(d.last.state == SupervisorState::run, "every readiness gate passed, RUN");
@@ -106,8 +107,9 @@ int main() {
   d.panel.request_clear();
   d.tick("operator writes coil 0");
   d.tick("clear request evaluated");
-  d.expect(d.rt.safety().context().protection_state == ProtectionState::normal && d.rt.data().image.last_clear_result == 1,
-           "clear accepted when cool, regulation resumes");
+  d.expect(
+      d.rt.safety().context().protection_state == ProtectionState::normal && d.rt.data().image.last_clear_result == 1,
+      "clear accepted when cool, regulation resumes");
   for (int i = 0; i < 5; ++i) d.tick();
 
   std::printf("\n== supply dip to 15.0 V for 8 ticks (below 18 V; fan driver lockout at 17 V)\n");
@@ -147,10 +149,10 @@ int main() {
   }
   d.expect(d.last.state == SupervisorState::stopped, "STOPPED: every unit reported stopped");
   const DiagnosticCounts& c = d.rt.diagnostics().counts();
-  std::printf("\ndiagnostics: %u events, %u ticks, %u Degraded, %u recoveries; fault events: sensor invalid %u, "
-              "over-temperature %u, under-voltage %u, over-voltage %u, latch blocked %u\n",
-              c.events, c.ticks, c.degraded, c.recoveries, c.faults[1], c.faults[2], c.faults[3], c.faults[4],
-              c.faults[5]);
+  std::printf(
+      "\ndiagnostics: %u events, %u ticks, %u Degraded, %u recoveries; fault events: sensor invalid %u, "
+      "over-temperature %u, under-voltage %u, over-voltage %u, latch blocked %u\n",
+      c.events, c.ticks, c.degraded, c.recoveries, c.faults[1], c.faults[2], c.faults[3], c.faults[4], c.faults[5]);
   // Diagnostics stops before safety (§9): safety's status of the tick in between is refused.
   std::printf("events not delivered (full queue, or posted to an AO already stopped): %u\n", d.rt.overflow_count());
   std::printf("\n%s: %d check(s) failed\n", d.failures == 0 ? "demo complete" : "DEMO FAILED", d.failures);

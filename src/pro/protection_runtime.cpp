@@ -12,36 +12,24 @@ ProtectionRuntime::ProtectionRuntime(CommunicationsUnit& comms, RuntimeConfig co
 
 ActiveObject& ProtectionRuntime::ao(AoId id) noexcept {
   switch (id) {
-    case AoId::monitoring:
-      return monitoring_;
-    case AoId::control:
-      return control_;
-    case AoId::safety:
-      return safety_;
-    case AoId::diagnostics:
-      return diagnostics_;
-    case AoId::comms:
-      break;
+    case AoId::monitoring: return monitoring_;
+    case AoId::control: return control_;
+    case AoId::safety: return safety_;
+    case AoId::diagnostics: return diagnostics_;
+    case AoId::comms: break;
   }
   return comms_;
 }
 
 UnitStatus ProtectionRuntime::status(UnitId u) const noexcept {
   switch (u) {
-    case UnitId::timer:
-      return timer_.status();
-    case UnitId::dispatcher:
-      return dispatcher_status_;
-    case UnitId::monitoring:
-      return monitoring_.status();
-    case UnitId::control:
-      return control_.status();
-    case UnitId::safety:
-      return safety_.status();
-    case UnitId::diagnostics:
-      return diagnostics_.status();
-    case UnitId::comms:
-      break;
+    case UnitId::timer: return timer_.status();
+    case UnitId::dispatcher: return dispatcher_status_;
+    case UnitId::monitoring: return monitoring_.status();
+    case UnitId::control: return control_.status();
+    case UnitId::safety: return safety_.status();
+    case UnitId::diagnostics: return diagnostics_.status();
+    case UnitId::comms: break;
   }
   return comms_.status();
 }
@@ -74,7 +62,8 @@ void ProtectionRuntime::deliver_lifecycle(const SupervisorStep& step) noexcept {
     } else if (target.unit == UnitId::dispatcher) {
       dispatcher_status_ = UnitStatus::stopped;
     } else {
-      post_counted(ao(static_cast<AoId>(static_cast<std::uint8_t>(target.unit) - 2)), AoEvent{AoSignal::stop, now, 0, 0});
+      post_counted(ao(static_cast<AoId>(static_cast<std::uint8_t>(target.unit) - 2)),
+                   AoEvent{AoSignal::stop, now, 0, 0});
     }
   }
   for (const AoId id : kDispatchOrder) (void)ao(id).run_to_completion();

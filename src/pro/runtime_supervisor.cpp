@@ -11,8 +11,8 @@ bool all_are(const SupervisorInputs& in, UnitStatus s) {
 }
 
 bool fault(const SupervisorInputs& in) {
-  const bool failed = std::any_of(in.status.begin(), in.status.end(),
-                                  [](UnitStatus u) { return u == UnitStatus::failed; });
+  const bool failed =
+      std::any_of(in.status.begin(), in.status.end(), [](UnitStatus u) { return u == UnitStatus::failed; });
   return failed || in.fatal_fault || !in.watchdog_ok;
 }
 
@@ -20,18 +20,12 @@ bool fault(const SupervisorInputs& in) {
 
 bool RuntimeSupervisor::holds(SupervisorGuard g, const SupervisorInputs& in) const noexcept {
   switch (g) {
-    case SupervisorGuard::shutdown_requested:
-      return in.shutdown_requested;
-    case SupervisorGuard::recovery_ok:
-      return all_are(in, UnitStatus::ready) && !in.fatal_fault && in.watchdog_ok;
-    case SupervisorGuard::fault:
-      return fault(in);
-    case SupervisorGuard::init_timeout:
-      return init_ticks_ + 1 >= init_timeout_ticks_;
-    case SupervisorGuard::all_stopped:
-      return all_are(in, UnitStatus::stopped);
-    case SupervisorGuard::always:
-      break;
+    case SupervisorGuard::shutdown_requested: return in.shutdown_requested;
+    case SupervisorGuard::recovery_ok: return all_are(in, UnitStatus::ready) && !in.fatal_fault && in.watchdog_ok;
+    case SupervisorGuard::fault: return fault(in);
+    case SupervisorGuard::init_timeout: return init_ticks_ + 1 >= init_timeout_ticks_;
+    case SupervisorGuard::all_stopped: return all_are(in, UnitStatus::stopped);
+    case SupervisorGuard::always: break;
   }
   return true;
 }
@@ -41,8 +35,7 @@ bool RuntimeSupervisor::holds(SupervisorGuard g, const SupervisorInputs& in) con
 void RuntimeSupervisor::advance_shutdown(const SupervisorInputs& in) noexcept {
   if (state_ != SupervisorState::shutting_down) return;
   const StopStep& step = stop_target();
-  const bool done = step.outputs ? in.outputs_safe_reported
-                                 : in.status[index(step.unit)] == UnitStatus::stopped;
+  const bool done = step.outputs ? in.outputs_safe_reported : in.status[index(step.unit)] == UnitStatus::stopped;
   if (!done) return;
   if (step.outputs) outputs_safe_ = true;
   if (stop_step_ < kStopOrder.size()) ++stop_step_;

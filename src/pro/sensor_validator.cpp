@@ -13,10 +13,9 @@ SensorVerdict SensorValidator::validate(const RawSample& s) noexcept {
   } else if (s.temperature_c < range_.temp_min_c || s.temperature_c > range_.temp_max_c ||
              s.voltage_dv > range_.volt_max_dv) {
     v = SensorVerdict::out_of_range;
-  } else if (has_previous_ &&
-             (std::abs(s.temperature_c - previous_.temperature_c) > range_.temp_slew_c ||
-              std::abs(static_cast<int>(s.voltage_dv) - static_cast<int>(previous_.voltage_dv)) >
-                  range_.volt_slew_dv)) {
+  } else if (has_previous_ && (std::abs(s.temperature_c - previous_.temperature_c) > range_.temp_slew_c ||
+                               std::abs(static_cast<int>(s.voltage_dv) - static_cast<int>(previous_.voltage_dv)) >
+                                   range_.volt_slew_dv)) {
     v = SensorVerdict::implausible_slew;
   } else if (frozen_ticks_ >= range_.stuck_ticks) {
     v = SensorVerdict::stuck;

@@ -43,11 +43,8 @@ void ControlAo::on_event(const AoEvent& e) noexcept {
       data_.control_command = kSafeFanCommandPercent;
       data_.fan_output = kSafeFanCommandPercent;
       break;
-    case AoSignal::degraded:
-      ++degraded_;
-      break;
-    default:
-      break;
+    case AoSignal::degraded: ++degraded_; break;
+    default: break;
   }
 }
 
@@ -62,8 +59,8 @@ void SafetyAo::on_event(const AoEvent& e) noexcept {
   data_.safety_result = safety_.dispatch(snap, e.tick);
   data_.fan_output = safety_.fan_output(data_.control_command);
   if (snap.clear_request) {
-    data_.last_clear = data_.safety_result == SafetyResult::latch_blocked ? ClearOutcome::denied
-                                                                          : ClearOutcome::accepted;
+    data_.last_clear =
+        data_.safety_result == SafetyResult::latch_blocked ? ClearOutcome::denied : ClearOutcome::accepted;
   }
   const SafetyContext& ctx = safety_.context();
   publish(AoEvent{AoSignal::operating_status, e.tick, static_cast<std::uint8_t>(ctx.protection_state),
@@ -85,12 +82,8 @@ void DiagnosticsAo::on_event(const AoEvent& e) noexcept {
       last_fault_ = static_cast<FaultCause>(e.arg0);
       if (e.arg0 < counts_.faults.size()) ++counts_.faults[e.arg0];
       break;
-    case AoSignal::degraded:
-      ++counts_.degraded;
-      break;
-    case AoSignal::recovery:
-      ++counts_.recoveries;
-      break;
+    case AoSignal::degraded: ++counts_.degraded; break;
+    case AoSignal::recovery: ++counts_.recoveries; break;
     case AoSignal::tick: {
       ++counts_.ticks;
       ProcessImage& img = data_.image;
@@ -103,8 +96,7 @@ void DiagnosticsAo::on_event(const AoEvent& e) noexcept {
       img.latch_clear_request = data_.clear_pending ? 1 : 0;
       break;
     }
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -115,19 +107,14 @@ void CommsAo::sync_status() noexcept {
 
 void CommsAo::on_event(const AoEvent& e) noexcept {
   switch (e.signal) {
-    case AoSignal::start:
-      set_status(unit_.start());
-      break;
-    case AoSignal::stop:
-      set_status(unit_.stop());
-      break;
+    case AoSignal::start: set_status(unit_.start()); break;
+    case AoSignal::stop: set_status(unit_.stop()); break;
     case AoSignal::tick:
       data_.image.supervisor_state = static_cast<std::uint16_t>(data_.supervisor);
       unit_.on_tick(data_.image);
       if (unit_.take_requests().latch_clear_request) data_.clear_pending = true;
       break;
-    default:
-      break;
+    default: break;
   }
 }
 

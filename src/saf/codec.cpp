@@ -15,9 +15,7 @@ std::uint32_t read_u32(const std::uint8_t* p) noexcept {
   for (int i = 3; i >= 0; --i) v = (v << 8U) | p[i];
   return v;
 }
-std::uint16_t read_u16(const std::uint8_t* p) noexcept {
-  return static_cast<std::uint16_t>(p[0] | (p[1] << 8U));
-}
+std::uint16_t read_u16(const std::uint8_t* p) noexcept { return static_cast<std::uint16_t>(p[0] | (p[1] << 8U)); }
 void write_le(std::uint8_t* p, std::uint64_t v, std::size_t n) noexcept {
   for (std::size_t i = 0; i < n; ++i) p[i] = static_cast<std::uint8_t>(v >> (8U * i));
 }
@@ -61,8 +59,7 @@ DecodeResult decode_payload(MessageId id, const std::uint8_t* p) noexcept {
       r.message.component_id = read_u32(p + 2);
       break;
     case MessageId::QueryHealthSummary:
-    case MessageId::QueryControl:
-      break;
+    case MessageId::QueryControl: break;
   }
   return r;
 }

@@ -28,11 +28,8 @@ ConfigError Config::validate() const noexcept {
 }
 
 Timing Config::timing() const noexcept {
-  const auto c = [this](double s) {
-    return static_cast<std::uint32_t>(cycles_of(s, cycle_interval_s));
-  };
-  return Timing{c(estop_timeout_s), c(report_data_timeout_s), c(message_interval_s),
-                c(check_interval_s)};
+  const auto c = [this](double s) { return static_cast<std::uint32_t>(cycles_of(s, cycle_interval_s)); };
+  return Timing{c(estop_timeout_s), c(report_data_timeout_s), c(message_interval_s), c(check_interval_s)};
 }
 
 }  // namespace safestate::saf

@@ -27,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   (void)a.cycle(batch, false);
   (void)b.cycle(InboundBatch{}, false);
   if (!r.ok() || !spec_of(r.message.id).incoming) {
-    if (!(a.observe() == b.observe())) std::abort();  // a rejected datagram changed the state
+    if (!(a.observe() == b.observe())) std::abort();          // a rejected datagram changed the state
     if (a.diagnostics().rejected_total() != 1) std::abort();  // and was counted once
   }
   batch.clear();

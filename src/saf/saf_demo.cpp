@@ -69,12 +69,12 @@ class Rig {
     if (o.state != last_.state) {
       std::printf(" (from %s, row %s)", to_string(last_.state).data(), r.state_row.data());
     }
-    std::printf(" | control %-9s | subsystem %-11s | holder %s", to_string(o.control).data(),
-                to_string(sub).data(),
-                subsystem_.holder() == 0 ? "nobody"
+    std::printf(" | control %-9s | subsystem %-11s | holder %s", to_string(o.control).data(), to_string(sub).data(),
+                subsystem_.holder() == 0                     ? "nobody"
                 : subsystem_.holder() == svc_.component_id() ? "safety service (225)"
-                                                              : "other component");
-    if (rejected != last_rejected_) std::printf(" | rejected datagrams %llu", static_cast<unsigned long long>(rejected));
+                                                             : "other component");
+    if (rejected != last_rejected_)
+      std::printf(" | rejected datagrams %llu", static_cast<unsigned long long>(rejected));
     std::printf("\n");
     last_ = o;
     last_sub_ = sub;
@@ -121,8 +121,9 @@ int main(int argc, char** argv) {
     return [&s, st, c] { return s.observe().state == st && s.observe().control == c; };
   };
   const auto sub_is = [&rig](SubsystemState st) { return rig.subsystem().state() == st; };
-  std::printf("Safety service over UDP on 127.0.0.1 (CYCLEINTERVAL 0.05 s: ESTOPTIMEOUT 2 cycles, "
-              "REPORTDATATIMEOUT 40, MESSAGEINTERVAL 10, CHECKINTERVAL 20, AUTHORITYCODE 225)\n");
+  std::printf(
+      "Safety service over UDP on 127.0.0.1 (CYCLEINTERVAL 0.05 s: ESTOPTIMEOUT 2 cycles, "
+      "REPORTDATATIMEOUT 40, MESSAGEINTERVAL 10, CHECKINTERVAL 20, AUTHORITYCODE 225)\n");
   bool ok = true;
 
   std::printf("-- 1. pairing: the Safety Client starts sending Set Estop (clear)\n");
@@ -170,9 +171,8 @@ int main(int argc, char** argv) {
 
   std::printf("-- 6. the platform reports a hardware fault\n");
   rig.set_hardware_fault(true);
-  ok = ok && rig.until("FAULT with control", 10, [&] {
-    return in(SafState::Fault, ControlStatus::Held)() && sub_is(SubsystemState::Emergency);
-  });
+  ok = ok && rig.until("FAULT with control", 10,
+                       [&] { return in(SafState::Fault, ControlStatus::Held)() && sub_is(SubsystemState::Emergency); });
   rig.set_hardware_fault(false);
   for (int i = 0; i < 20; ++i) rig.cycle();
   if (!ok) {

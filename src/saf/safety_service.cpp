@@ -8,9 +8,7 @@ namespace {
 
 constexpr Timing kFaultTiming{};  // the defaults, used when the Config is invalid
 
-std::uint32_t saturating_inc(std::uint32_t v, std::uint32_t max) noexcept {
-  return v < max ? v + 1 : v;
-}
+std::uint32_t saturating_inc(std::uint32_t v, std::uint32_t max) noexcept { return v < max ? v + 1 : v; }
 
 HealthView view_of(Health h) noexcept {
   switch (h) {
@@ -44,8 +42,7 @@ ConfigError check(const Timing& t) noexcept {
 }
 }  // namespace
 
-SafetyService::SafetyService(const Timing& timing, std::uint8_t authority_code,
-                             std::uint32_t component_id) noexcept
+SafetyService::SafetyService(const Timing& timing, std::uint8_t authority_code, std::uint32_t component_id) noexcept
     : timing_(check(timing) == ConfigError::None ? timing : kFaultTiming),
       authority_(authority_code),
       component_id_(component_id),
@@ -101,8 +98,7 @@ ControlEvent SafetyService::intake(const InboundBatch& inbound) noexcept {
         diag_.subsystem_state = m.subsystem_state;
         resend_emergency_ = m.subsystem_state != SubsystemState::Emergency;
         break;
-      default:
-        break;  // outgoing types were rejected above
+      default: break;  // outgoing types were rejected above
     }
   }
   obs_.estop_age = estop_seen ? 0 : saturating_inc(obs_.estop_age, timing_.estop_timeout + 1);
@@ -170,9 +166,8 @@ void SafetyService::apply(ControlEffect e) noexcept {
     case ControlEffect::Refresh: obs_.control_age = 0; break;
     case ControlEffect::ReleaseAgain: obs_.out_request = OutRequest::Release; break;
     case ControlEffect::Tick: {
-      const std::uint32_t max = timing_.report_data_timeout > timing_.message_interval
-                                    ? timing_.report_data_timeout
-                                    : timing_.message_interval;
+      const std::uint32_t max = timing_.report_data_timeout > timing_.message_interval ? timing_.report_data_timeout
+                                                                                       : timing_.message_interval;
       obs_.control_age = saturating_inc(obs_.control_age, max);
       break;
     }
@@ -208,8 +203,8 @@ CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_faul
   if (raises_emergency(obs_.state)) {
     // C++ only (design §7): someone changed the subsystem state behind our back.
     const std::uint64_t since = diag_.cycles - diag_.last_set_emergency_cycle;
-    if (resend_emergency_ && obs_.control == ControlStatus::Held &&
-        obs_.out_set_state == OutSetState::None && since >= timing_.message_interval) {
+    if (resend_emergency_ && obs_.control == ControlStatus::Held && obs_.out_set_state == OutSetState::None &&
+        since >= timing_.message_interval) {
       obs_.out_set_state = OutSetState::Emergency;
     }
   }
@@ -223,8 +218,8 @@ CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_faul
   }
   if (obs_.out_request != OutRequest::None) {
     add(out, Message::request_control(
-                 obs_.out_request == OutRequest::Release ? ControlAction::Release : ControlAction::Request,
-                 authority_, component_id_));
+                 obs_.out_request == OutRequest::Release ? ControlAction::Release : ControlAction::Request, authority_,
+                 component_id_));
   }
   if (diag_.cycles % timing_.message_interval == 0) add(out, Message::query(MessageId::QueryHealthSummary));
   if (diag_.cycles % timing_.check_interval == 0) {

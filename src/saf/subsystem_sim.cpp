@@ -48,9 +48,7 @@ void SubsystemSim::handle(const Message& m, std::uint16_t from) noexcept {
         (void)ep_.send_to(from, encode(Message::report_subsystem_state(state_)));
       }
       break;
-    case MessageId::QueryHealthSummary:
-      (void)ep_.send_to(from, encode(Message::report_health(health_)));
-      break;
+    case MessageId::QueryHealthSummary: (void)ep_.send_to(from, encode(Message::report_health(health_))); break;
     default: break;
   }
 }

@@ -26,8 +26,7 @@ sockaddr_in loopback(std::uint16_t port) noexcept {
 UdpEndpoint::~UdpEndpoint() { close(); }
 
 UdpEndpoint::UdpEndpoint(UdpEndpoint&& other) noexcept
-    : fd_(std::exchange(other.fd_, -1)), port_(other.port_), errno_(other.errno_),
-      send_dropped_(other.send_dropped_) {}
+    : fd_(std::exchange(other.fd_, -1)), port_(other.port_), errno_(other.errno_), send_dropped_(other.send_dropped_) {}
 
 UdpEndpoint& UdpEndpoint::operator=(UdpEndpoint&& other) noexcept {
   if (this != &other) {
@@ -76,8 +75,7 @@ UdpError UdpEndpoint::receive_one(Datagram& d, std::uint16_t* from) noexcept {
   sockaddr_in src{};
   socklen_t len = sizeof src;
   // MSG_TRUNC: the real length of a longer datagram, so that it is rejected as OVERSIZED.
-  const ssize_t n = ::recvfrom(fd_, d.bytes.data(), d.bytes.size(), MSG_TRUNC,
-                               reinterpret_cast<sockaddr*>(&src), &len);
+  const ssize_t n = ::recvfrom(fd_, d.bytes.data(), d.bytes.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&src), &len);
   if (n < 0) {
     errno_ = errno;
     return (errno == EAGAIN || errno == EWOULDBLOCK) ? UdpError::WouldBlock : UdpError::Receive;

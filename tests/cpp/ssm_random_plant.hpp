@@ -44,7 +44,7 @@ class RandomPlant {
     if (chance(0.0005)) in_.selector = SelectorContacts{true, true, false};  // welded contact
     if (chance(0.05)) in_.servo_ready = chance(0.8);
     if (in_.drive_fault ? chance(0.1) : chance(0.002)) in_.drive_fault = !in_.drive_fault;
-    in_.fieldbus_ok = !chance(0.0003);  // a lost EtherCAT frame / missed cycle deadline (C24)
+    in_.fieldbus_ok = !chance(0.0003);      // a lost EtherCAT frame / missed cycle deadline (C24)
     in_.operator_link_ok = !chance(0.001);  // the operator client's heartbeat expired (C26)
     if (at_rest_commanded) {
       in_.qd = chance(0.002) ? kSlow : kRest;
@@ -63,7 +63,8 @@ class RandomPlant {
     if (kind == CommandKind::JogStart) {
       c.axis = chance(0.9) ? static_cast<std::int32_t>(1 + uniform(6)) : static_cast<std::int32_t>(uniform(9)) - 1;
       c.direction = chance(0.9) ? (chance(0.5) ? 1 : -1) : 0;
-      c.speed_mm_s = chance(0.95) ? static_cast<std::int32_t>(1 + uniform(600)) : -static_cast<std::int32_t>(uniform(3));
+      c.speed_mm_s =
+          chance(0.95) ? static_cast<std::int32_t>(1 + uniform(600)) : -static_cast<std::int32_t>(uniform(3));
     }
     return true;
   }

@@ -68,8 +68,8 @@ inline std::string describe(const StatusRecord& s) {
   out += std::string(to_string(s.state)) + " mode=" + std::string(to_string(s.session_mode)) +
          " sel=" + std::string(to_string(s.selector)) + " stop=" + std::string(to_string(s.stop_category)) +
          " fault=" + std::string(to_string(s.fault_code)) + " result=" + std::string(to_string(s.command_result)) +
-         " last_reject=" + std::string(to_string(s.last_reject_reason)) +
-         " cycles=" + std::to_string(s.state_cycles) + " q=" + std::to_string(s.queue_length);
+         " last_reject=" + std::string(to_string(s.last_reject_reason)) + " cycles=" + std::to_string(s.state_cycles) +
+         " q=" + std::to_string(s.queue_length);
   return out;
 }
 

@@ -120,10 +120,8 @@ ArmKinematics::Jacobian numeric_jacobian(const ArmKinematics& kin, const JointVe
 TEST(RSM10_ArmKinematics, JacobianMatchesCentralFiniteDifference) {
   const ArmKinematics kin{kUr5DhTable};
   const JointVector poses[] = {
-      {0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
-      {kHalfPi, -kHalfPi, kHalfPi, 0.0, 0.0, 0.0},
-      {0.3, -1.1, 1.7, -0.4, 0.9, -2.2},
-      {-2.5, -0.2, -1.3, 2.1, -1.4, 0.6},
+      {0.0, 0.0, 0.0, 0.0, 0.0, 0.0},    {kHalfPi, -kHalfPi, kHalfPi, 0.0, 0.0, 0.0},
+      {0.3, -1.1, 1.7, -0.4, 0.9, -2.2}, {-2.5, -0.2, -1.3, 2.1, -1.4, 0.6},
       {1.0, -2.0, 0.5, 1.5, 0.25, 3.0},
   };
   for (const JointVector& q : poses) {
@@ -171,9 +169,8 @@ TEST(RSM10_TcpSpeed, ZeroVelocityGivesZeroSpeed) {
 TEST(RSM10_TcpSpeed, Joint6RotationDoesNotMoveTheFlangeOrigin) {
   // The flange origin lies on the joint-6 axis: spinning joint 6 alone gives zero TCP speed.
   const ArmKinematics kin{kUr5DhTable};
-  EXPECT_NEAR(kin.tcp_speed_mm_s(JointVector{0.3, -1.1, 1.7, -0.4, 0.9, -2.2},
-                                 JointVector{0, 0, 0, 0, 0, 3.0}),
-              0.0, 1e-9);
+  EXPECT_NEAR(kin.tcp_speed_mm_s(JointVector{0.3, -1.1, 1.7, -0.4, 0.9, -2.2}, JointVector{0, 0, 0, 0, 0, 3.0}), 0.0,
+              1e-9);
 }
 
 TEST(RSM10_TcpSpeed, MatchesFiniteDifferenceOfFlangePosition) {
@@ -187,8 +184,7 @@ TEST(RSM10_TcpSpeed, MatchesFiniteDifferenceOfFlangePosition) {
     qp[i] += qd[i] * dt;
     qm[i] -= qd[i] * dt;
   }
-  const double numeric =
-      (kin.forward(qp).translation() - kin.forward(qm).translation()).norm() / (2.0 * dt) * 1000.0;
+  const double numeric = (kin.forward(qp).translation() - kin.forward(qm).translation()).norm() / (2.0 * dt) * 1000.0;
   EXPECT_NEAR(kin.tcp_speed_mm_s(q, qd), numeric, 1e-5);
 }
 

@@ -21,8 +21,8 @@
 #include "safestate/resume_target.hpp"
 #include "safestate/selector_reading.hpp"
 #include "safestate/speed_level.hpp"
-#include "safestate/status_record.hpp"
 #include "safestate/state_id.hpp"
+#include "safestate/status_record.hpp"
 #include "safestate/stop_category.hpp"
 #include "safestate/submit_result.hpp"
 
@@ -49,16 +49,15 @@ TEST(RSM16_StatusNames, EnumNamesAreTheUpperCaseNamesOfTheDesignPage) {
   EXPECT_EQ(names(kAllOperatingModes), (V{"NONE", "AUTO", "T1", "T2"}));
   EXPECT_EQ(names(kAllSelectorReadings), (V{"INVALID", "AUTO", "T1", "T2"}));
   EXPECT_EQ(names(kAllStopCategories), (V{"NONE", "CAT0", "CAT1", "CAT2"}));
-  EXPECT_EQ(names(kAllFaultCodes),
-            (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING",
-               "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT",
-               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION"}));
+  EXPECT_EQ(names(kAllFaultCodes), (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD",
+                                      "DISCREPANCY_ENABLING", "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED",
+                                      "ARMING_TIMEOUT", "STOP_TIMEOUT", "FIELDBUS_LOSS", "STANDSTILL_VIOLATION"}));
   EXPECT_EQ(names(kAllRejectReasons),
             (V{"NONE", "LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT", "SELECTOR_INVALID",
                "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE", "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO",
                "INVALID_ARGUMENT", "QUEUE_FULL", "CHANNEL_TEST_PENDING"}));
-  EXPECT_EQ(names(kAllCommandKinds), (V{"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME", "JOG_START",
-                                        "JOG_STOP", "T2_CONFIRM"}));
+  EXPECT_EQ(names(kAllCommandKinds),
+            (V{"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME", "JOG_START", "JOG_STOP", "T2_CONFIRM"}));
   EXPECT_EQ(names(kAllSpeedLevels), (V{"ZERO", "MOVING", "OVER_T1"}));
   EXPECT_EQ(names(kAllResumeTargets), (V{"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}));
   EXPECT_EQ(names(kAllSubmitResults), (V{"QUEUED", "QUEUE_FULL"}));

@@ -11,11 +11,31 @@ namespace sc = safestate::chain;
 
 namespace {
 
-sc::PressInputs motor_on() { sc::PressInputs i; i.motor_on = true; return i; }
-sc::PressInputs motor_off() { sc::PressInputs i; i.motor_off = true; return i; }
-sc::PressInputs start() { sc::PressInputs i; i.start = true; return i; }
-sc::PressInputs step_done() { sc::PressInputs i; i.step_done = true; return i; }
-sc::PressInputs ret() { sc::PressInputs i; i.ret = true; return i; }
+sc::PressInputs motor_on() {
+  sc::PressInputs i;
+  i.motor_on = true;
+  return i;
+}
+sc::PressInputs motor_off() {
+  sc::PressInputs i;
+  i.motor_off = true;
+  return i;
+}
+sc::PressInputs start() {
+  sc::PressInputs i;
+  i.start = true;
+  return i;
+}
+sc::PressInputs step_done() {
+  sc::PressInputs i;
+  i.step_done = true;
+  return i;
+}
+sc::PressInputs ret() {
+  sc::PressInputs i;
+  i.ret = true;
+  return i;
+}
 
 template <class Press>
 sc::PressOutputs accident(Press& p) {
@@ -139,7 +159,8 @@ std::vector<std::string> itf_events(const std::string& path) {
 }
 
 TEST(HydraulicPressAccidentReplay, INV_PRESS_CheckerCounterexampleEnergisesTheFlatPressNotTheChain) {
-  const auto events = itf_events(std::string(SAFESTATE_SOURCE_DIR) + "/models/traces/HydraulicPressFlat_INV_PRESS.itf.json");
+  const auto events =
+      itf_events(std::string(SAFESTATE_SOURCE_DIR) + "/models/traces/HydraulicPressFlat_INV_PRESS.itf.json");
   ASSERT_EQ(events, (std::vector<std::string>{"motor_on", "start", "motor_off", "motor_on"}));
   sc::PressFlat flat;
   sc::HydraulicPress chain;

@@ -72,9 +72,7 @@ std::array<std::uint64_t, kStateCount> walk(const Config& config, std::uint32_t 
 constexpr std::uint32_t kSeeds = 60;
 constexpr std::uint32_t kCycles = 5000;
 
-std::uint64_t at(const std::array<std::uint64_t, kStateCount>& v, StateId s) {
-  return v[static_cast<std::size_t>(s)];
-}
+std::uint64_t at(const std::array<std::uint64_t, kStateCount>& v, StateId s) { return v[static_cast<std::size_t>(s)]; }
 
 TEST(INV_RESET, ArmingAndOperationalAreReachedFromEstopOnlyThroughAnAcceptedReset) {
   bool estop_since_reset = false;

@@ -28,7 +28,7 @@ TEST(RSM15_NoHeap, HundredThousandRandomCyclesAndCommandsAllocateNothing) {
   c.discrepancy_cycles = 8;
   c.arming_timeout_cycles = 25;
   c.max_stop_cycles = 120;
-  SystemStateManager m(c);   // construction may allocate (it does not, but it is allowed)
+  SystemStateManager m(c);  // construction may allocate (it does not, but it is allowed)
   RandomPlant plant(20240601U);
   std::uint64_t commands = 0;
   std::uint64_t motion_cycles = 0;

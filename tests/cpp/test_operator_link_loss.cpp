@@ -18,9 +18,7 @@ using namespace ssm_test;  // NOLINT: test code
 using safestate::link::HeartbeatMonitor;
 using safestate::link::Seqlock;
 
-TEST(RSM13_OperatorLinkLoss, ZeroInitialisedInputsReadTheLinkAsLost) {
-  EXPECT_FALSE(ScanInputs{}.operator_link_ok);
-}
+TEST(RSM13_OperatorLinkLoss, ZeroInitialisedInputsReadTheLinkAsLost) { EXPECT_FALSE(ScanInputs{}.operator_link_ok); }
 
 TEST(RSM13_OperatorLinkLoss, LinkLostWhileJoggingIsACat2StopToHoldWithTheJogKept) {
   Rig r;

@@ -63,12 +63,18 @@ TEST(RSM17_PlcopenAxis, RejectReasonNamesAreTheEnumeratorNames) {
 // them); found missing by the C++ mutation score (an emptied name survived).
 TEST(RSM17_PlcopenAxis, FunctionBlockNamesAreThePlcopenNames) {
   const std::pair<AxisEvent, const char*> names[] = {
-      {AxisEvent::PowerOn, "MC_Power(on)"},         {AxisEvent::PowerOff, "MC_Power(off)"},
-      {AxisEvent::Home, "MC_Home"},                 {AxisEvent::MoveAbsolute, "MC_MoveAbsolute"},
-      {AxisEvent::MoveRelative, "MC_MoveRelative"}, {AxisEvent::Halt, "MC_Halt"},
-      {AxisEvent::MoveVelocity, "MC_MoveVelocity"}, {AxisEvent::GearIn, "MC_GearIn"},
-      {AxisEvent::CamIn, "MC_CamIn"},               {AxisEvent::Stop, "MC_Stop"},
-      {AxisEvent::Done, "Done"},                    {AxisEvent::AxisError, "AxisError"},
+      {AxisEvent::PowerOn, "MC_Power(on)"},
+      {AxisEvent::PowerOff, "MC_Power(off)"},
+      {AxisEvent::Home, "MC_Home"},
+      {AxisEvent::MoveAbsolute, "MC_MoveAbsolute"},
+      {AxisEvent::MoveRelative, "MC_MoveRelative"},
+      {AxisEvent::Halt, "MC_Halt"},
+      {AxisEvent::MoveVelocity, "MC_MoveVelocity"},
+      {AxisEvent::GearIn, "MC_GearIn"},
+      {AxisEvent::CamIn, "MC_CamIn"},
+      {AxisEvent::Stop, "MC_Stop"},
+      {AxisEvent::Done, "Done"},
+      {AxisEvent::AxisError, "AxisError"},
       {AxisEvent::Reset, "MC_Reset"},
   };
   static_assert(std::size(names) == safestate::kAxisEventCount);
@@ -84,18 +90,19 @@ std::set<std::pair<AxisState, AxisState>> diagram_edges() {
     if (s != S::ErrorStop) e.insert({s, S::ErrorStop});  // axis error, from every state
     if (s != S::Disabled) e.insert({s, S::Disabled});    // MC_Power off (ErrorStop: MC_Reset unpowered)
   }
-  e.insert({S::Disabled, S::StandStill});  // MC_Power on
-  e.insert({S::ErrorStop, S::StandStill});  // MC_Reset, powered
-  e.insert({S::StandStill, S::Homing});     // MC_Home
-  e.insert({S::Homing, S::StandStill});     // homing done
+  e.insert({S::Disabled, S::StandStill});        // MC_Power on
+  e.insert({S::ErrorStop, S::StandStill});       // MC_Reset, powered
+  e.insert({S::StandStill, S::Homing});          // MC_Home
+  e.insert({S::Homing, S::StandStill});          // homing done
   e.insert({S::DiscreteMotion, S::StandStill});  // motion done
-  e.insert({S::Stopping, S::StandStill});   // MC_Stop.Done AND NOT Execute
+  e.insert({S::Stopping, S::StandStill});        // MC_Stop.Done AND NOT Execute
   for (const AxisState from : {S::StandStill, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
     for (const AxisState to : {S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
       if (from != to) e.insert({from, to});  // MC_Move*/MC_Halt, MC_MoveVelocity, MC_GearIn/CamIn
     }
   }
-  for (const AxisState from : {S::StandStill, S::Homing, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
+  for (const AxisState from :
+       {S::StandStill, S::Homing, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
     e.insert({from, S::Stopping});  // MC_Stop
   }
   return e;
@@ -141,11 +148,13 @@ TEST(RSM17_PlcopenAxis, StepTowardImplementsTheDesignTable) {
       }
     }
     EXPECT_EQ(PlcopenAxis::step_toward(S::Disabled, S::Stopping, z), S::Disabled);
-    for (const AxisState d : {S::StandStill, S::Homing, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
+    for (const AxisState d :
+         {S::StandStill, S::Homing, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
       EXPECT_EQ(PlcopenAxis::step_toward(S::Disabled, d, z), S::StandStill);  // MC_Power on
     }
     EXPECT_EQ(PlcopenAxis::step_toward(S::Stopping, S::Stopping, z), S::Stopping);
-    for (const AxisState d : {S::StandStill, S::Homing, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
+    for (const AxisState d :
+         {S::StandStill, S::Homing, S::DiscreteMotion, S::ContinuousMotion, S::SynchronizedMotion}) {
       EXPECT_EQ(PlcopenAxis::step_toward(S::Stopping, d, z), z ? S::StandStill : S::Stopping);
     }
     EXPECT_EQ(PlcopenAxis::step_toward(S::StandStill, S::StandStill, z), S::StandStill);
@@ -185,7 +194,7 @@ TEST(RSM17_PlcopenAxis, Cat2PauseHoldsAtStandStillAndResumes) {
   axis.track(S::StandStill, true);
   axis.track(S::ContinuousMotion, true);  // MANUAL_JOGGING, jog axis
   EXPECT_EQ(axis.state(), S::ContinuousMotion);
-  axis.track(S::Stopping, false);  // STOPPING CAT2
+  axis.track(S::Stopping, false);   // STOPPING CAT2
   axis.track(S::StandStill, true);  // HOLD, speed zero
   EXPECT_EQ(axis.state(), S::StandStill);
   axis.track(S::ContinuousMotion, true);  // resume
@@ -216,8 +225,8 @@ TEST(RSM17_PlcopenAxis, DriveFaultPutsAxisInErrorStopAndLockoutKeepsIt) {
 TEST(RSM17_PlcopenAxis, IllegalFunctionBlocksAreRejectedWithReasonAndChangeNothing) {
   PlcopenAxis axis;
   // Disabled: no motion, no homing, no MC_Stop.
-  for (const AxisEvent e : {AxisEvent::Home, AxisEvent::MoveAbsolute, AxisEvent::MoveVelocity,
-                            AxisEvent::GearIn, AxisEvent::Stop, AxisEvent::Done}) {
+  for (const AxisEvent e : {AxisEvent::Home, AxisEvent::MoveAbsolute, AxisEvent::MoveVelocity, AxisEvent::GearIn,
+                            AxisEvent::Stop, AxisEvent::Done}) {
     const auto r = axis.request(e);
     EXPECT_FALSE(r.accepted()) << safestate::to_string(e);
     EXPECT_EQ(r.reason, AxisReject::AxisDisabled);
@@ -245,8 +254,8 @@ TEST(RSM17_PlcopenAxis, IllegalFunctionBlocksAreRejectedWithReasonAndChangeNothi
   ASSERT_TRUE(axis.mc_stop().accepted());
   ASSERT_EQ(axis.state(), S::Stopping);
   // Stopping: only MC_Stop (again), Done, power off and errors are taken.
-  for (const AxisEvent e : {AxisEvent::Home, AxisEvent::MoveAbsolute, AxisEvent::MoveRelative,
-                            AxisEvent::Halt, AxisEvent::MoveVelocity, AxisEvent::GearIn, AxisEvent::CamIn}) {
+  for (const AxisEvent e : {AxisEvent::Home, AxisEvent::MoveAbsolute, AxisEvent::MoveRelative, AxisEvent::Halt,
+                            AxisEvent::MoveVelocity, AxisEvent::GearIn, AxisEvent::CamIn}) {
     const auto r = axis.request(e);
     EXPECT_EQ(r.reason, AxisReject::AxisStopping) << safestate::to_string(e);
     EXPECT_EQ(r.next, S::Stopping);
@@ -283,8 +292,8 @@ TEST(RSM17_PlcopenAxis, ErrorStopIsLeftOnlyByResetToPowerDependentState) {
   ASSERT_TRUE(axis.mc_move_velocity().accepted());
   ASSERT_TRUE(axis.axis_error().accepted());
   EXPECT_EQ(axis.state(), S::ErrorStop);
-  for (const AxisEvent e : {AxisEvent::Home, AxisEvent::MoveAbsolute, AxisEvent::MoveVelocity,
-                            AxisEvent::GearIn, AxisEvent::Stop, AxisEvent::Done}) {
+  for (const AxisEvent e : {AxisEvent::Home, AxisEvent::MoveAbsolute, AxisEvent::MoveVelocity, AxisEvent::GearIn,
+                            AxisEvent::Stop, AxisEvent::Done}) {
     EXPECT_EQ(axis.request(e).reason, AxisReject::AxisInErrorStop) << safestate::to_string(e);
     EXPECT_EQ(axis.state(), S::ErrorStop);
   }

@@ -41,30 +41,42 @@ TEST(RSM01_States, EveryLeafStateIsReachedByAScriptedSession) {
   std::set<StateId> seen;
   Rig r;
   const auto note = [&] { seen.insert(r.state()); };
-  note();                                  // BOOT
+  note();  // BOOT
   r.in = healthy(SelectorReading::Auto);
   r.in.estop_closed = {false, false};
-  r.cycle(); note();                       // ESTOP_ACTIVE
+  r.cycle();
+  note();  // ESTOP_ACTIVE
   r.in.estop_closed = {true, true};
-  r.cycle(); note();                       // ESTOP_RESET_NEEDED
-  (void)r.command(Command::reset()); note();  // IDLE
+  r.cycle();
+  note();  // ESTOP_RESET_NEEDED
+  (void)r.command(Command::reset());
+  note();  // IDLE
   r.in.servo_ready = false;
-  (void)r.command(Command::servo_on()); note();  // ARMING
+  (void)r.command(Command::servo_on());
+  note();  // ARMING
   r.in.servo_ready = true;
-  r.cycle(); note();                       // AUTO_IDLE
-  (void)r.command(Command::start()); note();  // AUTO_RUNNING
-  (void)r.command(Command::pause()); note();  // STOPPING
-  r.cycle(); note();                       // HOLD (at rest)
+  r.cycle();
+  note();  // AUTO_IDLE
+  (void)r.command(Command::start());
+  note();  // AUTO_RUNNING
+  (void)r.command(Command::pause());
+  note();  // STOPPING
+  r.cycle();
+  note();  // HOLD (at rest)
   r.in = healthy(SelectorReading::T1);
-  r.cycle();                               // C12: STOPPING CAT1
-  r.cycle(); note();                       // IDLE
+  r.cycle();  // C12: STOPPING CAT1
+  r.cycle();
+  note();  // IDLE
   r.in.servo_ready = false;
   (void)r.command(Command::servo_on());
   r.in.servo_ready = true;
-  r.cycle(); note();                       // MANUAL_IDLE
-  (void)r.command(Command::jog_start(1, 1, 50)); note();  // MANUAL_JOGGING
+  r.cycle();
+  note();  // MANUAL_IDLE
+  (void)r.command(Command::jog_start(1, 1, 50));
+  note();  // MANUAL_JOGGING
   r.in.drive_fault = true;
-  r.cycle(); note();                       // ERROR_LOCKOUT
+  r.cycle();
+  note();  // ERROR_LOCKOUT
   EXPECT_EQ(seen.size(), kStateCount);
 }
 
@@ -147,12 +159,19 @@ class RSM05_EstopPriority : public ::testing::TestWithParam<int> {};
 TEST_P(RSM05_EstopPriority, EstopPressedInAnyPoweredStateEntersEstopActiveSameCycle) {
   Rig r;
   switch (GetParam()) {
-    case 0: r.boot(); r.in.servo_ready = false; (void)r.command(Command::servo_on()); break;  // ARMING
+    case 0:
+      r.boot();
+      r.in.servo_ready = false;
+      (void)r.command(Command::servo_on());
+      break;  // ARMING
     case 1: r.to_operational(SelectorReading::Auto); break;
     case 2: r.to_auto_running(); break;
     case 3: r.to_operational(SelectorReading::T1); break;
     case 4: r.to_jogging(SelectorReading::T1); break;
-    case 5: r.to_auto_running(); (void)r.command(Command::pause()); break;  // STOPPING CAT2
+    case 5:
+      r.to_auto_running();
+      (void)r.command(Command::pause());
+      break;  // STOPPING CAT2
     case 6: r.to_hold(); break;
     default: FAIL();
   }
@@ -346,17 +365,17 @@ TEST_P(RSM04_Discrepancy, AgreementWithinDCyclesRestartsTheCount) {
   EXPECT_NE(r.state(), StateId::ErrorLockout);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Inputs, RSM04_Discrepancy,
-    ::testing::Values(
-        DiscrepancyCase{"Estop", FaultCode::DiscrepancyEstop, [](ScanInputs& in) { in.estop_closed.a = false; }},
-        DiscrepancyCase{"Safeguard", FaultCode::DiscrepancySafeguard,
-                        [](ScanInputs& in) { in.safeguard_closed.b = false; }},
-        DiscrepancyCase{"Enabling", FaultCode::DiscrepancyEnabling,
-                        [](ScanInputs& in) { in.enabling.a = EnablePosition::Released; }},
-        DiscrepancyCase{"Selector", FaultCode::SelectorInvalid,
-                        [](ScanInputs& in) { in.selector.auto_ = true; }}),
-    [](const auto& param_info) { return std::string(param_info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Inputs, RSM04_Discrepancy,
+                         ::testing::Values(DiscrepancyCase{"Estop", FaultCode::DiscrepancyEstop,
+                                                           [](ScanInputs& in) { in.estop_closed.a = false; }},
+                                           DiscrepancyCase{"Safeguard", FaultCode::DiscrepancySafeguard,
+                                                           [](ScanInputs& in) { in.safeguard_closed.b = false; }},
+                                           DiscrepancyCase{
+                                               "Enabling", FaultCode::DiscrepancyEnabling,
+                                               [](ScanInputs& in) { in.enabling.a = EnablePosition::Released; }},
+                                           DiscrepancyCase{"Selector", FaultCode::SelectorInvalid,
+                                                           [](ScanInputs& in) { in.selector.auto_ = true; }}),
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(RSM04_Discrepancy, StuckEstopChannelTripsAtOnceAndLatchesAfterDPlusOneCycles) {
   Rig r;
@@ -414,9 +433,9 @@ TEST(RSM04_Discrepancy, LockoutIsNeverLeftEvenWhenChannelsAgreeAndEveryCommandIs
   r.cycles(51);
   ASSERT_EQ(r.state(), StateId::ErrorLockout);
   r.in = healthy();
-  const Command all[] = {Command::reset(), Command::servo_on(), Command::servo_off(), Command::start(),
-                         Command::pause(), Command::resume(), Command::jog_start(1, 1, 10),
-                         Command::jog_stop(), Command::t2_confirm()};
+  const Command all[] = {Command::reset(),     Command::servo_on(), Command::servo_off(),         Command::start(),
+                         Command::pause(),     Command::resume(),   Command::jog_start(1, 1, 10), Command::jog_stop(),
+                         Command::t2_confirm()};
   for (const Command& c : all) {
     EXPECT_EQ(r.command(c), CommandResult::rejected(RejectReason::LockedOut));
     EXPECT_EQ(r.command_row(), "K01");

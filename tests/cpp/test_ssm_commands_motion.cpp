@@ -285,9 +285,8 @@ TEST(RSM09_Manual, AJogStartWithItsDirectionLeftUnsetIsRejected) {
 TEST(RSM13_Commands, CommandsWithoutArgumentsCarryZeroJogArguments) {
   const Command made[] = {Command::reset(), Command::servo_on(), Command::servo_off(), Command::start(),
                           Command::pause(), Command::resume(),   Command::jog_stop(),  Command::t2_confirm()};
-  const CommandKind kinds[] = {CommandKind::Reset, CommandKind::ServoOn, CommandKind::ServoOff,
-                               CommandKind::Start, CommandKind::Pause,   CommandKind::Resume,
-                               CommandKind::JogStop, CommandKind::T2Confirm};
+  const CommandKind kinds[] = {CommandKind::Reset, CommandKind::ServoOn, CommandKind::ServoOff, CommandKind::Start,
+                               CommandKind::Pause, CommandKind::Resume,  CommandKind::JogStop,  CommandKind::T2Confirm};
   for (std::size_t i = 0; i < std::size(made); ++i) {
     EXPECT_EQ(made[i].kind, kinds[i]) << i;
     EXPECT_EQ(made[i].axis, 0) << to_string(kinds[i]);
@@ -609,13 +608,20 @@ TEST(RSM13_Commands, ARejectedCommandChangesNothingButTheCommandFields) {
       [](Rig& r) { r.to_auto_running(); },
       [](Rig& r) { r.to_jogging(SelectorReading::T1); },
       [](Rig& r) { r.to_hold(); },
-      [](Rig& r) { r.to_auto_running(); (void)r.command(Command::pause()); },
-      [](Rig& r) { r.boot(); r.in.servo_ready = false; (void)r.command(Command::servo_on()); },
+      [](Rig& r) {
+        r.to_auto_running();
+        (void)r.command(Command::pause());
+      },
+      [](Rig& r) {
+        r.boot();
+        r.in.servo_ready = false;
+        (void)r.command(Command::servo_on());
+      },
   };
-  const Command commands[] = {Command::reset(),  Command::servo_on(), Command::servo_off(),
-                              Command::start(),  Command::pause(),    Command::resume(),
-                              Command::jog_start(1, 1, 10), Command::jog_start(9, 1, 10),
-                              Command::jog_stop(), Command::t2_confirm()};
+  const Command commands[] = {
+      Command::reset(),    Command::servo_on(),  Command::servo_off(),         Command::start(),
+      Command::pause(),    Command::resume(),    Command::jog_start(1, 1, 10), Command::jog_start(9, 1, 10),
+      Command::jog_stop(), Command::t2_confirm()};
   int rejects = 0;
   for (const SetupFn setup : setups) {
     for (const Command& c : commands) {

@@ -28,9 +28,13 @@ enum : sc::StateIndex { S0, S1, SA, S3, S4, SY, S7, SZ, S8, SB, S5, S6, S2 };
 constexpr const char* names[] = {"S0", "S1", "SA", "S3", "S4", "SY", "S7", "SZ", "S8", "SB", "S5", "S6", "S2"};
 
 template <sc::StateIndex S>
-void entry(Log& l, const sc::Requests&) noexcept { l.events[l.size++] = std::string(names[S]) + "_init"; }
+void entry(Log& l, const sc::Requests&) noexcept {
+  l.events[l.size++] = std::string(names[S]) + "_init";
+}
 template <sc::StateIndex S>
-void exit_(Log& l, const sc::Requests&) noexcept { l.events[l.size++] = std::string(names[S]) + "_del"; }
+void exit_(Log& l, const sc::Requests&) noexcept {
+  l.events[l.size++] = std::string(names[S]) + "_del";
+}
 template <sc::StateIndex S>
 void run(Log& l, const sc::Requests& r) noexcept {
   l.events[l.size++] = std::string(names[S]) + "_run";
@@ -42,12 +46,11 @@ constexpr sc::StateDef<Log> def(sc::StateIndex parent, sc::StateIndex initial, b
   return {names[S], parent, initial, parallel, &entry<S>, &exit_<S>, &run<S>, nullptr};
 }
 
-constexpr std::array<sc::StateDef<Log>, 13> doc_table{{
-    def<S0>(sc::no_state, S1, false), def<S1>(S0, sc::no_state, true), def<SA>(S1, S3, false),
-    def<S3>(SA, sc::no_state, false), def<S4>(SA, sc::no_state, true), def<SY>(S4, S7, false),
-    def<S7>(SY, sc::no_state, false), def<SZ>(S4, S8, false), def<S8>(SZ, sc::no_state, false),
-    def<SB>(S1, S5, false), def<S5>(SB, sc::no_state, false), def<S6>(SB, sc::no_state, false),
-    def<S2>(S0, sc::no_state, false)}};
+constexpr std::array<sc::StateDef<Log>, 13> doc_table{
+    {def<S0>(sc::no_state, S1, false), def<S1>(S0, sc::no_state, true), def<SA>(S1, S3, false),
+     def<S3>(SA, sc::no_state, false), def<S4>(SA, sc::no_state, true), def<SY>(S4, S7, false),
+     def<S7>(SY, sc::no_state, false), def<SZ>(S4, S8, false), def<S8>(SZ, sc::no_state, false), def<SB>(S1, S5, false),
+     def<S5>(SB, sc::no_state, false), def<S6>(SB, sc::no_state, false), def<S2>(S0, sc::no_state, false)}};
 static_assert(sc::check_table(doc_table).ok());
 
 struct DocChain : ::testing::Test {
@@ -128,8 +131,7 @@ TEST_F(DocChain, SCH04_StatesExitedByARunRequestAreNotRunInThatScan) {
   log.request_dst = S4;
   clear();
   chain.run();
-  EXPECT_EQ(log.joined(),
-            "S5_run SB_run S3_run S3_del S4_init SY_init S7_init SZ_init S8_init SA_run S1_run S0_run");
+  EXPECT_EQ(log.joined(), "S5_run SB_run S3_run S3_del S4_init SY_init S7_init SZ_init S8_init SA_run S1_run S0_run");
 }
 
 TEST(StateChainTable, RejectsATableNotInPreOrderOrWithABadInitialChild) {
@@ -146,7 +148,8 @@ TEST(StateChainTable, RejectsATableNotInPreOrderOrWithABadInitialChild) {
 
 TEST(StateChainExport, JsonAndDotNameEveryStateAndEdge) {
   const std::string json = sc::to_json(doc_table);
-  EXPECT_NE(json.find("{\"name\": \"S4\", \"parent\": \"SA\", \"initial\": null, \"parallel\": true}"), std::string::npos);
+  EXPECT_NE(json.find("{\"name\": \"S4\", \"parent\": \"SA\", \"initial\": null, \"parallel\": true}"),
+            std::string::npos);
   const std::string dot = sc::to_dot(doc_table);
   EXPECT_NE(dot.find("\"S0\" -> \"S1\" [style=bold];"), std::string::npos);
   EXPECT_NE(dot.find("\"S1\" [peripheries=2];"), std::string::npos);

@@ -20,8 +20,8 @@ using namespace safestate;  // NOLINT
 std::string two_digits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
 // Rows added by later changes take the next free number and sit where first-match needs
-// them: C24 (fieldbus loss) after C03, C25 (standstill) after C10, C26 (operator link) after C14, K36 after K02, K37 after
-// K04, K38 after K06.
+// them: C24 (fieldbus loss) after C03, C25 (standstill) after C10, C26 (operator link) after C14, K36 after K02, K37
+// after K04, K38 after K06.
 TEST(TransitionTable, RowIdsAreC01ToC26ThenK01ToK38InFirstMatchOrder) {
   std::vector<std::string> expected;
   for (std::size_t i = 1; i <= 23; ++i) {
@@ -67,8 +67,8 @@ TEST(RSM03_StopCategories, TheTableSetsTheCategoriesOfTheDesignTriggerTable) {
       {"C02", StopUpdate::Cat0}, {"C03", StopUpdate::Cat0}, {"C04", StopUpdate::Cat0}, {"C06", StopUpdate::Cat0},
       {"C09", StopUpdate::Cat0}, {"C10", StopUpdate::Cat0}, {"C11", StopUpdate::Cat0}, {"C12", StopUpdate::Cat1},
       {"C13", StopUpdate::Cat1}, {"C14", StopUpdate::Cat1}, {"C16", StopUpdate::Cat0}, {"C20", StopUpdate::Cat0},
-      {"C24", StopUpdate::Cat0}, {"C25", StopUpdate::Cat0}, {"C26", StopUpdate::Cat2},
-      {"K12", StopUpdate::Clear}, {"K14", StopUpdate::Cat1}, {"K20", StopUpdate::Cat2},
+      {"C24", StopUpdate::Cat0}, {"C25", StopUpdate::Cat0}, {"C26", StopUpdate::Cat2}, {"K12", StopUpdate::Clear},
+      {"K14", StopUpdate::Cat1}, {"K20", StopUpdate::Cat2},
   };
   for (const TransitionRow& r : kTransitionTable) {
     const auto it = expected.find(std::string(r.id));
@@ -123,8 +123,8 @@ TEST(TransitionTable, RowsMatchTheDesignPage) {
       }
       // Reason column: a single `REASON` is a reject row with that reason.
       const std::string& effect = cells[3];
-      const bool is_reason = effect.size() > 2 && effect.front() == '`' && effect.back() == '`' &&
-                             effect.find(' ') == std::string::npos;
+      const bool is_reason =
+          effect.size() > 2 && effect.front() == '`' && effect.back() == '`' && effect.find(' ') == std::string::npos;
       if (is_reason) {
         EXPECT_EQ(r.kind, TargetKind::Reject) << r.id;
         EXPECT_EQ("`" + std::string(to_string(r.reason)) + "`", effect) << r.id;

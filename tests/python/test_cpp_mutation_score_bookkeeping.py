@@ -107,9 +107,20 @@ def test_runs_of_different_populations_are_not_merged():
 
 def test_an_equivalence_with_a_line_justifies_that_line_only():
     """`break;` -> `/*break;*/` is equivalent at the end of a switch's last case, not
-    before the next case label (equivalent.toml's transition_table.hpp:281 entry)."""
+    before the next case label (equivalent.toml's transition_table.hpp:287 entry)."""
     justified = score.equivalents()
     last = {"file": "include/safestate/transition_table.hpp", "original": "break;", "mutant": "/*break;*/"}
-    assert score.note(last | {"line": 281}, justified).startswith("equivalent: the break of the last case")
-    assert score.note(last | {"line": 275}, justified).startswith("not yet killed")
+    assert score.note(last | {"line": 287}, justified).startswith("equivalent: the break of the last case")
+    assert score.note(last | {"line": 281}, justified).startswith("not yet killed")
     assert score.note(EQUIV, justified).startswith("equivalent: a comment line")  # no line: any line
+
+
+def test_every_equivalent_mutant_names_its_line_as_the_code_has_it():
+    """An equivalence justifies one line of code: when an edit or a reformat moves or changes
+    that line, equivalent.toml must follow, or it excuses a different mutant (or none)."""
+    for (file, original, _mutant, line), _why in score.equivalents().items():
+        lines = [text.strip() for text in (REPO / file).read_text(encoding="utf-8").splitlines()]
+        if line is None:
+            assert original in lines, f"{file}: no line {original!r}"
+        else:
+            assert lines[line - 1] == original, f"{file}:{line} is {lines[line - 1]!r}, not {original!r}"

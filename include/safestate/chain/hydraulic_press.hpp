@@ -24,26 +24,25 @@ struct PressContext {
 namespace press {
 
 // Table indices, pre-order (design page §3).
-inline constexpr StateIndex root = 0, motor_off = 1, motor_on = 2, stroke = 3, aux = 34,
-                            cool_idle = 35, cooling = 36;
+inline constexpr StateIndex root = 0, motor_off = 1, motor_on = 2, stroke = 3, aux = 34, cool_idle = 35, cooling = 36;
 inline constexpr std::size_t state_count = 37;
-[[nodiscard]] constexpr StateIndex mode_state(int m) noexcept {
-  return static_cast<StateIndex>(4 + 10 * (m - 1));
-}
+[[nodiscard]] constexpr StateIndex mode_state(int m) noexcept { return static_cast<StateIndex>(4 + 10 * (m - 1)); }
 [[nodiscard]] constexpr StateIndex step_state(int m, int k) noexcept {
   return static_cast<StateIndex>(mode_state(m) + 1 + k);
 }
 
 template <Output O>
-void set_on(PressContext& c, const Requests&) noexcept { c.out.set(O, true); }
+void set_on(PressContext& c, const Requests&) noexcept {
+  c.out.set(O, true);
+}
 template <Output O>
-void set_off(PressContext& c, const Requests&) noexcept { c.out.set(O, false); }
+void set_off(PressContext& c, const Requests&) noexcept {
+  c.out.set(O, false);
+}
 
 // A transition requested by a run function; the result is always ok for these sibling
 // pairs of the fixed table (tested), so it is not acted on.
-inline void go(const Requests& r, StateIndex src, StateIndex dst) noexcept {
-  static_cast<void>(r.request(src, dst));
-}
+inline void go(const Requests& r, StateIndex src, StateIndex dst) noexcept { static_cast<void>(r.request(src, dst)); }
 
 inline void motor_off_run(PressContext& c, const Requests& r) noexcept {
   if (c.in.motor_on && !c.in.motor_off) go(r, motor_off, motor_on);
@@ -75,10 +74,12 @@ inline void cooling_run(PressContext& c, const Requests& r) noexcept {
   if (c.in.temp_ok) go(r, cooling, cool_idle);
 }
 
+// clang-format off
 inline constexpr const char* step_names[3][stroke_steps] = {
     {"M1_Ready", "M1_Feed", "M1_Locate", "M1_Clamp", "M1_FastAdvance", "M1_Pressing", "M1_Blow", "M1_Eject", "M1_ClearScrap"},
     {"M2_Ready", "M2_Feed", "M2_Locate", "M2_Clamp", "M2_FastAdvance", "M2_Pressing", "M2_Blow", "M2_Eject", "M2_ClearScrap"},
     {"M3_Ready", "M3_Feed", "M3_Locate", "M3_Clamp", "M3_FastAdvance", "M3_Pressing", "M3_Blow", "M3_Eject", "M3_ClearScrap"}};
+// clang-format on
 inline constexpr const char* mode_names[3] = {"Mode1", "Mode2", "Mode3"};
 
 template <int M, int K>
@@ -86,20 +87,20 @@ constexpr StateDef<PressContext> step_def() noexcept {
   if constexpr (K == 0) {
     return {step_names[M - 1][K], mode_state(M), no_state, false, nullptr, nullptr, &step_run<M, K>, nullptr};
   } else {
-    return {step_names[M - 1][K], mode_state(M), no_state, false, &set_on<valve_of_step(K)>,
+    return {step_names[M - 1][K],       mode_state(M),   no_state, false, &set_on<valve_of_step(K)>,
             &set_off<valve_of_step(K)>, &step_run<M, K>, nullptr};
   }
 }
 
 template <int M, std::size_t... K>
-constexpr void put_mode(std::array<StateDef<PressContext>, state_count>& t,
-                        std::index_sequence<K...>) noexcept {
+constexpr void put_mode(std::array<StateDef<PressContext>, state_count>& t, std::index_sequence<K...>) noexcept {
   t[mode_state(M)] = {mode_names[M - 1], stroke, step_state(M, 0), false, nullptr, nullptr, &mode_run<M>, nullptr};
   ((t[step_state(M, static_cast<int>(K))] = step_def<M, static_cast<int>(K)>()), ...);
 }
 
 constexpr std::array<StateDef<PressContext>, state_count> make_table() noexcept {
   std::array<StateDef<PressContext>, state_count> t{};
+  // clang-format off
   t[root] = {"Press", no_state, motor_off, false, nullptr, nullptr, nullptr, nullptr};
   t[motor_off] = {"MotorOff", root, no_state, false, nullptr, nullptr, &motor_off_run, nullptr};
   t[motor_on] = {"MotorOn", root, no_state, true, &set_on<Output::motor>, &set_off<Output::motor>, &motor_on_run, nullptr};
@@ -110,6 +111,7 @@ constexpr std::array<StateDef<PressContext>, state_count> make_table() noexcept 
   t[aux] = {"Aux", motor_on, cool_idle, false, &set_on<Output::lamp>, &set_off<Output::lamp>, nullptr, nullptr};
   t[cool_idle] = {"CoolIdle", aux, no_state, false, nullptr, nullptr, &cool_idle_run, nullptr};
   t[cooling] = {"Cooling", aux, no_state, false, &set_on<Output::cool_pump>, &set_off<Output::cool_pump>, &cooling_run, nullptr};
+  // clang-format on
   return t;
 }
 

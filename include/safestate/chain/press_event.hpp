@@ -14,8 +14,9 @@ namespace safestate::chain {
 /// `continuous` is the held continuous-running level, updated by continuous_on/_off.
 /// std::nullopt for a name that is not a model event (then `continuous` is unchanged).
 [[nodiscard]] inline std::optional<PressInputs> press_inputs_of(std::string_view e, bool& continuous) noexcept {
-  constexpr std::string_view known[] = {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2",
-                                        "mode3", "continuous_on", "continuous_off", "temp_high", "temp_ok"};
+  constexpr std::string_view known[] = {"motor_on",      "motor_off",      "start",     "ret",
+                                        "step_done",     "mode1",          "mode2",     "mode3",
+                                        "continuous_on", "continuous_off", "temp_high", "temp_ok"};
   bool ok = false;
   for (const std::string_view k : known) ok = ok || e == k;
   if (!ok) return std::nullopt;

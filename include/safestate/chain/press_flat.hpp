@@ -14,11 +14,11 @@ namespace safestate::chain {
 class PressFlat {
  public:
   PressOutputs cycle(const PressInputs& in) noexcept {
-    if (in.motor_on) MoToOut = true;   // if(MON==true)  MoToOut=1;
-    if (in.motor_off) MoToOut = false; // if(MOFF==true) MoToOut=0;
-    if (MoToOut) {                     // if(MoToOut==1) ... and no else: the bug
+    if (in.motor_on) MoToOut = true;    // if(MON==true)  MoToOut=1;
+    if (in.motor_off) MoToOut = false;  // if(MOFF==true) MoToOut=0;
+    if (MoToOut) {                      // if(MoToOut==1) ... and no else: the bug
       if (in.mode >= 1 && in.mode <= 3) FangShi = in.mode;
-      switch (Cur_Runing) {            // the three modes share one sequence (design §3)
+      switch (Cur_Runing) {  // the three modes share one sequence (design §3)
         case 0:
           if (in.ret) Cur_Runing = 0;
           else if (in.start) Cur_Runing = 1;

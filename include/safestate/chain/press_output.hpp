@@ -8,14 +8,24 @@
 namespace safestate::chain {
 
 enum class Output : std::uint8_t {
-  motor, feed_valve, locate_valve, clamp_valve, fast_valve, press_valve,
-  blow_valve, eject_valve, scrap_valve, lamp, cool_pump, count_,
+  motor,
+  feed_valve,
+  locate_valve,
+  clamp_valve,
+  fast_valve,
+  press_valve,
+  blow_valve,
+  eject_valve,
+  scrap_valve,
+  lamp,
+  cool_pump,
+  count_,
 };
 
 [[nodiscard]] constexpr const char* to_string(Output o) noexcept {
-  constexpr const char* names[] = {"motor", "feed_valve", "locate_valve", "clamp_valve",
-                                   "fast_valve", "press_valve", "blow_valve", "eject_valve",
-                                   "scrap_valve", "lamp", "cool_pump", "?"};
+  constexpr const char* names[] = {"motor",       "feed_valve",  "locate_valve", "clamp_valve",
+                                   "fast_valve",  "press_valve", "blow_valve",   "eject_valve",
+                                   "scrap_valve", "lamp",        "cool_pump",    "?"};
   return names[static_cast<int>(o)];
 }
 // The valve a stroke step energises (Ready: none; design page §3).

@@ -17,8 +17,7 @@ template <class Ctx, std::size_t N>
 using StateTable = std::array<StateDef<Ctx>, N>;
 
 template <class Ctx, std::size_t N>
-[[nodiscard]] constexpr bool is_descendant(const StateTable<Ctx, N>& t, std::size_t d,
-                                           std::size_t a) noexcept {
+[[nodiscard]] constexpr bool is_descendant(const StateTable<Ctx, N>& t, std::size_t d, std::size_t a) noexcept {
   for (StateIndex p = t[d].parent; p != no_state; p = t[p].parent) {
     if (p == a) return true;
   }
@@ -27,8 +26,7 @@ template <class Ctx, std::size_t N>
 
 // One past the last index of s's subtree (pre-order: the subtree is contiguous).
 template <class Ctx, std::size_t N>
-[[nodiscard]] constexpr std::size_t subtree_end(const StateTable<Ctx, N>& t,
-                                                std::size_t s) noexcept {
+[[nodiscard]] constexpr std::size_t subtree_end(const StateTable<Ctx, N>& t, std::size_t s) noexcept {
   std::size_t j = s + 1;
   while (j < N && is_descendant(t, j, s)) ++j;
   return j;
@@ -64,8 +62,7 @@ template <class Ctx, std::size_t N>
 class StateChain {
  public:
   // The table must outlive the chain and pass check_table().
-  constexpr StateChain(const StateTable<Ctx, N>& table, Ctx& ctx) noexcept
-      : table_(table), ctx_(ctx) {}
+  constexpr StateChain(const StateTable<Ctx, N>& table, Ctx& ctx) noexcept : table_(table), ctx_(ctx) {}
 
   // Power-up (SCH-01): activate the root down to its initial leaves.
   void start() noexcept {

@@ -14,9 +14,7 @@ class Requests {
  public:
   using Fn = RequestResult (*)(void* chain, StateIndex src, StateIndex dst) noexcept;
   constexpr Requests(void* chain, Fn fn) noexcept : chain_(chain), fn_(fn) {}
-  [[nodiscard]] RequestResult request(StateIndex src, StateIndex dst) const noexcept {
-    return fn_(chain_, src, dst);
-  }
+  [[nodiscard]] RequestResult request(StateIndex src, StateIndex dst) const noexcept { return fn_(chain_, src, dst); }
 
  private:
   void* chain_;

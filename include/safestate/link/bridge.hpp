@@ -24,12 +24,12 @@ namespace safestate::link {
 inline constexpr int kLinkSchemaVersion = 1;
 
 struct BridgeOptions {
-  std::string token;                          ///< the control token (read_token_file)
-  std::filesystem::path www;                  ///< static files of the panel (may be empty)
-  unsigned short port{0};                     ///< 0: an ephemeral port (see Bridge::port)
-  std::size_t max_frame_bytes{4096};          ///< larger frames close the socket (1009)
+  std::string token;                  ///< the control token (read_token_file)
+  std::filesystem::path www;          ///< static files of the panel (may be empty)
+  unsigned short port{0};             ///< 0: an ephemeral port (see Bridge::port)
+  std::size_t max_frame_bytes{4096};  ///< larger frames close the socket (1009)
   std::size_t max_clients{256};
-  std::size_t max_queued_frames{32};          ///< per client: status frames beyond are dropped
+  std::size_t max_queued_frames{32};  ///< per client: status frames beyond are dropped
   std::chrono::milliseconds status_period{50};
   std::chrono::milliseconds control_lease{1000};  ///< control released without heartbeat
 };
@@ -51,8 +51,8 @@ struct BridgeCounters {
   std::atomic<std::uint64_t> heartbeats{0};
   std::atomic<std::uint64_t> control_lease_expired{0};
   std::atomic<std::uint64_t> reads_paused{0};  ///< backpressure: a client's replies piled up
-  std::atomic<std::uint64_t> busy{0};  ///< the controller's requests not executed while its answers piled up
-  std::atomic<std::uint64_t> clients{0};  ///< connected WebSocket clients now
+  std::atomic<std::uint64_t> busy{0};          ///< the controller's requests not executed while its answers piled up
+  std::atomic<std::uint64_t> clients{0};       ///< connected WebSocket clients now
 };
 
 /// Reads the control token: the first line of `path`, which must be a regular file readable

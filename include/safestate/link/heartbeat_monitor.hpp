@@ -54,7 +54,7 @@ class HeartbeatMonitor {
   alignas(detail::kCacheLine) std::atomic<std::uint32_t> count_{0};
   alignas(detail::kCacheLine) std::uint32_t seen_{0};  // control thread only
   std::uint32_t period_;
-  std::uint32_t age_;      // control thread only
+  std::uint32_t age_;  // control thread only
 };
 
 }  // namespace safestate::link

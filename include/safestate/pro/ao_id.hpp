@@ -9,8 +9,8 @@ namespace safestate::pro {
 
 enum class AoId : std::uint8_t { monitoring = 0, control, safety, diagnostics, comms };
 
-inline constexpr std::array<AoId, 5> kDispatchOrder{AoId::monitoring, AoId::control,
-                                                    AoId::safety, AoId::diagnostics, AoId::comms};
+inline constexpr std::array<AoId, 5> kDispatchOrder{AoId::monitoring, AoId::control, AoId::safety, AoId::diagnostics,
+                                                    AoId::comms};
 
 // Critical AOs keep running in Degraded and while shutting down (§8); comms does not.
 [[nodiscard]] constexpr bool is_critical(AoId ao) noexcept { return ao != AoId::comms; }

@@ -12,8 +12,7 @@ namespace safestate::pro {
 
 class CommsAo final : public ActiveObject {
  public:
-  CommsAo(CycleData& data, CommunicationsUnit& unit) noexcept
-      : ActiveObject(AoId::comms), data_(data), unit_(unit) {}
+  CommsAo(CycleData& data, CommunicationsUnit& unit) noexcept : ActiveObject(AoId::comms), data_(data), unit_(unit) {}
   // The unit's own report (a server whose socket failed reports FAILED by itself).
   void sync_status() noexcept;
 

@@ -26,7 +26,7 @@ struct CycleData {
   std::uint8_t fan_output{100};       // safety -> the fan driver
   SafetyResult safety_result{SafetyResult::ok};
   ClearOutcome last_clear{ClearOutcome::none};
-  ProcessImage image{};               // diagnostics -> comms
+  ProcessImage image{};  // diagnostics -> comms
 };
 
 }  // namespace safestate::pro

@@ -13,8 +13,8 @@ namespace safestate::pro {
 
 // The four Modbus data tables. The fan controller populates coils and input registers;
 // discrete inputs and holding registers are empty (every address is illegal there).
-inline constexpr std::uint16_t kModbusCoilCount = 1;            // coil 0: latch clear request
-inline constexpr std::uint16_t kModbusInputRegisterCount = 6;   // input registers 0..5
+inline constexpr std::uint16_t kModbusCoilCount = 1;           // coil 0: latch clear request
+inline constexpr std::uint16_t kModbusInputRegisterCount = 6;  // input registers 0..5
 inline constexpr std::uint16_t kModbusDiscreteInputCount = 0;
 inline constexpr std::uint16_t kModbusHoldingRegisterCount = 0;
 

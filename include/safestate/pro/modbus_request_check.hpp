@@ -66,12 +66,9 @@ namespace modbus_check_detail {
   switch (fc) {
     case modbus_fc::read_coils:
     case modbus_fc::write_single_coil:
-    case modbus_fc::write_multiple_coils:
-      return kModbusCoilCount;
-    case modbus_fc::read_discrete_inputs:
-      return kModbusDiscreteInputCount;
-    case modbus_fc::read_input_registers:
-      return kModbusInputRegisterCount;
+    case modbus_fc::write_multiple_coils: return kModbusCoilCount;
+    case modbus_fc::read_discrete_inputs: return kModbusDiscreteInputCount;
+    case modbus_fc::read_input_registers: return kModbusInputRegisterCount;
     default:  // holding registers: read, write single, write multiple
       return kModbusHoldingRegisterCount;
   }
@@ -89,8 +86,7 @@ namespace modbus_check_detail {
       return (word < 1 || word > kMaxReadRegisters) ? ModbusReason::bad_quantity : ModbusReason::ok;
     case modbus_fc::write_single_coil:
       return (word == kCoilOn || word == kCoilOff) ? ModbusReason::ok : ModbusReason::bad_coil_value;
-    case modbus_fc::write_single_register:
-      return ModbusReason::ok;
+    case modbus_fc::write_single_register: return ModbusReason::ok;
     case modbus_fc::write_multiple_coils:
       if (word < 1 || word > kMaxWriteBits) return ModbusReason::bad_quantity;
       return pdu[5] == (word + 7) / 8 ? ModbusReason::ok : ModbusReason::bad_byte_count;
@@ -132,8 +128,7 @@ namespace modbus_check_detail {
     case modbus_fc::write_multiple_registers:
       expected_pdu = pdu_size >= 6 ? 6 + std::size_t{pdu[5]} : 6;  // ... byte count, values
       break;
-    default:
-      return exception(ModbusException::illegal_function, ModbusReason::unsupported_function);
+    default: return exception(ModbusException::illegal_function, ModbusReason::unsupported_function);
   }
   if (pdu_size != expected_pdu) return exception(ModbusException::illegal_data_value, ModbusReason::length_mismatch);
   const ModbusReason quantity = quantity_reason(fc, pdu);

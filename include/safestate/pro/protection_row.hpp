@@ -15,10 +15,10 @@ enum class ProtectionRow : std::uint8_t { p01, p02, p03, p04, p05 };
 
 // A row's guard over the tick's hazard (hz) and clear request (clr).
 enum class ProtectionGuard : std::uint8_t {
-  hazard,              // hz
-  clear_and_hazard,    // clr ∧ hz
-  clear_and_no_hazard, // clr ∧ ¬hz
-  always,              // TRUE
+  hazard,               // hz
+  clear_and_hazard,     // clr ∧ hz
+  clear_and_no_hazard,  // clr ∧ ¬hz
+  always,               // TRUE
 };
 
 struct ProtectionRowSpec {
@@ -38,21 +38,16 @@ inline constexpr std::array<ProtectionRowSpec, 5> kProtectionRows{{
 
 [[nodiscard]] constexpr bool guard_holds(ProtectionGuard g, bool hazard, bool clear_request) noexcept {
   switch (g) {
-    case ProtectionGuard::hazard:
-      return hazard;
-    case ProtectionGuard::clear_and_hazard:
-      return clear_request && hazard;
-    case ProtectionGuard::clear_and_no_hazard:
-      return clear_request && !hazard;
-    case ProtectionGuard::always:
-      return true;
+    case ProtectionGuard::hazard: return hazard;
+    case ProtectionGuard::clear_and_hazard: return clear_request && hazard;
+    case ProtectionGuard::clear_and_no_hazard: return clear_request && !hazard;
+    case ProtectionGuard::always: return true;
   }
   return false;
 }
 
 // The first row of `state` whose guard holds; every state ends with an `always` row.
-[[nodiscard]] constexpr ProtectionRow select_row(ProtectionState state, bool hazard,
-                                                 bool clear_request) noexcept {
+[[nodiscard]] constexpr ProtectionRow select_row(ProtectionState state, bool hazard, bool clear_request) noexcept {
   for (const ProtectionRowSpec& r : kProtectionRows) {
     if (r.state == state && guard_holds(r.guard, hazard, clear_request)) {
       return r.row;

@@ -46,14 +46,11 @@ class RuntimeSupervisor {
 
 [[nodiscard]] constexpr DispatchMode dispatch_mode(SupervisorState s) noexcept {
   switch (s) {
-    case SupervisorState::run:
-      return DispatchMode::all;
+    case SupervisorState::run: return DispatchMode::all;
     case SupervisorState::degraded:
-    case SupervisorState::shutting_down:
-      return DispatchMode::critical_only;
+    case SupervisorState::shutting_down: return DispatchMode::critical_only;
     case SupervisorState::init:
-    case SupervisorState::stopped:
-      break;
+    case SupervisorState::stopped: break;
   }
   return DispatchMode::none;
 }

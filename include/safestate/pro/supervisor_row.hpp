@@ -24,8 +24,8 @@ struct SupervisorRow {
 };
 
 namespace detail {
-inline constexpr std::uint8_t kLive = state_bit(SupervisorState::init) | state_bit(SupervisorState::run) |
-                                      state_bit(SupervisorState::degraded);
+inline constexpr std::uint8_t kLive =
+    state_bit(SupervisorState::init) | state_bit(SupervisorState::run) | state_bit(SupervisorState::degraded);
 }  // namespace detail
 
 inline constexpr std::array<SupervisorRow, 12> kSupervisorRows{{

@@ -15,16 +15,15 @@ namespace safestate::pro {
 struct PlantParameters {
   double heat_capacity_j_per_k{50.0};
   double ambient_c{25.0};
-  double g_still_w_per_k{2.0};   // natural convection, fan stopped
-  double g_fan_w_per_k{18.0};    // added at 100 % fan
+  double g_still_w_per_k{2.0};           // natural convection, fan stopped
+  double g_fan_w_per_k{18.0};            // added at 100 % fan
   std::uint16_t driver_lockout_dv{170};  // fan driver undervoltage lockout: 17.0 V
   double tick_s{0.1};
 };
 
 class ThermalPlant {
  public:
-  explicit ThermalPlant(PlantParameters p = {}, double start_c = 25.0) noexcept
-      : p_(p), temperature_c_(start_c) {}
+  explicit ThermalPlant(PlantParameters p = {}, double start_c = 25.0) noexcept : p_(p), temperature_c_(start_c) {}
 
   void set_heat_load_w(double w) noexcept { heat_w_ = w; }
   void set_supply_dv(std::uint16_t dv) noexcept { supply_dv_ = dv; }

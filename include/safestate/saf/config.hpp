@@ -36,12 +36,12 @@ inline constexpr std::uint32_t kMaxTimerCycles = 65535;
 
 /// SAF-04, in the seed's units (seconds), with the seed's defaults.
 struct Config {
-  double cycle_interval_s = 0.05;     // CYCLEINTERVAL
-  double estop_timeout_s = 0.1;       // ESTOPTIMEOUT
-  double report_data_timeout_s = 2.0; // REPORTDATATIMEOUT
-  double message_interval_s = 0.5;    // MESSAGEINTERVAL
-  double check_interval_s = 1.0;      // CHECKINTERVAL
-  std::uint8_t authority_code = 225;  // AUTHORITYCODE
+  double cycle_interval_s = 0.05;      // CYCLEINTERVAL
+  double estop_timeout_s = 0.1;        // ESTOPTIMEOUT
+  double report_data_timeout_s = 2.0;  // REPORTDATATIMEOUT
+  double message_interval_s = 0.5;     // MESSAGEINTERVAL
+  double check_interval_s = 1.0;       // CHECKINTERVAL
+  std::uint8_t authority_code = 225;   // AUTHORITYCODE
 
   /// ConfigError::None when every parameter is usable.
   [[nodiscard]] ConfigError validate() const noexcept;

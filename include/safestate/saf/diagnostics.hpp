@@ -15,7 +15,7 @@ struct Diagnostics {
   std::uint64_t cycles = 0;
   std::uint64_t accepted = 0;
   std::array<std::uint64_t, kDecodeErrorCount> rejected{};  // indexed by DecodeError
-  std::uint64_t inbound_dropped = 0;   // datagrams beyond kMaxInboundPerCycle (transport)
+  std::uint64_t inbound_dropped = 0;                        // datagrams beyond kMaxInboundPerCycle (transport)
   bool subsystem_state_known = false;
   SubsystemState subsystem_state = SubsystemState::Initialize;  // last Report Subsystem State
   std::uint64_t last_set_emergency_cycle = 0;

@@ -12,13 +12,13 @@ namespace safestate::saf {
 /// A message: its id and the fields its type carries (the others stay zero).
 struct Message {
   MessageId id = MessageId::QueryControl;
-  bool emergency = false;                                      // Set Estop
-  Health health = Health::Normal;                              // Report Health Summary
-  ControlResponse response = ControlResponse::Accepted;       // Confirm Control
+  bool emergency = false;                                // Set Estop
+  Health health = Health::Normal;                        // Report Health Summary
+  ControlResponse response = ControlResponse::Accepted;  // Confirm Control
   std::uint32_t component_id = 0;  // Report Control: holder (0 = nobody); Request Control: requester
   std::uint8_t authority = 0;      // Report Control, Request Control
   SubsystemState subsystem_state = SubsystemState::Initialize;  // Report/Set Subsystem State
-  ControlAction action = ControlAction::Request;               // Request Control
+  ControlAction action = ControlAction::Request;                // Request Control
 
   [[nodiscard]] static constexpr Message set_estop(bool emergency_set) noexcept {
     Message m{};

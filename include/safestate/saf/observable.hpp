@@ -20,10 +20,9 @@ struct Observable {
   OutSetState out_set_state = OutSetState::None;
 
   friend constexpr bool operator==(const Observable& a, const Observable& b) noexcept {
-    return a.state == b.state && a.estop == b.estop && a.estop_age == b.estop_age &&
-           a.health == b.health && a.health_age == b.health_age && a.control == b.control &&
-           a.control_age == b.control_age && a.out_request == b.out_request &&
-           a.out_set_state == b.out_set_state;
+    return a.state == b.state && a.estop == b.estop && a.estop_age == b.estop_age && a.health == b.health &&
+           a.health_age == b.health_age && a.control == b.control && a.control_age == b.control_age &&
+           a.out_request == b.out_request && a.out_set_state == b.out_set_state;
   }
 };
 

@@ -21,11 +21,11 @@ inline constexpr Mask kAnyState = 0x0F;
 
 enum class StateGuard : std::uint8_t {
   True,
-  HardwareFault,         // the cycle's hardware_fault input
-  PairedAndSafe,         // estop != NONE and not danger
-  Danger,                // estop = SET or timed out or health bad
+  HardwareFault,  // the cycle's hardware_fault input
+  PairedAndSafe,  // estop != NONE and not danger
+  Danger,         // estop = SET or timed out or health bad
   EstopTimedOut,
-  ClearAndSafe,          // estop = CLEAR and not danger
+  ClearAndSafe,  // estop = CLEAR and not danger
 };
 
 enum class StateEffect : std::uint8_t { Stay, EnterFault, LeaveEmergency, EnterEmergency };
@@ -57,8 +57,8 @@ enum class ControlGuard : std::uint8_t {
   EventAccepted,
   EventRefused,
   EventOther,
-  AgeReportDataTimeout,  // control_age >= ReportDataTimeoutCycles
-  AgeMessageInterval,    // control_age >= MessageIntervalCycles
+  AgeReportDataTimeout,    // control_age >= ReportDataTimeoutCycles
+  AgeMessageInterval,      // control_age >= MessageIntervalCycles
   EventAcceptedNoRelease,  // ev = ACCEPTED and no release sent yet this cycle
 };
 
@@ -78,6 +78,7 @@ inline constexpr Mask kRaising = static_cast<Mask>(kAnyState & ~bit(SafState::Op
 inline constexpr Mask kOperational = bit(SafState::Operational);
 
 /// Design §7, first match wins: K01-K09 in PAIRING, EMERGENCY and FAULT; K10 in OPERATIONAL.
+// clang-format off
 inline constexpr std::array<ControlRow, 10> kControlRows{{
     {"K01", kRaising, bit(ControlStatus::Released), ControlGuard::True, ControlEffect::Request},
     {"K02", kRaising, kWaiting, ControlGuard::EventAccepted, ControlEffect::Grant},
@@ -90,5 +91,6 @@ inline constexpr std::array<ControlRow, 10> kControlRows{{
     {"K09", kRaising, kAnyControl, ControlGuard::True, ControlEffect::Tick},
     {"K10", kOperational, bit(ControlStatus::Released), ControlGuard::EventAcceptedNoRelease, ControlEffect::ReleaseAgain},
 }};
+// clang-format on
 
 }  // namespace safestate::saf

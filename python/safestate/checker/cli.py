@@ -31,7 +31,8 @@ from .model import Model, default_config_path, load_model
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("model", help="the .tla module to check")
     p.add_argument("--config", help="the .cfg file (default: MODEL.cfg beside the module)")
-    p.add_argument("--workers", default="1", help="workers (processes of the Python engine, threads of the native one): a number or 'auto' (default 1)")
+    p.add_argument("--workers", default="1",
+                   help="workers (processes of the Python engine, threads of the native one): a number or 'auto' (default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.add_argument("--itf", metavar="FILE", help="write the counterexample as an ITF JSON trace")
     p.add_argument("--graph", metavar="FILE", help="write the whole reachable state graph as JSON")
@@ -321,7 +322,7 @@ def _property_summary(model: Model, r: CheckResult) -> dict[str, Any]:
     lasso = None
     if r.loop is not None and r.trace is not None:
         lasso = {"length": len(r.trace), "loop": r.loop, "stuttering": r.loop_step is None}
-    names = r.violated_properties or ([r.violated] if violated and r.violated else [])
+    names: list[Any] = r.violated_properties or ([r.violated] if violated and r.violated else [])
     return {"names": list(model.properties), "result": verdict, "violated": names, "lasso": lasso}
 
 

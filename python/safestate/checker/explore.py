@@ -38,6 +38,7 @@ from typing import Any, Callable
 
 from ..tla.enum_watch import ENUM_WATCH, MemoryLimitExceeded, rss_mb
 from ..tla.errors import EvalError, JavaOverrideError, ModuleEvalError, TlaError
+from ..tla.modules import DefSym
 from ..tla.tlcget import RUNTIME
 from ..tla.values import CONTAINER_TYPES, exact_key, same_kinds
 from .model import Model
@@ -244,7 +245,6 @@ class Explorer:
 
     # ---------------------------------------------------------------- search
     def run(self) -> CheckResult:
-        m = self.m
         if RUNTIME.used:
             RUNTIME.search = self
         ENUM_WATCH.arm(self.max_memory_mb, self.progress)
@@ -351,7 +351,7 @@ class Explorer:
                 err = TlaError("eval", f"{e.message}\nWhile working on the initial state", e.loc)
                 self.outcome = CheckResult("error", len(self.states), self.generated, 1,
                                            len(self.states) - self.head, None, [Step(st, "Init", {})], err)
-                raise _Stop()
+                raise _Stop() from None  # ends the search; the error is in self.outcome
             err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
             if idx >= 0:
                 self._finish("error", None, idx, error=err)
@@ -360,7 +360,6 @@ class Explorer:
             raise  # not reached: _finish raises _Stop
 
     def _expand_all(self) -> None:
-        m = self.m
         while self.head < len(self.states):
             self.expand(self.head)
             if self.live_edges:
@@ -378,7 +377,6 @@ class Explorer:
         resolve = self._resolve
         states, keys, same_kinds_, containers = self.states, self.keys, same_kinds, CONTAINER_TYPES
         invariants = m.invariants
-        holds = m.holds
         constrained = bool(m.constraints or m.action_constraints)
         keyed = m.view is not None or m.symmetry is not None
         graph = self.graph
@@ -595,7 +593,7 @@ def _check_postcondition(model: Model, result: CheckResult) -> None:
         return
     if not ok:
         sym = model.scope.lookup(post.name)
-        loc = sym.defn.body.loc if hasattr(sym, "defn") else post.loc
+        loc = sym.defn.body.loc if isinstance(sym, DefSym) else post.loc
         result.result = "error"
         result.error = TlaError("assumption", f"Postcondition {post.name} at line {loc.line}, col {loc.column} "
                                 f"of module {model.module.name} is false.", loc)

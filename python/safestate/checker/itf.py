@@ -81,7 +81,7 @@ def trace_to_itf(variables: list[str], steps: list[tuple[tuple, str, dict]], sou
     for i, (st, action, params) in enumerate(steps):
         meta = {"index": i, "action": action, "params": {k: value_to_itf(v) for k, v in params.items()}}
         states.append(state_to_itf(variables, st, meta))
-    out = {
+    out: dict[str, Any] = {
         "#meta": {"format": "ITF", "format-description": "https://apalache-mc.org/docs/adr/015adr-trace.html",
                   "source": source, "description": description},
         "vars": list(variables),

@@ -23,7 +23,7 @@ from typing import Any, Callable
 
 from ..tla import ast as A
 from ..tla.actions import ActionCompiler, Leaf
-from ..tla.compiler import Compiler, check_bool
+from ..tla.compiler import Compiler
 from ..tla.env import UNSET, Env, Frame
 from ..tla.errors import EvalError, Loc, TlaError, UnsupportedError
 from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoader, Scope, VarSym, build_root_scope,
@@ -31,7 +31,7 @@ from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoad
 from ..tla.parser import parse_text
 from ..tla.resolve import check_modules
 from ..tla.tlcget import RUNTIME
-from ..tla.values import FnValue, ModelValue, Value, as_set, fmt, register_token_order, reset_token_order
+from ..tla.values import FnValue, Value, as_set, fmt, register_token_order, reset_token_order
 from .cfg import Config, ConfigEntry, parse_config
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 from .itf import state_from_itf, state_to_itf
@@ -304,7 +304,7 @@ def _constants(config: Config, scope: Scope, module: A.Module) -> tuple[dict[str
     values: dict[str, Value] = {}
     overrides: dict[str, Any] = {}
     declared = {n: s for n, s in scope.names.items() if isinstance(s, ConstSym)}
-    for name, (value, loc) in config.constants.items():
+    for name, (value, _loc) in config.constants.items():
         sym = scope.lookup(name)
         if sym is None:
             continue  # TLC ignores a value for a name the spec does not have (not so for `<-`)

@@ -37,7 +37,7 @@ def write_lasso(out: TextIO, model: Model, r: CheckResult) -> None:
     """A liveness counterexample in TLC's words: the states, then "Back to state N"
     or "Stuttering" (nothing after a finite counterexample: "temporal safety failure")."""
     assert r.trace is not None
-    names = r.violated_properties or [r.violated]
+    names = r.violated_properties or [str(r.violated)]
     if len(names) == 1:
         print(f"Error: Temporal property {names[0]} was violated.", file=out)
     else:

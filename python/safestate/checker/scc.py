@@ -8,7 +8,7 @@ from typing import Callable, Iterable
 
 
 def strongly_connected(nodes: Iterable[int], succ: Callable[[int], Iterable[int]],
-                       member: Callable[[int], bool], n: int) -> list[list[int]]:
+                       member: Callable[[int], object], n: int) -> list[list[int]]:
     """The SCCs of the subgraph induced by `nodes` (ids below `n`; `member(v)` tells
     whether v is one of them), in Tarjan's order (a component before the components
     that reach it)."""

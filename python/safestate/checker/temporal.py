@@ -34,7 +34,7 @@ from typing import Any, Callable
 
 from ..tla import ast as A
 from ..tla.compiler import check_bool
-from ..tla.env import Env, Frame, SlotLocal
+from ..tla.env import Env, Frame, Local, SlotLocal
 from ..tla.errors import Loc, TlaError, UnsupportedError
 from ..tla.modules import DefSym, InstanceSym, Scope
 from ..tla.values import Value, as_set
@@ -221,7 +221,7 @@ class TemporalCompiler:
                 e = arg  # [][]F, <><>F
                 continue
             inner = arg.arg if isinstance(arg, A.Unary) and arg.op in ("[]", "<>") else None
-            if isinstance(inner, A.Unary) and inner.op == e.op and arg.op != e.op:
+            if isinstance(inner, A.Unary) and isinstance(arg, A.Unary) and inner.op == e.op and arg.op != e.op:
                 e = arg  # <>[]<>P is []<>P, []<>[]P is <>[]P
                 continue
             if (e.op == "[]" and isinstance(arg, A.Binary) and arg.op == "=>"
@@ -359,7 +359,7 @@ class TemporalCompiler:
     def _env(self, scope: Scope, binds: dict) -> tuple[Env, list[tuple[int, Value]]]:
         frame = Frame()
         slots = [(frame.alloc(), v) for v in binds.values()]
-        local = {n: SlotLocal(sl) for n, (sl, _) in zip(binds, slots)}
+        local: dict[str, Local] = {n: SlotLocal(sl) for n, (sl, _) in zip(binds, slots)}
         return Env(scope, frame, local), slots
 
     def pred(self, e: A.Expr, scope: Scope, binds: dict) -> Pred:

@@ -43,12 +43,16 @@ class Leaf:
     params: list[tuple[str, int]] = field(default_factory=list)
 
 
+def _not_compiled(s: Any, t: Any, L: list) -> None:
+    raise EvalError("recursive action run before its body is compiled")
+
+
 @dataclass
 class _RecursiveAction:
     """The compiled body of a recursive action-level operator (see
     `ActionCompiler.recursive_action`)."""
 
-    body: Code | None = None
+    body: Code = _not_compiled
     size: int = 0
     ret: int = 0
 
@@ -91,7 +95,7 @@ class ActionCompiler:
                 args = e.args if isinstance(e, A.Apply) else []
                 new_params: list[tuple[str, int]] = []
 
-                def body(b: A.Expr, benv: Env) -> Code:
+                def inline_body(b: A.Expr, benv: Env) -> Code:
                     for p in sym.defn.params:
                         loc_ = benv.locals.get(p.name)
                         # An argument passed unevaluated (LazyArgLocal) may never get a
@@ -99,7 +103,7 @@ class ActionCompiler:
                         if isinstance(loc_, SlotLocal):
                             new_params.append((p.name, loc_.slot))
                     return self.split(b, benv, sym.defn.name, sym.defn.loc, params + new_params, make_k)
-                pre, code = self.c.inline_def(sym, args, env, e.loc, body)
+                pre, code = self.c.inline_def(sym, args, env, e.loc, inline_body)
                 return _prefix_act(pre, code)
         return self.action(e, env, make_k(Leaf(label, label_loc, list(params))))
 
@@ -496,7 +500,8 @@ class ActionCompiler:
                 try:
                     ok = member(cur, S)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
                 if ok:
                     k(s, t, L)
         return assign_in
@@ -591,7 +596,8 @@ def _eq(a: Any, b: Any, loc: Loc) -> bool:
     try:
         return values_equal(a, b)
     except EvalError as err:
-        raise err.with_loc(loc)
+        err.with_loc(loc)
+        raise
 
 
 def _flat_bounds(bounds: list[A.Bound]) -> list[list[str]]:

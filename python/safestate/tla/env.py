@@ -10,7 +10,7 @@ invariant, Next) allocates ``[None] * frame.size`` per evaluation.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable
+from typing import Any, Callable, Mapping
 
 from . import ast as A
 from .modules import Scope
@@ -145,5 +145,5 @@ class Env:
     def bind(self, /, **bindings: Local) -> "Env":  # positional-only: a TLA+ name may be `self`
         return replace(self, locals={**self.locals, **bindings})
 
-    def bind_all(self, bindings: dict[str, Local]) -> "Env":
+    def bind_all(self, bindings: Mapping[str, Local]) -> "Env":
         return replace(self, locals={**self.locals, **bindings})

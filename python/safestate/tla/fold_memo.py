@@ -27,7 +27,7 @@ the first compile reached below its site.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Hashable
+from typing import Callable, Hashable
 
 from . import ast as A
 from .constfold import NO_VALUE, ConstFolder, const_value
@@ -59,10 +59,9 @@ class FoldMemo:
 
     def key(self, e: A.Expr, env: Env, keep: list) -> Hashable:
         """The meaning of the constant expression `e` in `env`."""
-        t = type(e)
-        if t in (A.Num, A.Str, A.Bool):
-            return (t.__name__, e.value)
-        if t is A.Name:
+        if isinstance(e, (A.Num, A.Str, A.Bool)):  # leaf classes: no subclasses
+            return (type(e).__name__, e.value)
+        if isinstance(e, A.Name):
             local = env.locals.get(e.name)
             if isinstance(local, ByNameLocal):
                 return self.key(local.expr, local.env, keep)

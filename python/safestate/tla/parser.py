@@ -10,13 +10,15 @@ from __future__ import annotations
 
 import re
 import warnings
+from typing import cast
 
 import tree_sitter_tlaplus
-from tree_sitter import Language, Node, Parser
+from tree_sitter import Language, Parser
 
 from . import ast as A
 from .comments import blank_comments
 from .errors import Loc, TlaError, UnsupportedError
+from .syntax_tree import Node
 
 with warnings.catch_warnings():
     # tree-sitter-tlaplus 1.5 still hands over the language as an int pointer.
@@ -93,9 +95,10 @@ def parse_text(text: str, file: str) -> list[A.Module]:
     text = blank_comments(text)
     data = text.encode("utf-8")
     tree = parser.parse(data)
+    root = cast(Node, tree.root_node)  # converted only once check_errors passes it: see syntax_tree.py
     conv = _Converter(data, file)
-    conv.check_errors(tree.root_node)
-    modules = [conv.module(n) for n in tree.root_node.named_children if n.type == "module"]
+    conv.check_errors(root)
+    modules = [conv.module(n) for n in root.named_children if n.type == "module"]
     if not modules:
         raise TlaError("syntax", "no MODULE found (expected '---- MODULE Name ----')", Loc(file, 1, 1))
     words, strings = _token_order(text)

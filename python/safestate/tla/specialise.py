@@ -55,7 +55,8 @@ def _eq_error(x: Any, y: Any, loc: Loc) -> bool:
     try:
         return values_equal(x, y)
     except EvalError as err:
-        raise err.with_loc(loc)
+        err.with_loc(loc)
+        raise
 
 
 def eq_code(a: Code, b: Code, loc: Loc, negate: bool) -> Code | None:

@@ -86,10 +86,8 @@ def _module_start(data: bytes) -> int:
 
 
 def _module_end(data: bytes) -> int:
-    m = None
-    for m in re.finditer(rb"^={4,}", data, re.M):
-        pass
-    return m.start() if m else len(data)
+    ends = list(re.finditer(rb"^={4,}", data, re.M))
+    return ends[-1].start() if ends else len(data)
 
 
 def _comment_end(data: bytes, pos: int) -> int:

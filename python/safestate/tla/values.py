@@ -43,6 +43,8 @@ class ModelValue:
     """A TLC model value (declared in the .cfg as ``a = a`` or ``S = {a, b}``)."""
 
     __slots__ = ("name", "rank")
+    name: str
+    rank: int
     _interned: dict[str, "ModelValue"] = {}
 
     def __new__(cls, name: str) -> "ModelValue":
@@ -280,7 +282,6 @@ class FnSetValue(LazySet):
 
     def contains(self, v: Value) -> bool:
         if type(v) is tuple:
-            keys: Iterable = range(1, len(v) + 1)
             vals: Iterable = v
             if not set_equal_keys(self.dom, len(v), None):
                 return False

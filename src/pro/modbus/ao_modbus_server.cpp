@@ -1,8 +1,6 @@
 #include "safestate/pro/ao_modbus_server.hpp"
 
 #include <arpa/inet.h>
-#include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <modbus/modbus.h>
 #include <netinet/in.h>
@@ -10,6 +8,8 @@
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
+#include <cerrno>
+#include <cstring>
 
 namespace safestate::pro {
 
@@ -134,8 +134,7 @@ bool AoModbusServer::handle_frame(Connection& c, const ProcessImage& image) noex
       sent = modbus_reply_exception(ctx_, c.buffer.data(), static_cast<unsigned>(verdict.exception));
       break;
     case ModbusAction::discard:
-    case ModbusAction::close_connection:
-      break;
+    case ModbusAction::close_connection: break;
   }
   count(verdict.reason);
   if (sent < 0 || verdict.action == ModbusAction::close_connection) {

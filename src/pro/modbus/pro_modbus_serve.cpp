@@ -26,10 +26,19 @@ constexpr const char* kUsage =
     "                        [--fan-percent N] [--protection-state N] [--supervisor-state N]\n"
     "                        [--last-clear-result N]\n";
 
-constexpr const char* kReasonNames[] = {
-    "ok", "unsupported_function", "length_mismatch", "bad_quantity", "bad_byte_count", "bad_coil_value",
-    "address_out_of_range", "wrong_unit_id", "wrong_protocol_id", "reserved_function", "bad_mbap_length", "truncated_frame",
-    "send_failed"};
+constexpr const char* kReasonNames[] = {"ok",
+                                        "unsupported_function",
+                                        "length_mismatch",
+                                        "bad_quantity",
+                                        "bad_byte_count",
+                                        "bad_coil_value",
+                                        "address_out_of_range",
+                                        "wrong_unit_id",
+                                        "wrong_protocol_id",
+                                        "reserved_function",
+                                        "bad_mbap_length",
+                                        "truncated_frame",
+                                        "send_failed"};
 static_assert(sizeof kReasonNames / sizeof kReasonNames[0] == safestate::pro::kModbusReasonCount);
 
 // Parses `text` as an integer in [lo, hi]; false (with a one-line error) otherwise.

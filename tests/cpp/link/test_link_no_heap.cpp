@@ -18,7 +18,6 @@
 #include "safestate/link/bridge.hpp"
 #include "safestate/link/control_loop.hpp"
 
-
 namespace {
 
 using namespace safestate;        // NOLINT: test code
@@ -62,7 +61,8 @@ TEST(RSM15_OperatorLinkNoHeap, TheControlCycleAllocatesNothingWith50ClientsConne
   for (int k = 0; k < 40; ++k) {  // two seconds of traffic
     ASSERT_TRUE(op.send_text(R"({"v":1,"type":"heartbeat"})"));
     if (k == 10) {
-      ASSERT_TRUE(op.send_text(R"({"v":1,"type":"command","id":4,"command":"JOG_START","axis":2,"direction":1,"speed_mm_s":400})"));
+      ASSERT_TRUE(op.send_text(
+          R"({"v":1,"type":"command","id":4,"command":"JOG_START","axis":2,"direction":1,"speed_mm_s":400})"));
     }
     ASSERT_TRUE(clients[1]->send_text("{not json"));
     ASSERT_TRUE(clients[2]->send_text(R"({"v":1,"type":"command","id":9,"command":"RESET"})"));

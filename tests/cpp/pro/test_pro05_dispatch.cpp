@@ -15,10 +15,7 @@ using safestate::pro::DispatchMode;
 std::vector<AoId> run(DispatchMode mode, bool comms_ready = true, bool control_ready = true) {
   std::vector<AoId> ran;
   const auto rec = dispatch_cycle(
-      mode,
-      [&](AoId ao) {
-        return (ao != AoId::comms || comms_ready) && (ao != AoId::control || control_ready);
-      },
+      mode, [&](AoId ao) { return (ao != AoId::comms || comms_ready) && (ao != AoId::control || control_ready); },
       [&](AoId ao) { ran.push_back(ao); });
   EXPECT_EQ(rec.count, ran.size());
   for (std::size_t i = 0; i < rec.count; ++i) EXPECT_EQ(rec.order[i], ran[i]);
@@ -26,15 +23,13 @@ std::vector<AoId> run(DispatchMode mode, bool comms_ready = true, bool control_r
 }
 
 TEST(PRO05_Dispatch, RunDispatchesEveryReadyAoInTheFixedOrder) {
-  EXPECT_EQ(run(DispatchMode::all), (std::vector<AoId>{AoId::monitoring, AoId::control,
-                                                       AoId::safety, AoId::diagnostics,
-                                                       AoId::comms}));
+  EXPECT_EQ(run(DispatchMode::all),
+            (std::vector<AoId>{AoId::monitoring, AoId::control, AoId::safety, AoId::diagnostics, AoId::comms}));
 }
 
 TEST(PRO05_Dispatch, DegradedSkipsCommunicationsEvenWhenReady) {
   EXPECT_EQ(run(DispatchMode::critical_only),
-            (std::vector<AoId>{AoId::monitoring, AoId::control, AoId::safety,
-                               AoId::diagnostics}));
+            (std::vector<AoId>{AoId::monitoring, AoId::control, AoId::safety, AoId::diagnostics}));
 }
 
 TEST(PRO05_Dispatch, AnAoNotReadyIsSkippedWithoutChangingTheOrder) {
@@ -42,8 +37,6 @@ TEST(PRO05_Dispatch, AnAoNotReadyIsSkippedWithoutChangingTheOrder) {
             (std::vector<AoId>{AoId::monitoring, AoId::safety, AoId::diagnostics, AoId::comms}));
 }
 
-TEST(PRO05_Dispatch, NothingIsDispatchedBeforeRunOrAfterShutdown) {
-  EXPECT_TRUE(run(DispatchMode::none).empty());
-}
+TEST(PRO05_Dispatch, NothingIsDispatchedBeforeRunOrAfterShutdown) { EXPECT_TRUE(run(DispatchMode::none).empty()); }
 
 }  // namespace

@@ -84,8 +84,8 @@ TEST(PRO05_Supervisor, ShutdownGoesThroughTheStopOrderOutputsFirstAndCompletesWh
   s = sup.tick(in);
   EXPECT_TRUE(sup.outputs_safe());
   EXPECT_EQ(sup.stop_step(), 2U);
-  const UnitId expected[] = {UnitId::comms, UnitId::diagnostics, UnitId::safety, UnitId::control,
-                             UnitId::monitoring, UnitId::dispatcher, UnitId::timer};
+  const UnitId expected[] = {UnitId::comms,      UnitId::diagnostics, UnitId::safety, UnitId::control,
+                             UnitId::monitoring, UnitId::dispatcher,  UnitId::timer};
   for (const UnitId u : expected) {
     EXPECT_EQ(sup.stop_target().unit, u);
     in.status[index(u)] = UnitStatus::stopped;
@@ -119,8 +119,8 @@ TEST(PRO05_Supervisor, EveryRowOfThePageIsInTheTableInThePagesOrder) {
   std::string ids;
   std::string line;
   while (std::getline(text, line)) {
-    if (line.size() > 6 && line.rfind("| ", 0) == 0 && (line[2] == 'X' || line[2] == 'I' || line[2] == 'R' ||
-                                                        line[2] == 'D' || line[2] == 'S' || line[2] == 'T') &&
+    if (line.size() > 6 && line.rfind("| ", 0) == 0 &&
+        (line[2] == 'X' || line[2] == 'I' || line[2] == 'R' || line[2] == 'D' || line[2] == 'S' || line[2] == 'T') &&
         std::isdigit(static_cast<unsigned char>(line[3])) != 0 && line[5] == ' ') {
       ids += line.substr(2, 3) + " ";
     }

@@ -54,8 +54,7 @@ TEST(PRO_Invariants, EveryPreStateAndSnapshotOfTheModelAlphabet) {
             EXPECT_EQ(ctx.latch_active, after);
             EXPECT_EQ(ctx.override_active, after);
             EXPECT_EQ(safety.fan_output(0) == safestate::pro::kSafeFanCommandPercent, after);
-            EXPECT_TRUE(result != SafetyResult::protection_entered ||
-                        safety.last_fault_event() != FaultCause::none);
+            EXPECT_TRUE(result != SafetyResult::protection_entered || safety.last_fault_event() != FaultCause::none);
             ++checked;
           }
         }

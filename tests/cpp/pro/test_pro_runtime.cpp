@@ -28,7 +28,9 @@ struct Loop {
   ProtectionState prot() const { return rt.safety().context().protection_state; }
 };
 
-std::vector<AoId> order(const TickReport& r) { return {r.dispatched.order.begin(), r.dispatched.order.begin() + static_cast<long>(r.dispatched.count)}; }
+std::vector<AoId> order(const TickReport& r) {
+  return {r.dispatched.order.begin(), r.dispatched.order.begin() + static_cast<long>(r.dispatched.count)};
+}
 
 TEST(PRO05_Runtime, InitStartsEveryUnitAndRunsTheFiveAosInTheFixedOrder) {
   Loop l;
@@ -36,8 +38,8 @@ TEST(PRO05_Runtime, InitStartsEveryUnitAndRunsTheFiveAosInTheFixedOrder) {
   const TickReport r = l.tick();
   EXPECT_EQ(r.state, SupervisorState::run);
   EXPECT_EQ(std::string(r.row->id), "I01");
-  EXPECT_EQ(order(r), (std::vector<AoId>{AoId::monitoring, AoId::control, AoId::safety, AoId::diagnostics,
-                                         AoId::comms}));
+  EXPECT_EQ(order(r),
+            (std::vector<AoId>{AoId::monitoring, AoId::control, AoId::safety, AoId::diagnostics, AoId::comms}));
   EXPECT_EQ(l.panel.served(), 1U);
   EXPECT_EQ(l.rt.overflow_count(), 0U);
 }
@@ -160,7 +162,7 @@ TEST(PRO01_Sensor, StuckOutOfRangeFlaggedAndImplausibleReadingsAreInvalid) {
   RawSample s{40, 240, 1, false};
   EXPECT_EQ(v.validate(s), SensorVerdict::ok);
   for (int i = 0; i < 2; ++i) EXPECT_EQ(v.validate(s), SensorVerdict::ok);  // frozen 1, 2 ticks
-  EXPECT_EQ(v.validate(s), SensorVerdict::stuck);                            // frozen 3 ticks
+  EXPECT_EQ(v.validate(s), SensorVerdict::stuck);                           // frozen 3 ticks
   s.sequence = 2;
   EXPECT_EQ(v.validate(s), SensorVerdict::ok);
   s.sequence = 3;

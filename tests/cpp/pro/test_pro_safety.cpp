@@ -14,8 +14,7 @@ using safestate::pro::ProtectionState;
 using safestate::pro::SafetyResult;
 using safestate::pro::SensorSnapshot;
 
-SensorSnapshot reading(std::int16_t temp_c, std::uint16_t volt_dv, bool valid = true,
-                       bool clear = false) {
+SensorSnapshot reading(std::int16_t temp_c, std::uint16_t volt_dv, bool valid = true, bool clear = false) {
   return SensorSnapshot{temp_c, volt_dv, valid, clear};
 }
 

@@ -29,21 +29,23 @@ TEST(SAF03_Ids, SeedIdsWithHighWordOne) {
 }
 
 TEST(SAF03_Codec, LittleEndianLayoutOfSetEstop) {
-  EXPECT_EQ(bytes_of(pressed()),
-            (std::vector<std::uint8_t>{0x3C, 0x01, 0, 0, 0x01, 0, 0, 0, 0x01, 0x00, 0x01}));
+  EXPECT_EQ(bytes_of(pressed()), (std::vector<std::uint8_t>{0x3C, 0x01, 0, 0, 0x01, 0, 0, 0, 0x01, 0x00, 0x01}));
   EXPECT_EQ(bytes_of(Message::request_control(ControlAction::Request, 225, 0x01020304)),
             (std::vector<std::uint8_t>{0x2A, 0x01, 0, 0, 0x01, 0, 0, 0, 0x06, 0x00, 0, 225, 4, 3, 2, 1}));
 }
 
 TEST(SAF03_Codec, EveryTypeRoundTrips) {
-  const Message all[] = {
-      pressed(), clear(), health(Health::Fatal), refused(), accepted(),
-      Message::report_control(0xDEADBEEF, 200),
-      Message::report_subsystem_state(SubsystemState::Failure),
-      Message::query(MessageId::QueryHealthSummary),
-      Message::request_control(ControlAction::Release, 225, 77),
-      Message::query(MessageId::QueryControl),
-      Message::set_subsystem_state(SubsystemState::Emergency)};
+  const Message all[] = {pressed(),
+                         clear(),
+                         health(Health::Fatal),
+                         refused(),
+                         accepted(),
+                         Message::report_control(0xDEADBEEF, 200),
+                         Message::report_subsystem_state(SubsystemState::Failure),
+                         Message::query(MessageId::QueryHealthSummary),
+                         Message::request_control(ControlAction::Release, 225, 77),
+                         Message::query(MessageId::QueryControl),
+                         Message::set_subsystem_state(SubsystemState::Emergency)};
   for (const Message& m : all) {
     const Encoded e = encode(m);
     const DecodeResult r = decode(e.bytes.data(), e.size);
@@ -90,8 +92,14 @@ TEST(SAF03_Malformed, LengthFieldDiffersFromTheType) {
 }
 
 TEST(SAF03_Malformed, FieldOutOfRange) {
-  struct Case { Message m; std::size_t offset; std::uint8_t value; };
-  const Case cases[] = {{pressed(), 10, 2}, {health(Health::Normal), 10, 4}, {accepted(), 10, 3},
+  struct Case {
+    Message m;
+    std::size_t offset;
+    std::uint8_t value;
+  };
+  const Case cases[] = {{pressed(), 10, 2},
+                        {health(Health::Normal), 10, 4},
+                        {accepted(), 10, 3},
                         {Message::report_subsystem_state(SubsystemState::Initialize), 10, 4},
                         {Message::request_control(ControlAction::Request, 225, 1), 10, 2},
                         {Message::set_subsystem_state(SubsystemState::Emergency), 10, 0xFF}};
@@ -112,8 +120,7 @@ TEST(SAF03_Service, OutgoingTypesAreRejectedAsNotIncoming) {
 TEST(SAF03_Service, RejectedDatagramsChangeNothingButTheirCounter) {
   SafetyService a = operational();
   SafetyService b = operational();
-  std::vector<std::vector<std::uint8_t>> garbage = {
-      {}, {1}, std::vector<std::uint8_t>(100, 0xFF), bytes_of(pressed())};
+  std::vector<std::vector<std::uint8_t>> garbage = {{}, {1}, std::vector<std::uint8_t>(100, 0xFF), bytes_of(pressed())};
   garbage[3][10] = 7;  // FIELD_RANGE, an emergency flag of 7
   for (int i = 0; i < 2; ++i) {
     InboundBatch with{};

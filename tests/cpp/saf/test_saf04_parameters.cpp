@@ -70,8 +70,8 @@ TEST(SAF04_Parameters, QueryHealthEveryMessageIntervalQueryControlEveryCheckInte
     health_queries += find(r.outbox, MessageId::QueryHealthSummary) != nullptr;
     control_queries += find(r.outbox, MessageId::QueryControl) != nullptr;
   }
-  EXPECT_EQ(health_queries, 10);   // every 0.5 s
-  EXPECT_EQ(control_queries, 5);   // every 1.0 s
+  EXPECT_EQ(health_queries, 10);  // every 0.5 s
+  EXPECT_EQ(control_queries, 5);  // every 1.0 s
 }
 
 TEST(SAF04_Parameters, QueryControlAlsoWhileReleasedToFindALostRelease) {

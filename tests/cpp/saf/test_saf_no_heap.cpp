@@ -32,8 +32,8 @@ TEST(SAF03_NoHeap, CycleNeverAllocates) {
   SafetyService s{Config{}};
   std::mt19937 rng(7);
   std::uint8_t junk[80];
-  std::array<Encoded, 5> valid{encode(clear()), encode(pressed()), encode(health(Health::Fatal)),
-                               encode(accepted()), encode(taken_by_other())};
+  std::array<Encoded, 5> valid{encode(clear()), encode(pressed()), encode(health(Health::Fatal)), encode(accepted()),
+                               encode(taken_by_other())};
   g_on = true;
   for (int i = 0; i < 100000; ++i) {
     InboundBatch b{};

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "saf_test_support.hpp"
 #include "safestate/saf/safety_client_sim.hpp"
 #include "safestate/saf/subsystem_sim.hpp"
-#include "saf_test_support.hpp"
 
 namespace safestate::saf::test {
 namespace {

@@ -93,4 +93,5 @@ class Op(IntEnum):
 
 
 assert (core.OP_COUNT, core.OP_IN_SD, core.OP_SD_STRING, core.OP_A_BIND, core.OP_SELECTSEQ,
-        core.OP_BIND_MEMO) == (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ, Op.BIND_MEMO), "checker/native/ops.py is out of step with the C++ core"
+        core.OP_BIND_MEMO) == (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ, Op.BIND_MEMO), \
+    "checker/native/ops.py is out of step with the C++ core"

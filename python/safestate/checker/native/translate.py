@@ -14,7 +14,7 @@ naming file:line:col and "not supported by the native engine": never a guess.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, Iterable, cast
 
 from ...tla import ast as A
 from ...tla.compile.lazy_args import first_evaluated
@@ -114,7 +114,7 @@ class Translator:
         self._iterates: dict[int, tuple[Node, bool]] = {}
 
     # ---------------------------------------------------------------- nodes
-    def node(self, op: Op, loc: Loc, ints: tuple = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
+    def node(self, op: Op, loc: Loc, ints: Iterable[int] = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
         key = (loc.file, loc.line, loc.column) if loc else ("", 0, 0)
         li = self._loc_index.get(key)
         if li is None:
@@ -422,7 +422,7 @@ class Translator:
             return self.node(Op.SD_REC, e.loc, keys, kids=tuple(self.set_test(s, env, depth + 1) for _, s in e.fields))
         set_op = {"\\cup": Op.SD_CUP, "\\cap": Op.SD_CAP, "\\": Op.SD_DIFF}.get(e.op) \
             if isinstance(e, A.Binary) and not isinstance(self.lookup(e.op, env), DefSym) else None
-        if set_op is not None:
+        if set_op is not None and isinstance(e, A.Binary):  # set_op implies a Binary
             return self.node(set_op, e.loc, kids=(self.set_test(e.lhs, env, depth + 1), self.set_test(e.rhs, env, depth + 1)))
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(self.lookup("..", env), BuiltinSym):
             return self.node(Op.SD_RANGE, e.loc, kids=(self.expr(e.lhs, env), self.expr(e.rhs, env)))
@@ -603,7 +603,8 @@ class Translator:
             ints.append(len(u.path))
             for kind, item in u.path:
                 if kind == "field":
-                    kids.append(self.node(Op.CONST, e.loc, v=self.bridge.engine.mk_str(item, string_rank(item))))
+                    name = cast(str, item)  # a ("field", name) item
+                    kids.append(self.node(Op.CONST, e.loc, v=self.bridge.engine.mk_str(name, string_rank(name))))
                 else:
                     kids.append(self.fn_arg(item, env, e.loc))  # type: ignore[arg-type]
             kids.append(self.expr(u.value, env2))

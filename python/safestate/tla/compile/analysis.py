@@ -12,6 +12,7 @@ from .. import ast as A
 from ..env import ByNameLocal, Env, Frame
 from ..modules import BuiltinSym, DefSym, SubstSym, VarSym
 from .syntax import _children
+from .host import CompilerHost
 
 
 @dataclass
@@ -30,7 +31,7 @@ _NO_INFO = Info(frozenset(), False)
 SEARCH_STATE = -1
 
 
-class AnalysisMixin:
+class AnalysisMixin(CompilerHost):
     """Variables read and action level of expressions and definitions."""
 
     def info(self, e: Any, env: Env) -> Info:
@@ -73,7 +74,7 @@ class AnalysisMixin:
             vs.update(pinfo.vars)
             action[0] = action[0] or pinfo.action
         if isinstance(e, A.Let):
-            bound = bound | {d.name for d in e.defs}
+            bound = bound | {d.name for d in e.defs if d.name is not None}
             for d in e.defs:
                 if isinstance(d, A.InstanceDef):
                     env = replace(env, scope=self.let_scope(d, env))

@@ -12,6 +12,7 @@ from ..env import Code, Env, SlotLocal
 from ..errors import EvalError, Loc
 from ..values import IntervalSet, LazySet, fmt, kind, make_fn, sorted_elems
 from .closures import Value
+from .host import CompilerHost
 
 
 def _enum_checked(S: Value, loc: Loc) -> Any:
@@ -60,7 +61,7 @@ def _comprehension(binds: list, body: Code, finish: Callable | None, key_of: Cal
     return run
 
 
-class BindersMixin:
+class BindersMixin(CompilerHost):
     """Slots of bound variables."""
 
     def bind_bounds(self, bounds: list[A.Bound], env: Env) -> tuple[Env, list[tuple[Code, list[int], bool, Loc]]]:

@@ -6,7 +6,7 @@ and the rules on when an operator is expanded (`expansion.py`) instead of called
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from .. import ast as A
 from ..env import NOTSET, UNSET, Code, Env, Frame, LetOpLocal, Local, OpLocal, SlotLocal, ThunkLocal
@@ -19,16 +19,14 @@ from .lazy_args import (cannot_fail, first_evaluated, lazy_binding, passed_by_va
                         speculative_call, thunk_code)
 from .operators import _CORE_BINARY
 from .syntax import all_names
-
-if TYPE_CHECKING:
-    from ..compiler import Compiler
+from .host import CompilerHost
 
 
 class CompiledDef:
     """A compiled operator definition (body closure and frame size); zero-argument
     constant-level definitions are evaluated once and cached."""
 
-    def __init__(self, compiler: Compiler, sym: DefSym) -> None:
+    def __init__(self, compiler: CompilerHost, sym: DefSym) -> None:
         self.body: Code = _not_ready
         self.size = 0
         self.holder_only = True
@@ -51,7 +49,7 @@ def _not_ready(s: Any, t: Any, L: list) -> Value:
     raise EvalError("definition used before it is compiled (circular definition?)")
 
 
-class CallsMixin:
+class CallsMixin(CompilerHost):
     """Calls of user, LET, LAMBDA and built-in operators."""
 
     _lazy_defs: dict[int, tuple[Any, Any]]  # set by Compiler.__init__, as _lazy_mode
@@ -75,7 +73,7 @@ class CallsMixin:
     def _reference_with_caller_args(self, name: str, args: list[A.Expr], op_env: Env, env: Env, loc: Loc) -> Code:
         # Arguments belong to the caller's environment: bind them by value first.
         bindings, pre = self._bind_args_by_value(args, env)
-        fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(args)]
+        fake: list[A.Expr] = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(args)]
         code = self.reference(name, fake, op_env.bind_all(bindings), loc)
         return _prefix(pre, code)
 
@@ -107,7 +105,7 @@ class CallsMixin:
                 return lambda s, t, L: core(a0(s, t, L), a1(s, t, L))
             raise self._unknown(name, loc)
         bindings, pre = self._bind_args_by_value(args, env)
-        fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(args)]
+        fake: list[A.Expr] = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(args)]
         return _prefix(pre, self._symbol_ref(name, sym, fake, env.bind_all(bindings), loc))
 
     def _call_def(self, sym: DefSym, args: list[A.Expr], env: Env, loc: Loc) -> Code:
@@ -261,7 +259,7 @@ class CallsMixin:
             return lambda s, t, L: L[slot]
         # A named operator: build a callable evaluating it on argument values.
         slots = [env.frame.alloc() for _ in range(arity)]
-        fake = [A.Name(a.loc, f"$p{i}") for i in range(arity)]
+        fake: list[A.Expr] = [A.Name(a.loc, f"$p{i}") for i in range(arity)]
         inner_env = env.bind_all({f"$p{i}": SlotLocal(sl) for i, sl in enumerate(slots)})
         self._no_inline += 1
         try:

@@ -58,7 +58,8 @@ def _guard(code: Code, loc: Loc) -> Code:
         try:
             return code(s, t, L)
         except EvalError as err:
-            raise err.with_loc(loc)
+            err.with_loc(loc)
+            raise
         except (TypeError, RecursionError) as err:
             raise EvalError(_python_error(err), loc) from None
     return guarded

@@ -12,9 +12,10 @@ from ..env import Code, Env
 from ..errors import EvalError
 from .binders import _enum_checked, _assign
 from .closures import Value, check_bool
+from .host import CompilerHost
 
 
-class ConditionalsMixin:
+class ConditionalsMixin(CompilerHost):
     """IF, CASE and CHOOSE."""
 
     def c_If(self, e: A.If, env: Env) -> Code:
@@ -99,6 +100,6 @@ class ConditionalsMixin:
                     return v
                 if r is not False:
                     check_bool(r, e.body.loc, "CHOOSE body")
-            raise EvalError(f"Attempted to compute the value of an expression of form\nCHOOSE x \\in S: P, "
-                            f"but no element of S satisfied P.", loc)
+            raise EvalError("Attempted to compute the value of an expression of form\nCHOOSE x \\in S: P, "
+                            "but no element of S satisfied P.", loc)
         return choose

@@ -19,9 +19,10 @@ from ..errors import Loc, UnsupportedError
 from ..modules import DefSym
 from .lazy_args import cannot_fail, lazy_binding, passed_by_value
 from .syntax import all_names
+from .host import CompilerHost
 
 
-class ExpansionMixin:
+class ExpansionMixin(CompilerHost):
     """Operators expanded at their call site, and the binding of their parameters."""
 
     # Operators being expanded, by definition: how often each is nested in itself.
@@ -152,4 +153,4 @@ class ExpansionMixin:
             return True
         # A name bound to a state-reading argument reads state too.
         locs = [env.locals.get(n) for n in all_names(a)]
-        return any(isinstance(l, (SlotLocal, LazyLocal)) and l.source is not None for l in locs)
+        return any(isinstance(b, (SlotLocal, LazyLocal)) and b.source is not None for b in locs)

@@ -9,7 +9,7 @@ value stored in a state, see checker/storable.py).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 
 from .. import ast as A
 from ..constfold import NO_VALUE, const_code, const_value
@@ -21,6 +21,7 @@ from ..values import (FnSetValue, FnValue, IntervalSet, LazySet, ModelValue, Pro
 from .binders import _assign, _enum_checked, _comprehension
 from .closures import Value, _guard, _need_set
 from .recursive_functions import RecursiveFunction
+from .host import CompilerHost
 
 
 def _update(f: Value, keys: list, i: int, val: Code, s: Any, t: Any, L: list, at_slot: int, loc: Loc) -> Value:
@@ -67,7 +68,7 @@ def _check_argument_kind(fv: FnValue, k: Value, loc: Loc) -> None:
         raise err.with_loc(loc) from None
 
 
-class FunctionsMixin:
+class FunctionsMixin(CompilerHost):
     """Functions, records, tuples and EXCEPT."""
 
     def c_FnLit(self, e: A.FnLit, env: Env) -> Code:
@@ -148,7 +149,8 @@ class FunctionsMixin:
                 try:
                     return fv.apply(k)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             elif type(fv) is str and type(k) is int and 0 < k <= len(fv):
                 return fv[k - 1]
             else:
@@ -194,7 +196,7 @@ class FunctionsMixin:
                 if kind_ == "field":
                     path.append(const_code(item))
                 else:
-                    exprs = item  # type: ignore[assignment]
+                    exprs = cast("list[A.Expr]", item)  # an ("index", [exprs]) item
                     if len(exprs) == 1:
                         path.append(self.expr(exprs[0], env))
                     else:

@@ -12,9 +12,10 @@ from ..errors import TlaError
 from ..modules import DefSym, InstanceSym, Scope
 from .closures import _prefix
 from .lazy_args import cannot_fail, speculable, speculative
+from .host import CompilerHost
 
 
-class InstancesMixin:
+class InstancesMixin(CompilerHost):
     """References through ``I!`` prefixes."""
 
     _lazy_mode: int  # set by Compiler.__init__ (compile/lazy_args.py)
@@ -60,7 +61,7 @@ class InstancesMixin:
             raise self._unknown(e.name, e.loc)
         # Operator arguments are compiled in the caller's environment, by value.
         arg_bindings, arg_pre = self._bind_args_by_value(e.args, env, lazy)
-        fake = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
+        fake: list[A.Expr] = [A.Name(a.loc, f"$arg{i}") for i, a in enumerate(e.args)]
         inner_env = Env(scope, env.frame, {**bindings, **arg_bindings}, env.init_mode, env.primed,
                         enabled_cut=env.enabled_cut)
         pre = pre + arg_pre

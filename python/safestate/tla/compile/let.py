@@ -13,9 +13,10 @@ from ..env import NOTSET, ByNameLocal, Code, Env, LazyLocal, LetOpLocal
 from ..modules import Scope, let_instance_scope
 from .closures import Value
 from .syntax import all_names
+from .host import CompilerHost
 
 
-class LetMixin:
+class LetMixin(CompilerHost):
     """LET expressions and their definitions."""
 
     def c_Let(self, e: A.Let, env: Env) -> Code:
@@ -30,7 +31,7 @@ class LetMixin:
             return body(s, t, L)
         return let
 
-    def bind_let(self, defs: list[A.OpDef], env: Env) -> tuple[Env, list[int]]:
+    def bind_let(self, defs: list[A.OpDef | A.InstanceDef], env: Env) -> tuple[Env, list[int]]:
         resets: list[int] = []
         for d in defs:
             if isinstance(d, A.InstanceDef):

@@ -12,9 +12,10 @@ from ..env import Code, Env
 from ..errors import EvalError
 from .binders import _enum_checked, _assign
 from .closures import check_bool
+from .host import CompilerHost
 
 
-class LogicMixin:
+class LogicMixin(CompilerHost):
     """Conjunctions, disjunctions and quantifiers."""
 
     def c_And(self, e: A.And, env: Env) -> Code:

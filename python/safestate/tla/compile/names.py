@@ -17,9 +17,10 @@ from ..specialise import lazy_read, slot_read, var_read
 from ..values import BOOLEAN, STRING
 from .closures import _prefix
 from .lazy_args import thunk_read
+from .host import CompilerHost
 
 
-class NamesMixin:
+class NamesMixin(CompilerHost):
     """References to names and their primed forms."""
 
     def c_Name(self, e: A.Name, env: Env) -> Code:

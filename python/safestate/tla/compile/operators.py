@@ -7,7 +7,7 @@ shared with operator arguments (`calls.py`).
 from __future__ import annotations
 
 import operator
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, cast
 
 from .. import ast as A
 from ..constfold import const_value
@@ -19,6 +19,10 @@ from ..stdlib import (NATURALS, TLC_MAX_INT, TLC_MIN_INT, cap, cup, domain, non_
                       subseteq, union)
 from ..values import IntervalSet, LazySet, PowerSet, as_set, fmt, member, values_equal
 from .closures import Value, check_bool, _guard, _python_error, _need_set
+from .host import CompilerHost
+
+if TYPE_CHECKING:
+    from ..compiler import Compiler
 
 
 def _subset(a: Value, b: Value) -> bool:
@@ -107,7 +111,8 @@ def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callabl
                     return fast(x, y)
                 return fn(x, y)
             except EvalError as err:
-                raise err.with_loc(loc)
+                err.with_loc(loc)
+                raise
             except (TypeError, RecursionError) as err:
                 raise EvalError(_python_error(err), loc) from None
         c = const_value(b)
@@ -116,7 +121,8 @@ def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callabl
                 try:
                     x = a(s, t, L)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
                 except (TypeError, RecursionError) as err:
                     raise EvalError(_python_error(err), loc) from None
                 if type(x) is int:
@@ -124,7 +130,8 @@ def _checked(op: str, fn: Callable, fast: Callable[[int, int], int], ok: Callabl
                 try:
                     return fn(x, c)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             return code_c
         return code
     return make
@@ -140,7 +147,7 @@ _FAST_INT = {
 }
 
 
-class OperatorsMixin:
+class OperatorsMixin(CompilerHost):
     """Binary and unary operators."""
 
     def c_Binary(self, e: A.Binary, env: Env) -> Code:
@@ -175,7 +182,8 @@ class OperatorsMixin:
                 try:
                     return values_equal(x, y)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             return eq
         if op == "/=":
             def neq(s: Any, t: Any, L: list) -> bool:
@@ -186,7 +194,8 @@ class OperatorsMixin:
                 try:
                     return not values_equal(x, y)
                 except EvalError as err:
-                    raise err.with_loc(loc)
+                    err.with_loc(loc)
+                    raise
             return neq
         if op == "=>":
             la, lb = e.lhs.loc, e.rhs.loc
@@ -207,11 +216,11 @@ class OperatorsMixin:
         if core is not None:
             return _guard(lambda s, t, L: core(a(s, t, L), b(s, t, L)), loc)
         if isinstance(sym, BuiltinSym):
-            fast = _FAST_INT.get(op) if sym.builtin is NATURALS.get(op) else None
-            if fast is not None:
+            fast_int = _FAST_INT.get(op) if sym.builtin is NATURALS.get(op) else None
+            if fast_int is not None:
                 if op == "..":
                     a, b = self._interval_bound(e.lhs, a, env), self._interval_bound(e.rhs, b, env)
-                return fast(a, b, loc)
+                return fast_int(a, b, loc)
             fn = sym.builtin.fn
             return _guard(lambda s, t, L: fn(a(s, t, L), b(s, t, L)), loc)
         if op in ("~>", "-+->"):
@@ -226,7 +235,7 @@ class OperatorsMixin:
             raise UnsupportedError(f"temporal operator {op} in an expression evaluated by the checker", e.loc)
         if op == "ENABLED":
             from ..actions import compile_enabled
-            return compile_enabled(self, e.arg, env)
+            return compile_enabled(cast("Compiler", self), e.arg, env)  # a mixin is only ever part of a Compiler
         if op == "UNCHANGED":
             return self._unchanged_expr(e.arg, env)
         user = env.scope.lookup("-." if op == "-" else op)

@@ -13,9 +13,10 @@ from ..env import UNSET, Code, Env
 from ..errors import EvalError, Loc, TlaError, UnassignedPrimeError, UnsupportedError
 from ..modules import VarSym
 from .closures import Value
+from .host import CompilerHost
 
 
-class PrimesMixin:
+class PrimesMixin(CompilerHost):
     """Primes, UNCHANGED and step actions in expressions."""
 
     def c_Prime(self, e: A.Prime, env: Env) -> Code:

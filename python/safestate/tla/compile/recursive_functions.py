@@ -14,6 +14,7 @@ from ..modules import DefSym
 from ..values import LazySet, ProductSet, exact_key, fmt, make_fn, member
 from .binders import _assign
 from .closures import Value, enum, _guard, _need_set
+from .host import CompilerHost
 
 
 class RecursiveFunction:
@@ -52,7 +53,7 @@ class RecursiveFunction:
         return f"[x \\in {fmt(self.dom)} |-> ...]"
 
 
-class RecursiveFunctionsMixin:
+class RecursiveFunctionsMixin(CompilerHost):
     """Function definitions that may refer to themselves."""
 
     def _fn_def_ref(self, sym: DefSym) -> Code:
@@ -71,14 +72,14 @@ class RecursiveFunctionsMixin:
             def several(s: Any, t: Any, L: list) -> Value:
                 if cache:
                     return cache[0]
-                L2 = [None] * frame.size
+                L2: list[Any] = [None] * frame.size
                 L2[fslot] = NOTSET
                 v = read(s, t, L2)
                 if constant:
                     cache.append(v)
                 return v
             return several
-        compiled = sym.compiled
+        compiled: Any = sym.compiled  # once compiled: [domain code, body code, slot, self slot, frame]
         if compiled is None:
             frame = Frame()
             env = Env(sym.scope, frame)

@@ -17,6 +17,7 @@ from ..values import (FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as
                       member)
 from .binders import _enum_checked, _assign, _comprehension
 from .closures import Value, check_bool, _guard
+from .host import CompilerHost
 
 
 def _lazy_filter(base: LazySet, pred: Code, slots: list[int], is_tuple: bool, sloc: Loc, ploc: Loc,
@@ -51,7 +52,7 @@ def _domain_is(D: Value, n: int, d: dict | None) -> bool:
     return all(k in S for k in d)
 
 
-class SetsMixin:
+class SetsMixin(CompilerHost):
     """Set constructors and membership."""
 
     def c_SetEnum(self, e: A.SetEnum, env: Env) -> Code:

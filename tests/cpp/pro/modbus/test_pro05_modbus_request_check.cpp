@@ -26,8 +26,9 @@ void expect_exception(const std::vector<std::uint8_t>& f, ModbusException code, 
 }
 
 TEST(PRO05_ModbusRequestCheck, ValidReadsAndWritesAreServed) {
-  for (const auto& f : {frame(kUnit, {0x04, 0, 0, 0, 6}), frame(kUnit, {0x04, 0, 5, 0, 1}), frame(kUnit, {0x01, 0, 0, 0, 1}),
-                        frame(kUnit, {0x05, 0, 0, 0x00, 0x00}), frame(0xFF, {0x04, 0, 0, 0, 1}), frame(0, {0x04, 0, 0, 0, 1})}) {
+  for (const auto& f :
+       {frame(kUnit, {0x04, 0, 0, 0, 6}), frame(kUnit, {0x04, 0, 5, 0, 1}), frame(kUnit, {0x01, 0, 0, 0, 1}),
+        frame(kUnit, {0x05, 0, 0, 0x00, 0x00}), frame(0xFF, {0x04, 0, 0, 0, 1}), frame(0, {0x04, 0, 0, 0, 1})}) {
     const ModbusVerdict v = check(f);
     EXPECT_EQ(v.action, ModbusAction::serve);
     EXPECT_EQ(v.reason, ModbusReason::ok);
@@ -44,7 +45,8 @@ TEST(PRO05_ModbusRequestCheck, WritingOneToCoilZeroRequestsALatchClear) {
 
 TEST(PRO05_ModbusRequestCheck, UnsupportedFunctionsAreIllegalFunction) {
   for (const std::uint8_t fc : {0x00, 0x07, 0x08, 0x11, 0x16, 0x17, 0x2B, 0x7F}) {
-    expect_exception(frame(kUnit, {fc, 0, 0, 0, 1}), ModbusException::illegal_function, ModbusReason::unsupported_function);
+    expect_exception(frame(kUnit, {fc, 0, 0, 0, 1}), ModbusException::illegal_function,
+                     ModbusReason::unsupported_function);
   }
   expect_exception(frame(kUnit, {0x2B}), ModbusException::illegal_function, ModbusReason::unsupported_function);
 }
@@ -52,19 +54,20 @@ TEST(PRO05_ModbusRequestCheck, UnsupportedFunctionsAreIllegalFunction) {
 TEST(PRO05_ModbusRequestCheck, AddressesOutsideATableAreIllegalDataAddress) {
   constexpr auto code = ModbusException::illegal_data_address;
   constexpr auto reason = ModbusReason::address_out_of_range;
-  expect_exception(frame(kUnit, {0x04, 0, 6, 0, 1}), code, reason);       // past register 5
-  expect_exception(frame(kUnit, {0x04, 0, 1, 0, 6}), code, reason);       // 1..6 crosses the end
-  expect_exception(frame(kUnit, {0x04, 0xFF, 0xFF, 0, 1}), code, reason); // no 16-bit wrap
-  expect_exception(frame(kUnit, {0x01, 0, 1, 0, 1}), code, reason);       // coil 1
-  expect_exception(frame(kUnit, {0x01, 0, 0, 0, 2}), code, reason);       // coils 0..1
-  expect_exception(frame(kUnit, {0x05, 0, 1, 0xFF, 0}), code, reason);    // write coil 1
-  expect_exception(frame(kUnit, {0x02, 0, 0, 0, 1}), code, reason);       // no discrete inputs
-  expect_exception(frame(kUnit, {0x03, 0, 0, 0, 1}), code, reason);       // no holding registers
+  expect_exception(frame(kUnit, {0x04, 0, 6, 0, 1}), code, reason);        // past register 5
+  expect_exception(frame(kUnit, {0x04, 0, 1, 0, 6}), code, reason);        // 1..6 crosses the end
+  expect_exception(frame(kUnit, {0x04, 0xFF, 0xFF, 0, 1}), code, reason);  // no 16-bit wrap
+  expect_exception(frame(kUnit, {0x01, 0, 1, 0, 1}), code, reason);        // coil 1
+  expect_exception(frame(kUnit, {0x01, 0, 0, 0, 2}), code, reason);        // coils 0..1
+  expect_exception(frame(kUnit, {0x05, 0, 1, 0xFF, 0}), code, reason);     // write coil 1
+  expect_exception(frame(kUnit, {0x02, 0, 0, 0, 1}), code, reason);        // no discrete inputs
+  expect_exception(frame(kUnit, {0x03, 0, 0, 0, 1}), code, reason);        // no holding registers
 }
 
 TEST(PRO05_ModbusRequestCheck, WritesToTheReadOnlyRegistersAreIllegalDataAddress) {
   // No function writes input registers; the register writes address the (empty) holding table.
-  expect_exception(frame(kUnit, {0x06, 0, 0, 0, 42}), ModbusException::illegal_data_address, ModbusReason::address_out_of_range);
+  expect_exception(frame(kUnit, {0x06, 0, 0, 0, 42}), ModbusException::illegal_data_address,
+                   ModbusReason::address_out_of_range);
   expect_exception(frame(kUnit, {0x10, 0, 0, 0, 1, 2, 0, 42}), ModbusException::illegal_data_address,
                    ModbusReason::address_out_of_range);
 }
@@ -80,9 +83,9 @@ TEST(PRO05_ModbusRequestCheck, BadQuantitiesValuesAndLengthsAreIllegalDataValue)
   expect_exception(frame(kUnit, {0x0F, 0, 0, 0, 1, 2, 1, 0}), code, ModbusReason::bad_byte_count);
   expect_exception(frame(kUnit, {0x0F, 0, 0, 0, 0, 0}), code, ModbusReason::bad_quantity);
   expect_exception(frame(kUnit, {0x10, 0, 0, 0, 1, 1, 0}), code, ModbusReason::bad_byte_count);
-  expect_exception(frame(kUnit, {0x04, 0, 0}), code, ModbusReason::length_mismatch);         // short PDU
-  expect_exception(frame(kUnit, {0x04, 0, 0, 0, 1, 0}), code, ModbusReason::length_mismatch); // long PDU
-  expect_exception(frame(kUnit, {0x0F, 0, 0, 0, 1, 1}), code, ModbusReason::length_mismatch); // values missing
+  expect_exception(frame(kUnit, {0x04, 0, 0}), code, ModbusReason::length_mismatch);           // short PDU
+  expect_exception(frame(kUnit, {0x04, 0, 0, 0, 1, 0}), code, ModbusReason::length_mismatch);  // long PDU
+  expect_exception(frame(kUnit, {0x0F, 0, 0, 0, 1, 1}), code, ModbusReason::length_mismatch);  // values missing
   expect_exception(frame(kUnit, {0x0F, 0, 0}), code, ModbusReason::length_mismatch);
 }
 

@@ -221,16 +221,21 @@ TEST_F(PRO05_ModbusServer, RandomFramesNeverStopItServingACleanClient) {
   for (int i = 0; i < 3000; ++i) {
     constexpr std::uint8_t kServed[] = {0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x0F, 0x10};
     const std::size_t pdu_size = rng() % 2 ? 5 : 1 + rng() % 12;
-    Bytes f{static_cast<std::uint8_t>(i >> 8), static_cast<std::uint8_t>(i), 0, 0, 0,
-            static_cast<std::uint8_t>(pdu_size + 1), static_cast<std::uint8_t>(rng() % 4 == 0 ? rng() : 1)};
+    Bytes f{static_cast<std::uint8_t>(i >> 8),
+            static_cast<std::uint8_t>(i),
+            0,
+            0,
+            0,
+            static_cast<std::uint8_t>(pdu_size + 1),
+            static_cast<std::uint8_t>(rng() % 4 == 0 ? rng() : 1)};
     // Function: half the time one the server implements; other bytes mostly small (so
     // addresses and quantities are often in range), sometimes anything.
     for (std::size_t k = 0; k < pdu_size; ++k) {
       const std::uint32_t b = k == 0 ? (rng() % 2 ? kServed[rng() % 8] : rng()) : (rng() % 4 ? rng() % 3 : rng());
       f.push_back(static_cast<std::uint8_t>(b));
     }
-    if (rng() % 50 == 0) f[3] = 1;                                         // protocol id 1
-    if (rng() % 100 == 0) f[5] = static_cast<std::uint8_t>(rng());         // any length byte
+    if (rng() % 50 == 0) f[3] = 1;                                  // protocol id 1
+    if (rng() % 100 == 0) f[5] = static_cast<std::uint8_t>(rng());  // any length byte
     if (send(fd, f.data(), f.size(), MSG_NOSIGNAL) < 0) {
       close(fd);
       fd = connect_to(server_->port());

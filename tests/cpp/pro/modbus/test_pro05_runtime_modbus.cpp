@@ -76,8 +76,8 @@ TEST(PRO05_RuntimeModbus, AClientReadsTheRuntimesRegistersAndItsClearRequestReac
   ASSERT_EQ(hot.write, 1);
   EXPECT_GT(static_cast<std::int16_t>(hot.registers[0]), 85);
   EXPECT_EQ(hot.registers[2], kSafeFanCommandPercent);
-  EXPECT_EQ(hot.registers[3], 1U);  // PROTECTION
-  EXPECT_EQ(hot.registers[4], 1U);  // RUN
+  EXPECT_EQ(hot.registers[3], 1U);             // PROTECTION
+  EXPECT_EQ(hot.registers[4], 1U);             // RUN
   for (int i = 0; i < 3; ++i) (void)l.tick();  // the request is taken, then consumed
   EXPECT_EQ(l.prot(), ProtectionState::protection);
   EXPECT_EQ(l.rt.data().last_clear, ClearOutcome::denied);

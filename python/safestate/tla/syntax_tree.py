@@ -1,0 +1,36 @@
+"""The view of a tree-sitter syntax tree that the TLA+ converter (parser.py) reads.
+
+`parser.parse_text` converts a tree only after `_Converter.check_errors` has found no
+ERROR and no MISSING node in it.  In such a tree every field that the grammar requires
+of a node is present, so `child_by_field_name` returns a node here where
+`tree_sitter.Node` says ``Node | None``; the converter compares with None where a
+field may be absent (the operands `check_precedence` looks at, a THEOREM's name and
+statement).  `parse_text` casts the root to this Protocol once.
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+
+class Node(Protocol):
+    @property
+    def type(self) -> str: ...
+    @property
+    def is_named(self) -> bool: ...
+    @property
+    def has_error(self) -> bool: ...
+    @property
+    def is_missing(self) -> bool: ...
+    @property
+    def start_byte(self) -> int: ...
+    @property
+    def end_byte(self) -> int: ...
+    @property
+    def start_point(self) -> tuple[int, int]: ...
+    @property
+    def children(self) -> list[Node]: ...
+    @property
+    def named_children(self) -> list[Node]: ...
+    def child_by_field_name(self, name: str, /) -> Node: ...
+    def children_by_field_name(self, name: str, /) -> list[Node]: ...
