@@ -537,7 +537,7 @@ def _compile_behaviour(model: Model) -> None:
         return emit
     model._next = ac.split(nxt, Env(model.scope, next_frame), model.next_name, nxt.loc, [], make_k)
     model._next_size = next_frame.size
-    if cfg.specification is None:
+    if cfg.specification is None and cfg.init is not None and cfg.next is not None:
         # After compiling them: the analysis must not be the first to meet a LET's
         # INSTANCE (it would fix the instance's scope without the names bound there).
         _not_constant(model, _lookup_def(model, cfg.init, "initial predicate"), cfg.init, "initial predicate")

@@ -9,17 +9,17 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from .. import ast as A
+from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLocal
+from ..errors import Loc, UnsupportedError
 from ..fold_memo import EXPANSION_LIMIT
+from ..modules import DefSym
+from .host import CompilerHost
+from .lazy_args import cannot_fail, lazy_binding, passed_by_value
+from .syntax import all_names
 
 # How often one definition may be nested in its own expansion before it is taken as
 # a (RECURSIVE) recursion; a higher-order operator passed to itself nests a few times.
 RECURSION_LIMIT = 50
-from ..env import ByNameLocal, Code, Env, LazyLocal, LetOpLocal, OpLocal, SlotLocal
-from ..errors import Loc, UnsupportedError
-from ..modules import DefSym
-from .lazy_args import cannot_fail, lazy_binding, passed_by_value
-from .syntax import all_names
-from .host import CompilerHost
 
 
 class ExpansionMixin(CompilerHost):
