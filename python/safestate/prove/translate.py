@@ -213,17 +213,8 @@ class Translator:
             raise ProveError(f"{sym.defn.name} takes {len(params)} argument(s), given {len(args)}", loc)
         if any(p.arity > 0 for p in params):
             raise ProveError(f"higher-order operator {sym.defn.name}", loc)
-        vals = {p.name: self._arg(a, ctx) for p, a in zip(params, args)}
+        vals = {p.name: self.val(a, ctx) for p, a in zip(params, args)}
         return Ctx(sym.scope, vals, ctx.primed)
-
-    def _arg(self, a: A.Expr, ctx: Ctx) -> _Lazy:
-        """An operator argument as TLC passes it, unevaluated: its term is built here (a
-        term is no evaluation), but its well-definedness obligations hold only where the
-        body uses the parameter, under the guards there (`Handle(m.dest, m)` whose body
-        reads `d` behind `m.method = Join` obliges `m.dest` only for joins)."""
-        with self.obl.capture() as obligations:
-            value = self.val(a, ctx)
-        return _Lazy(a, ctx, value, True, obligations)
 
     def _apply_def(self, sym: DefSym, args: list[A.Expr], ctx: Ctx, loc: Loc) -> Any:
         if sym.recursive and not sym.defn.fn_bounds:
@@ -235,9 +226,7 @@ class Translator:
                 raise ProveError(f"recursive function {sym.defn.name}", loc)
             return self._fn_lit(sym.defn.fn_bounds, sym.defn.body, Ctx(sym.scope, {}, ctx.primed), loc)
         body_ctx = self._bind_params(sym, args, ctx, loc)
-        args_ = [body_ctx.locals[p.name] for p in sym.defn.params]
-        key = (id(sym), ctx.primed, tuple(_vkey(x.value) for x in args_),
-               tuple(o.cond.get_id() for x in args_ for o in x.obligations))
+        key = (id(sym), ctx.primed, tuple(_vkey(body_ctx.locals[p.name]) for p in sym.defn.params))
         hit = self._memo.get(key)
         if hit is not None:
             self.obl.emit(hit[2])
@@ -270,7 +259,7 @@ class Translator:
                     raise ProveError(f"{name} takes {len(d.params)} argument(s)", e.loc)
                 if d.fn_bounds:
                     return self._fn_lit(d.fn_bounds, d.body, loc_v.ctx, e.loc)
-                return self.val(d.body, loc_v.ctx.bind({p.name: self._arg(a, ctx) for p, a in zip(d.params, args)}))
+                return self.val(d.body, loc_v.ctx.bind({p.name: self.val(a, ctx) for p, a in zip(d.params, args)}))
             if args:
                 raise ProveError(f"{name} is not an operator", e.loc)
             return loc_v
