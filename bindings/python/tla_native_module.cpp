@@ -266,9 +266,10 @@ public:
         return k == K_MV ? -1 : cls(k);
     }
     // x \in s as TLC: its binary search in s compares x with elements of s, an error
-    // where their kinds are incomparable (1 \in BOOLEAN).  Checked only where x is not
-    // found by id and its kind differs from the elements' (a large set's search
-    // compares with cmp, which fails itself).
+    // where their kinds are incomparable at any depth (1 \in BOOLEAN, <<TRUE>> \in
+    // {<<1>>}).  Checked only where x is not found by id: its kind differs from the
+    // elements', or it is a container, searched with cmp (which fails itself, as in a
+    // large set's search).
     bool member(uint32_t s, uint32_t x, int loc) const {
         if (set_has(s, x)) return true;
         uint32_t n = len(s);
@@ -277,6 +278,14 @@ public:
         if (kx == K_MV) return false;
         int sc = set_cls(s);
         if (sc >= 0 && sc != cls(kx)) incomparable("compare", loc);
+        if (kx == K_SEQ || kx == K_FUN || kx == K_SET) {
+            const uint32_t* it = items(s);
+            uint32_t lo = 0, hi = n;
+            while (lo < hi) {
+                uint32_t mid = (lo + hi) / 2;
+                if (cmp(it[mid], x) < 0) lo = mid + 1; else hi = mid;
+            }
+        }
         return false;
     }
     // a = b as TLC's equals for different ids (so unequal values: every value is
@@ -609,15 +618,15 @@ public:
                 if (k == K_SEQ) {
                     if (st.len(dom) != st.len(x)) return false;
                     for (uint32_t i = 0; i < st.len(x); ++i)
-                        if (!st.set_has(dom, Store::mk_int(i + 1, sd->loc))) return false;
+                        if (!st.member(dom, Store::mk_int(i + 1, sd->loc), sd->loc)) return false;
                     for (uint32_t i = 0; i < st.len(x); ++i)
                         if (!member_sd(st.items(x)[i], sd->kids[1], c)) return false;
                     return true;
                 }
                 if (k != K_FUN || st.len(x) != st.len(dom)) return false;
                 uint32_t n = st.len(x);
-                for (uint32_t i = 0; i < n; ++i)
-                    if (st.items(x)[i] != st.items(dom)[i]) return false;
+                for (uint32_t i = 0; i < n; ++i)  // TLC compares the domains: kinds too
+                    if (!st.equal_walk(st.items(x)[i], st.items(dom)[i], sd->loc)) return false;
                 for (uint32_t i = 0; i < n; ++i)
                     if (!member_sd(st.items(x)[n + i], sd->kids[1], c)) return false;
                 return true;
@@ -735,7 +744,7 @@ public:
                     stk_.insert(stk_.end(), y + j, y + nb);
                 } else {
                     for (uint32_t i = 0; i < na; ++i)
-                        if (st.set_has(b, x[i]) == (n->op == CAP)) stk_.push_back(x[i]);
+                        if (st.member(b, x[i], n->loc) == (n->op == CAP)) stk_.push_back(x[i]);
                 }
                 uint32_t out = st.intern(K_SET, stk_.data() + base, uint32_t(stk_.size() - base));
                 stk_.resize(base);
