@@ -16,7 +16,7 @@ _FALSE, _TRUE, _INT_TAG = 0, 1, 0x80000000
 
 
 def _step_error() -> type[Exception]:
-    from ... import _tla_native
+    from ... import _tla_native  # type: ignore[attr-defined]
     return _tla_native.StepError  # type: ignore[no-any-return]
 
 
