@@ -169,8 +169,7 @@ public:
     // functions (length, keys, values; a sequence's keys sort first), sets.
     static int cls(Kind k) { return k == K_SEQ ? K_FUN : k; }
     // TLC's compareTo fails on values of incomparable kinds (a model value compares
-    // with anything): so does this, at any depth of the walk.
-    static bool comparable(Kind a, Kind b) { return cls(a) == cls(b) || a == K_MV || b == K_MV; }
+    // with anything): so does cmp, at any depth of its walk.
     [[noreturn]] static void incomparable(const char* what, int loc) {
         fail(std::string("Attempted to ") + what + " values of incomparable kinds", loc);
     }
