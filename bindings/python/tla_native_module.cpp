@@ -166,10 +166,18 @@ class Store {
   // TLC's order (values.tlc_key): booleans, integers, strings, model values,
   // functions (length, keys, values; a sequence's keys sort first), sets.
   static int cls(Kind k) { return k == K_SEQ ? K_FUN : k; }
+  // TLC's compareTo fails on values of incomparable kinds (a model value compares
+  // with anything): so does cmp, at any depth of its walk.
+  [[noreturn]] static void incomparable(const char* what, int loc) {
+    fail(std::string("Attempted to ") + what + " values of incomparable kinds", loc);
+  }
   int cmp(uint32_t a, uint32_t b) const {
     if (a == b) return 0;
     Kind ka = kind(a), kb = kind(b);
-    if (cls(ka) != cls(kb)) return cls(ka) < cls(kb) ? -1 : 1;
+    if (cls(ka) != cls(kb)) {
+      if (ka != K_MV && kb != K_MV) incomparable("compare", 0);
+      return cls(ka) < cls(kb) ? -1 : 1;
+    }
     switch (ka) {
       case K_BOOL: return a < b ? -1 : 1;
       case K_INT: return int_of(a) < int_of(b) ? -1 : 1;
@@ -202,6 +210,15 @@ class Store {
   uint32_t mk_set(std::vector<uint32_t>& el) { return mk_set(el.data(), el.data() + el.size()); }
   // The set of the ids in [b, e) (sorted and deduplicated in place).
   uint32_t mk_set(uint32_t* b, uint32_t* e) {
+    // TLC sorts a new set with compareTo: elements of two kinds (besides model
+    // values) meet in its sort, an error (std::sort need not compare that pair).
+    int c0 = -1;
+    for (const uint32_t* p = b; p != e; ++p) {
+      Kind k = kind(*p);
+      if (k == K_MV) continue;
+      if (c0 < 0) c0 = cls(k);
+      else if (cls(k) != c0) incomparable("compare", 0);
+    }
     std::sort(b, e, [this](uint32_t x, uint32_t y) { return cmp(x, y) < 0; });
     e = std::unique(b, e);
     return intern(K_SET, b, uint32_t(e - b));
@@ -237,6 +254,75 @@ class Store {
       else hi = mid;
     }
     return false;
+  }
+  // The class of a (homogeneous) set's elements other than model values, -1 if none
+  // (sorted: model values are contiguous, so the first or the last one is another).
+  int set_cls(uint32_t s) const {
+    uint32_t n = len(s);
+    if (n == 0) return -1;
+    Kind k = kind(items(s)[0]);
+    if (k == K_MV) k = kind(items(s)[n - 1]);
+    return k == K_MV ? -1 : cls(k);
+  }
+  // x \in s as TLC: its binary search in s compares x with elements of s, an error
+  // where their kinds are incomparable at any depth (1 \in BOOLEAN, <<TRUE>> \in
+  // {<<1>>}).  Checked only where x is not found by id: its kind differs from the
+  // elements', or it is a container, searched with cmp (which fails itself, as in a
+  // large set's search).
+  bool member(uint32_t s, uint32_t x, int loc) const {
+    if (set_has(s, x)) return true;
+    uint32_t n = len(s);
+    if (n == 0 || n > kLinear) return false;
+    Kind kx = kind(x);
+    if (kx == K_MV) return false;
+    int sc = set_cls(s);
+    if (sc >= 0 && sc != cls(kx)) incomparable("compare", loc);
+    if (kx == K_SEQ || kx == K_FUN || kx == K_SET) {
+      const uint32_t* it = items(s);
+      uint32_t lo = 0, hi = n;
+      while (lo < hi) {
+        uint32_t mid = (lo + hi) / 2;
+        if (cmp(it[mid], x) < 0) lo = mid + 1;
+        else hi = mid;
+      }
+    }
+    return false;
+  }
+  // a = b as TLC's equals for different ids (so unequal values: every value is
+  // interned in its canonical form): its walk in its order (a set's size, then its
+  // elements in TLC's order; a tuple's length, then its items; a record's field
+  // names, then its fields; a function's keys, then its values), failing at the first
+  // pair of incomparable kinds it meets (<<1>> = <<TRUE>>), as values.tlc_equals.
+  bool equal_walk(uint32_t a, uint32_t b, int loc) const {
+    if (a == b) return true;
+    Kind ka = kind(a), kb = kind(b);
+    if (ka == K_MV || kb == K_MV) return false;
+    if (cls(ka) != cls(kb)) incomparable("check equality of", loc);
+    if (ka != K_SEQ && ka != K_FUN && ka != K_SET) return false;
+    uint32_t n = len(a);
+    if (n != len(b)) return false;
+    const uint32_t *x = items(a), *y = items(b);
+    if (ka == K_SET || (ka == K_SEQ && kb == K_SEQ)) {
+      for (uint32_t i = 0; i < n; ++i)
+        if (!equal_walk(x[i], y[i], loc)) return false;
+      return true;
+    }
+    bool record = ka == K_FUN && kb == K_FUN;
+    for (uint32_t i = 0; i < n && record; ++i) record = !is_int(x[i]) && kind(x[i]) == K_STR;
+    if (record) {
+      if (!std::equal(x, x + n, y)) return false;
+    } else {
+      for (uint32_t i = 0; i < n; ++i) {
+        uint32_t kx = ka == K_SEQ ? mk_int(int64_t(i) + 1, loc) : x[i];
+        uint32_t ky = kb == K_SEQ ? mk_int(int64_t(i) + 1, loc) : y[i];
+        if (!equal_walk(kx, ky, loc)) return false;
+      }
+    }
+    const uint32_t* vx = ka == K_SEQ ? x : x + n;
+    const uint32_t* vy = kb == K_SEQ ? y : y + n;
+    for (uint32_t i = 0; i < n; ++i)
+      if (!equal_walk(vx[i], vy[i], loc)) return false;
+    return true;
   }
   size_t bytes() const { return vals.size() * sizeof(Val) + pooled_ * 4 + table_.size() * 4; }
 
@@ -474,8 +560,11 @@ class Engine {
   __attribute__((always_inline)) bool equal(uint32_t a, uint32_t b, int loc) const {
     if (a == b) return true;
     Kind ka = st.kind(a), kb = st.kind(b);
-    if (Store::cls(ka) != Store::cls(kb) && ka != K_MV && kb != K_MV)
-      fail("Attempted to check equality of values of different kinds", loc);
+    if (Store::cls(ka) != Store::cls(kb)) {
+      if (ka != K_MV && kb != K_MV) Store::incomparable("check equality of", loc);
+      return false;
+    }
+    if (ka == K_SEQ || ka == K_FUN || ka == K_SET) return st.equal_walk(a, b, loc);
     return false;
   }
   uint32_t apply(uint32_t f, uint32_t x, int loc, std::atomic<uint32_t>* hint = nullptr) const {
@@ -579,7 +668,7 @@ class Engine {
   }
   bool member_sd(uint32_t x, Node* sd, Ctx& c) {
     switch (sd->op) {
-      case SD_SET: return st.set_has(set(sd->kids[0], c), x);
+      case SD_SET: return st.member(set(sd->kids[0], c), x, sd->loc);
       case SD_RANGE: {
         if (!Store::is_int(x)) return false;
         int64_t v = Store::int_of(x);
@@ -603,15 +692,15 @@ class Engine {
         if (k == K_SEQ) {
           if (st.len(dom) != st.len(x)) return false;
           for (uint32_t i = 0; i < st.len(x); ++i)
-            if (!st.set_has(dom, Store::mk_int(i + 1, sd->loc))) return false;
+            if (!st.member(dom, Store::mk_int(i + 1, sd->loc), sd->loc)) return false;
           for (uint32_t i = 0; i < st.len(x); ++i)
             if (!member_sd(st.items(x)[i], sd->kids[1], c)) return false;
           return true;
         }
         if (k != K_FUN || st.len(x) != st.len(dom)) return false;
         uint32_t n = st.len(x);
-        for (uint32_t i = 0; i < n; ++i)
-          if (st.items(x)[i] != st.items(dom)[i]) return false;
+        for (uint32_t i = 0; i < n; ++i)  // TLC compares the domains: kinds too
+          if (!st.equal_walk(st.items(x)[i], st.items(dom)[i], sd->loc)) return false;
         for (uint32_t i = 0; i < n; ++i)
           if (!member_sd(st.items(x)[n + i], sd->kids[1], c)) return false;
         return true;
@@ -704,7 +793,7 @@ class Engine {
       case IN:
       case NOTIN: {
         uint32_t x = eval(n->kids[0], c);
-        bool in = st.set_has(set(n->kids[1], c), x);
+        bool in = st.member(set(n->kids[1], c), x, n->loc);
         return in == (n->op == IN) ? kTrue : kFalse;
       }
       case IN_SD: {
@@ -719,6 +808,10 @@ class Engine {
         uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
         const uint32_t *x = st.items(a), *y = st.items(b);
         uint32_t na = st.len(a), nb = st.len(b);
+        if (na != 0 && nb != 0) {  // TLC looks elements of one up in the other
+          int ca = st.set_cls(a), cb = st.set_cls(b);
+          if (ca >= 0 && cb >= 0 && ca != cb) Store::incomparable("check equality of", n->loc);
+        }
         if (n->op == CUP && nb == 0) return a;
         if (n->op == CUP && na == 0) return b;
         size_t base = stk_.size();
@@ -734,7 +827,7 @@ class Engine {
           stk_.insert(stk_.end(), y + j, y + nb);
         } else {
           for (uint32_t i = 0; i < na; ++i)
-            if (st.set_has(b, x[i]) == (n->op == CAP)) stk_.push_back(x[i]);
+            if (st.member(b, x[i], n->loc) == (n->op == CAP)) stk_.push_back(x[i]);
         }
         uint32_t out = st.intern(K_SET, stk_.data() + base, uint32_t(stk_.size() - base));
         stk_.resize(base);
@@ -743,7 +836,7 @@ class Engine {
       case SUBSETEQ: {
         uint32_t a = set(n->kids[0], c), b = set(n->kids[1], c);
         for (uint32_t i = 0; i < st.len(a); ++i)
-          if (!st.set_has(b, st.items(a)[i])) return kFalse;
+          if (!st.member(b, st.items(a)[i], n->loc)) return kFalse;
         return kTrue;
       }
       case IF: return eval(boolean(n->kids[0], c, "IF condition") ? n->kids[1] : n->kids[2], c);
@@ -1708,12 +1801,24 @@ PYBIND11_MODULE(_tla_native, m) {
       .def("mk_str", [](Engine& e, const std::string& s, int64_t rank) { return e.st.mk_str(K_STR, s, rank); })
       .def("mk_model_value", [](Engine& e, const std::string& s, int64_t rank) { return e.st.mk_str(K_MV, s, rank); })
       .def("mk_seq", [](Engine& e, const std::vector<uint32_t>& el) { return e.st.mk_seq(el); })
-      .def("mk_set", [](Engine& e, std::vector<uint32_t> el) { return e.st.mk_set(el); })
+      // A set or function whose elements or keys TLC cannot compare raises StepError.
+      .def("mk_set",
+           [](Engine& e, std::vector<uint32_t> el) {
+             try {
+               return e.st.mk_set(el);
+             } catch (const EvalFailure& f) {
+               throw Engine::StepError(f.message);
+             }
+           })
       .def("mk_fun",
            [](Engine& e, const std::vector<uint32_t>& keys, const std::vector<uint32_t>& vals) {
              std::vector<std::pair<uint32_t, uint32_t>> kv;
              for (size_t i = 0; i < keys.size(); ++i) kv.emplace_back(keys[i], vals[i]);
-             return e.st.mk_fun(kv);
+             try {
+               return e.st.mk_fun(kv);
+             } catch (const EvalFailure& f) {
+               throw Engine::StepError(f.message);
+             }
            })
       .def("describe", &Engine::describe)
       .def("set_slots", [](Engine& e, size_t n) { e.slots.assign(n, kUnset); })

@@ -15,6 +15,11 @@ _BOOL, _INT, _STR, _MV, _SEQ, _FUN, _SET = range(7)
 _FALSE, _TRUE, _INT_TAG = 0, 1, 0x80000000
 
 
+def _step_error() -> type[Exception]:
+    from ... import _tla_native  # type: ignore[attr-defined]
+    return _tla_native.StepError  # type: ignore[no-any-return]
+
+
 class ValueBridge:
     def __init__(self, engine: Any) -> None:
         self.engine = engine
@@ -41,10 +46,17 @@ class ValueBridge:
             return e.mk_seq([self.to_native(x, loc) for x in v])
         if t is FnValue:
             keys = list(v.d)
-            return e.mk_fun([self.to_native(k, loc) for k in keys], [self.to_native(v.d[k], loc) for k in keys])
+            try:
+                return e.mk_fun([self.to_native(k, loc) for k in keys], [self.to_native(v.d[k], loc) for k in keys])
+            except _step_error() as err:
+                raise UnsupportedError(f"a function whose keys are of incomparable kinds is {NOT_NATIVE}", loc) from err
         if t is frozenset or isinstance(v, IntervalSet):
             elems = v if t is frozenset else range(v.lo, v.hi + 1)
-            return e.mk_set([self.to_native(x, loc) for x in elems])
+            try:
+                return e.mk_set([self.to_native(x, loc) for x in elems])
+            except _step_error() as err:
+                # The core sorts as TLC: a set of elements it cannot compare.
+                raise UnsupportedError(f"a set of values of incomparable kinds is {NOT_NATIVE}", loc) from err
         what = v.describe() if isinstance(v, LazySet) else t.__name__
         raise UnsupportedError(f"the value {what} is {NOT_NATIVE}", loc)
 
