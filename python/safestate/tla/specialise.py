@@ -21,7 +21,7 @@ from typing import Any, Callable
 from .constfold import NO_VALUE, const_value
 from .env import NOTSET, Code
 from .errors import EvalError, Loc
-from .values import FnValue, IntervalSet, ModelValue, fmt, member, values_equal
+from .values import FnValue, IntervalSet, ModelValue, fmt, interval_member, member, values_equal
 
 # Types whose Python equality is TLA+ equality when both sides have the type.
 _SIMPLE = (str, int, bool, ModelValue)
@@ -156,12 +156,20 @@ def _element_type(S: frozenset) -> type | None:
     looked up in `S` by Python alone; any other goes through `member` and its checks
     of TLC's comparisons: ``1 \\in BOOLEAN`` is an error)."""
     types = {type(x) for x in S}
-    return types.pop() if len(types) == 1 else None
+    # Containers are Python-equal across kinds (<<TRUE>> == <<1>>): `member` decides.
+    return types.pop() if len(types) == 1 and next(iter(types)) in (bool, int, str) else None
 
 
 def _member_at(v: Any, S: frozenset, loc: Loc | None) -> bool:
     try:
         return member(v, S)
+    except EvalError as err:
+        raise (err.with_loc(loc) if loc is not None else err) from None
+
+
+def _interval_member_at(v: Any, lo: int, hi: int, loc: Loc | None) -> bool:
+    try:
+        return interval_member(v, lo, hi)
     except EvalError as err:
         raise (err.with_loc(loc) if loc is not None else err) from None
 
@@ -185,7 +193,9 @@ def member_const(lhs: Code, S: Any, negate: bool, loc: Loc | None = None) -> Cod
 
         def in_interval(s: Any, t: Any, L: list) -> bool:
             v = lhs(s, t, L)
-            return (type(v) is int and lo <= v <= hi) is not negate
+            if type(v) is int:
+                return (lo <= v <= hi) is not negate
+            return _interval_member_at(v, lo, hi, loc) is not negate
         return in_interval
     return None
 
@@ -197,7 +207,7 @@ def membership_const(S: Any, loc: Loc | None = None) -> Callable | None:
         return lambda s, t, L, v: (v in S) if type(v) is T else _member_at(v, S, loc)
     if type(S) is IntervalSet:
         lo, hi = S.lo, S.hi
-        return lambda s, t, L, v: type(v) is int and lo <= v <= hi
+        return lambda s, t, L, v: (lo <= v <= hi) if type(v) is int else _interval_member_at(v, lo, hi, loc)
     return None
 
 

@@ -550,7 +550,11 @@ def subseteq(a: Value, b: Value) -> bool:
     if not is_set(a) or not is_set(b):
         raise EvalError(f"Attempted to apply \\subseteq to a non-set: {fmt(a)}, {fmt(b)}")
     if type(b) is frozenset:
-        return as_set(a) <= b
+        x = as_set(a)
+        types = set(map(type, x)) | set(map(type, b))
+        if len(types) <= 1 and types <= {bool, int, str}:
+            return x <= b
+        return all(member(v, b) for v in x)
     return all(member(x, b) for x in iter_set(a))
 
 

@@ -165,7 +165,7 @@ class IntervalSet(LazySet):
         self.lo, self.hi = lo, hi
 
     def contains(self, v: Value) -> bool:
-        return type(v) is int and self.lo <= v <= self.hi
+        return (self.lo <= v <= self.hi) if type(v) is int else interval_member(v, self.lo, self.hi)
 
     def iterate(self) -> Iterator[Value]:
         return iter(range(self.lo, self.hi + 1))
@@ -178,6 +178,24 @@ class IntervalSet(LazySet):
 
     def __reduce__(self) -> tuple:
         return (IntervalSet, (self.lo, self.hi))
+
+
+def interval_member(v: Value, lo: int, hi: int) -> bool:
+    """``v \\in lo..hi`` as TLC's IntervalValue.member: a value that is neither an integer
+    nor a model value is an error, unless the interval is empty."""
+    if type(v) is int:
+        return lo <= v <= hi
+    if type(v) is ModelValue or lo > hi:
+        return False
+    raise EvalError(f"Attempted to check if the value:\n{fmt(v)}\nis in the integer interval {lo}..{hi}")
+
+
+def _not_of_kind(v: Value, name: str) -> bool:
+    """Membership of a value of another kind in Nat, Int or STRING: FALSE for a model
+    value, TLC's error for anything else."""
+    if type(v) is ModelValue:
+        return False
+    raise EvalError(f"Attempted to check if the value:\n{fmt(v)}\nis an element of {name}.")
 
 
 class _InfiniteSet(LazySet):
@@ -200,7 +218,9 @@ class NatSet(_InfiniteSet):
     name = "Nat"
 
     def contains(self, v: Value) -> bool:
-        return type(v) is int and v >= 0
+        if type(v) is int:
+            return v >= 0
+        return _not_of_kind(v, "Nat")
 
 
 class IntSet(_InfiniteSet):
@@ -208,7 +228,7 @@ class IntSet(_InfiniteSet):
     name = "Int"
 
     def contains(self, v: Value) -> bool:
-        return type(v) is int
+        return type(v) is int or _not_of_kind(v, "Int")
 
 
 class StringSet(_InfiniteSet):
@@ -216,7 +236,7 @@ class StringSet(_InfiniteSet):
     name = "STRING"
 
     def contains(self, v: Value) -> bool:
-        return type(v) is str
+        return type(v) is str or _not_of_kind(v, "STRING")
 
 
 class SeqSet(LazySet):
@@ -451,6 +471,8 @@ def as_set(v: Value) -> frozenset:
 
 def member(v: Value, s: Value) -> bool:
     if type(s) is frozenset:
+        if type(v) in _CONTAINERS and s:
+            return _container_member(v, s)
         r = v in s
         if s and not _same_kind_as_elements(v, s):
             member_kind_check(v, s)
@@ -458,6 +480,62 @@ def member(v: Value, s: Value) -> bool:
     if isinstance(s, LazySet):
         return s.contains(v)
     raise EvalError(f"Attempted to check if the value:\n{fmt(v)}\nis an element of the non-set {fmt(s)}")
+
+
+def _container_member(v: Value, s: frozenset) -> bool:
+    """A tuple, function, record or set looked up in a finite set.  Python's `in` is
+    TLA+'s answer only where no position can hold TRUE on one side and 1 on the other:
+    when `v` and every element have the same kind signature.  Otherwise TLC's binary
+    search decides, with its error at a pair of incomparable kinds."""
+    sig = kind_sig(v)
+    if sig is not None and _element_sigs(s) == (sig,):
+        return v in s
+    return tlc_search(v, s)
+
+
+_SIG_SCALARS: dict[type, str] = {bool: "b", int: "i", str: "s"}
+
+
+def kind_sig(v: Value) -> Any:
+    """The kinds at every position of `v` (None where that cannot be told cheaply: model
+    values, non-record functions, sets of mixed signatures, lazy sets).  Two values with
+    the same signature are compared by TLC without meeting incomparable kinds, so
+    Python's equality is TLA+'s between them."""
+    t = type(v)
+    r = _SIG_SCALARS.get(t)
+    if r is not None:
+        return r
+    if t is tuple:
+        parts = tuple(map(kind_sig, v))
+        return None if None in parts else ("t", parts)
+    if t is FnValue:
+        if not all(type(k) is str for k in v.d):
+            return None
+        fields = tuple(sorted((k, kind_sig(x)) for k, x in v.d.items()))
+        return None if any(x is None for _, x in fields) else ("r", fields)
+    if t is frozenset:
+        if not v:
+            return ("s", "empty")
+        sigs = _element_sigs(v)
+        return ("s", sigs[0]) if len(sigs) == 1 and sigs[0] is not None else None
+    return None
+
+
+_SIG_CACHE: dict[int, tuple[frozenset, tuple]] = {}
+
+
+def _element_sigs(s: frozenset) -> tuple:
+    """The distinct kind signatures of the elements of `s` (cached per set object)."""
+    hit = _SIG_CACHE.get(id(s))
+    if hit is not None and hit[0] is s:
+        return hit[1]
+    if len(_SIG_CACHE) > 20000:
+        _SIG_CACHE.clear()
+    sigs = tuple({kind_sig(x) for x in s})
+    if None in sigs:
+        sigs = (None,)
+    _SIG_CACHE[id(s)] = (s, sigs)
+    return sigs
 
 
 def _same_kind_as_elements(v: Value, s: frozenset) -> bool:
@@ -920,11 +998,17 @@ def _tlc_sort(elems: list) -> list:
 def member_kind_check(v: Value, s: frozenset) -> None:
     """Raise TLC's error if looking `v` up in the finite set `s` compares values of
     incomparable kinds (TLC's binary search in its sorted elements): ``1 \\in BOOLEAN``."""
+    tlc_search(v, s)
+
+
+def tlc_search(v: Value, s: frozenset) -> bool:
+    """``v \\in s`` by TLC's binary search in the sorted elements of `s`: TLC's error at a
+    pair of incomparable kinds it compares, else whether an element compared equal."""
     if not s:
-        return
+        return False
     tv = type(v)
     if tv is ModelValue:
-        return
+        return v in s
     kv = kind(v)
     elems = sorted_elems(s)
     low, high = 0, len(elems)
@@ -935,11 +1019,12 @@ def member_kind_check(v: Value, s: frozenset) -> None:
             raise _compare_error(v, e)
         cmp = _tlc_compare(v, e)
         if cmp == 0:
-            return
+            return True
         if cmp < 0:
             high = mid
         else:
             low = mid + 1
+    return False
 
 
 # ----------------------------------------------------------------- printing

@@ -13,8 +13,8 @@ from ..errors import EvalError, Loc
 from ..modules import BuiltinSym, DefSym
 from ..specialise import membership_const
 from ..stdlib import non_integer_error
-from ..values import (FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as_set, check_set_kinds, is_set,
-                      member)
+from ..values import (FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as_set, check_set_kinds, interval_member,
+                      is_set, member)
 from .binders import _enum_checked, _assign, _comprehension
 from .closures import Value, check_bool, _guard
 from .host import CompilerHost
@@ -133,7 +133,12 @@ class SetsMixin(CompilerHost):
                 if type(a) is not int or type(b) is not int:
                     first = type(a) is not int
                     raise non_integer_error("..", a if first else b, first).with_loc(loc)
-                return type(v) is int and a <= v <= b
+                if type(v) is int:
+                    return a <= v <= b
+                try:
+                    return interval_member(v, a, b)
+                except EvalError as err:
+                    raise err.with_loc(loc) from None
             return in_interval
         if isinstance(e, A.FnSet):
             dom = self.expr(e.domain, env)
