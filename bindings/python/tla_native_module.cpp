@@ -666,17 +666,29 @@ class Engine {
     slots[size_t(at_slot)] = saved;
     return nv;
   }
+  bool not_of_kind(uint32_t x, int loc) const {
+    if (st.kind(x) != K_MV)
+      fail("Attempted to check if a value of another kind is an element of Nat, Int or STRING", loc);
+    return false;
+  }
   bool member_sd(uint32_t x, Node* sd, Ctx& c) {
     switch (sd->op) {
       case SD_SET: return st.member(set(sd->kids[0], c), x, sd->loc);
       case SD_RANGE: {
-        if (!Store::is_int(x)) return false;
+        int64_t lo = integer(sd->kids[0], c), hi = integer(sd->kids[1], c);
+        if (!Store::is_int(x)) {
+          // TLC's IntervalValue.member: another kind than an integer or a model value is an error.
+          if (lo <= hi && st.kind(x) != K_MV)
+            fail("Attempted to check if a value of another kind is in an integer interval", sd->loc);
+          return false;
+        }
         int64_t v = Store::int_of(x);
-        return v >= integer(sd->kids[0], c) && v <= integer(sd->kids[1], c);
+        return v >= lo && v <= hi;
       }
-      case SD_NAT: return Store::is_int(x) && Store::int_of(x) >= 0;
-      case SD_INT: return Store::is_int(x);
-      case SD_STRING: return st.kind(x) == K_STR;
+      // Nat, Int, STRING: a value of another kind (not a model value) is TLC's error.
+      case SD_NAT: return Store::is_int(x) ? Store::int_of(x) >= 0 : not_of_kind(x, sd->loc);
+      case SD_INT: return Store::is_int(x) || not_of_kind(x, sd->loc);
+      case SD_STRING: return st.kind(x) == K_STR || not_of_kind(x, sd->loc);
       case SD_CUP: return member_sd(x, sd->kids[0], c) || member_sd(x, sd->kids[1], c);
       case SD_CAP: return member_sd(x, sd->kids[0], c) && member_sd(x, sd->kids[1], c);
       case SD_DIFF: return member_sd(x, sd->kids[0], c) && !member_sd(x, sd->kids[1], c);
