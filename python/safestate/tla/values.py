@@ -490,7 +490,23 @@ def _container_member(v: Value, s: frozenset) -> bool:
     sig = kind_sig(v)
     if sig is not None and _element_sigs(s) == (sig,):
         return v in s
-    return tlc_search(v, s)
+    tlc_search(v, s)  # TLC's error, if its search compares incomparable kinds
+    return exact_key(v) in _exact_keys(s)
+
+
+_EXACT_CACHE: dict[int, tuple[frozenset, frozenset]] = {}
+
+
+def _exact_keys(s: frozenset) -> frozenset:
+    """The `exact_key`s of the elements of `s` (cached per set object)."""
+    hit = _EXACT_CACHE.get(id(s))
+    if hit is not None and hit[0] is s:
+        return hit[1]
+    if len(_EXACT_CACHE) > 20000:
+        _EXACT_CACHE.clear()
+    keys = frozenset(map(exact_key, s))
+    _EXACT_CACHE[id(s)] = (s, keys)
+    return keys
 
 
 _SIG_SCALARS: dict[type, str] = {bool: "b", int: "i", str: "s"}
@@ -942,6 +958,8 @@ def _tlc_compare(a: Value, b: Value) -> int:
     if type(a) is ModelValue or type(b) is ModelValue:
         if a is b:
             return 0
+        if type(a) is ModelValue and type(b) is ModelValue:
+            return -1 if string_rank(a.name) < string_rank(b.name) else 1
         return -1 if type(a) is ModelValue else 1
     ka, kb = kind(a), kind(b)
     if ka != kb:
