@@ -31,7 +31,7 @@ from __future__ import annotations
 import itertools
 from itertools import compress
 from operator import is_, is_not
-from typing import Any, Iterable, Iterator
+from typing import Any, Callable, Iterable, Iterator
 
 from .enum_watch import ENUM_WATCH
 from .errors import EvalError
@@ -494,19 +494,34 @@ def _container_member(v: Value, s: frozenset) -> bool:
     return exact_key(v) in _exact_keys(s)
 
 
-_EXACT_CACHE: dict[int, tuple[frozenset, frozenset]] = {}
+def _per_set(cache: dict[int, tuple[frozenset, Any]], s: frozenset, compute: Callable[[frozenset], Any]) -> Any:
+    """`compute(s)`, cached per set object (keyed by identity: Python's equality would
+    take {0} for {FALSE})."""
+    hit = cache.get(id(s))
+    if hit is not None and hit[0] is s:
+        return hit[1]
+    if len(cache) > 20000:
+        cache.clear()
+    out = compute(s)
+    cache[id(s)] = (s, out)
+    return out
+
+
+_EXACT_CACHE: dict[int, tuple[frozenset, Any]] = {}
+_SIG_CACHE: dict[int, tuple[frozenset, Any]] = {}
 
 
 def _exact_keys(s: frozenset) -> frozenset:
-    """The `exact_key`s of the elements of `s` (cached per set object)."""
-    hit = _EXACT_CACHE.get(id(s))
-    if hit is not None and hit[0] is s:
-        return hit[1]
-    if len(_EXACT_CACHE) > 20000:
-        _EXACT_CACHE.clear()
-    keys = frozenset(map(exact_key, s))
-    _EXACT_CACHE[id(s)] = (s, keys)
-    return keys
+    """The `exact_key`s of the elements of `s`."""
+    return _per_set(_EXACT_CACHE, s, lambda x: frozenset(map(exact_key, x)))
+
+
+def _element_sigs(s: frozenset) -> tuple:
+    """The distinct kind signatures of the elements of `s`; (None,) if one is unknown."""
+    def sigs(x: frozenset) -> tuple:
+        out = tuple({kind_sig(e) for e in x})
+        return (None,) if None in out else out
+    return _per_set(_SIG_CACHE, s, sigs)
 
 
 _SIG_SCALARS: dict[type, str] = {bool: "b", int: "i", str: "s"}
@@ -535,23 +550,6 @@ def kind_sig(v: Value) -> Any:
         sigs = _element_sigs(v)
         return ("s", sigs[0]) if len(sigs) == 1 and sigs[0] is not None else None
     return None
-
-
-_SIG_CACHE: dict[int, tuple[frozenset, tuple]] = {}
-
-
-def _element_sigs(s: frozenset) -> tuple:
-    """The distinct kind signatures of the elements of `s` (cached per set object)."""
-    hit = _SIG_CACHE.get(id(s))
-    if hit is not None and hit[0] is s:
-        return hit[1]
-    if len(_SIG_CACHE) > 20000:
-        _SIG_CACHE.clear()
-    sigs = tuple({kind_sig(x) for x in s})
-    if None in sigs:
-        sigs = (None,)
-    _SIG_CACHE[id(s)] = (s, sigs)
-    return sigs
 
 
 def _same_kind_as_elements(v: Value, s: frozenset) -> bool:
