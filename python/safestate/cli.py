@@ -48,21 +48,21 @@ exit codes (every subcommand):
         or binding module, unwritable output path): one line on stderr, no traceback
   3     check --tlc: TLC could not be run (TLA2TOOLS_JAR not a TLC jar, java failed);
         mutate: the mutation score is below --min-score
-  12    an invariant is violated (check: TLC's code; prove: a counterexample)
   10/11/13/14  check: assumption / deadlock / liveness / Assert failure (TLC's codes)
+  12    an invariant is violated (check: TLC's code; prove: a counterexample)
   13    prove: an invariant is ill-defined (a reachable evaluation TLA+ leaves undefined,
         named with file:line:col and a trace)
   20    conform: the C++ disagrees with the model (a mismatch)
   21    conform: no mismatch, but the evidence is incomplete (a transition not covered,
         a table row never taken or a declared-unreachable row fired)
-  75/76 check: evaluation error in the next-state relation / an invariant
-  150/151  check: TLA+ module / .cfg error (file:line:col on stderr)
-  153   check: memory limit reached
   74    check: stdout or the --itf/--graph file could not be written (full disk);
         the verdict is printed first
+  75/76 check: evaluation error in the next-state relation / an invariant
   124   evidence --verify: no difference, but a re-run check reached --check-timeout
   130   interrupted (check --json: one object, "result": "interrupted", counts so far)
   143   terminated (SIGTERM)
+  150/151  check: TLA+ module / .cfg error (file:line:col on stderr)
+  153   check: memory limit reached
   255   check: internal error, or where TLC exits with 255 (a malformed .cfg, a number
         beyond TLC's 32-bit integers)
 """
