@@ -6,6 +6,7 @@ one line with the documented exit code (`safestate --help`), never a traceback.
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import sys
@@ -42,6 +43,20 @@ def one_line(e: BaseException) -> str:
     msg = getattr(e, "message", None) or str(e) or type(e).__name__
     text = f"{loc}: {msg}" if loc else msg
     return " ".join(text.split())
+
+
+def whole_number(minimum: int) -> Callable[[str], int]:
+    """An argparse type: a whole number of at least `minimum` (a usage error, exit 2,
+    otherwise)."""
+    def parse(text: str) -> int:
+        try:
+            n = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected a whole number, not {text!r}") from None
+        if n < minimum:
+            raise argparse.ArgumentTypeError(f"must be at least {minimum}, not {n}")
+        return n
+    return parse
 
 
 SIGPIPE_EXIT = 128 + 13  # what a shell reports for a process ended by SIGPIPE

@@ -20,7 +20,7 @@ import threading
 import time
 from typing import Any, Callable, TextIO
 
-from ..errors import UsageError, check_writable_file, closed_stdout_exit, one_line
+from ..errors import UsageError, check_writable_file, closed_stdout_exit, one_line, whole_number
 from ..tla.errors import TlaError
 from . import exit_codes
 from .explore import CheckResult, explore_states, print_progress
@@ -40,19 +40,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--engine", choices=("python", "native", "auto"), default="python",
                    help="python (the reference evaluator, default), native (the C++ core: a subset, "
                    "refused with file:line:col outside it) or auto (native where it applies)")
-    p.add_argument("--max-memory", type=positive_int, metavar="MB", help="stop with an error above this resident "
+    p.add_argument("--max-memory", type=whole_number(1), metavar="MB", help="stop with an error above this resident "
                    "memory (default 70%% of RAM)")
-
-
-def positive_int(text: str) -> int:
-    """An argparse type: a whole number of at least 1 (a usage error, exit 2, otherwise)."""
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, not {text!r}") from None
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, not {n}")
-    return n
 
 
 def available_cores() -> int:

@@ -16,6 +16,7 @@ import time
 from typing import Any
 
 from ..checker.cfg import parse_config
+from ..errors import whole_number
 from ..tla.errors import TlaError
 from .engines.result import Result
 from .plan import ENGINES, find_plan, load_plan
@@ -28,7 +29,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("model", metavar="MODEL.tla", help="the TLA+ module to prove")
     parser.add_argument("--config", metavar="CFG", help="the .cfg (default: MODEL.cfg)")
     parser.add_argument("--engine", choices=ENGINES, help="override the engine of the proof plan")
-    parser.add_argument("--depth", type=_natural, metavar="K", help="BMC depth / largest k of k-induction")
+    parser.add_argument("--depth", type=whole_number(0), metavar="K", help="BMC depth / largest k of k-induction")
     parser.add_argument("--json", action="store_true", help="print the results as JSON on stdout")
     parser.add_argument("--invariant", nargs="+", metavar="NAME", help="prove only these invariants")
     parser.add_argument("--proofs", metavar="PLAN.toml",
@@ -37,17 +38,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="give these constants (all when no name follows) their .cfg value instead of a "
                              "symbolic one")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
-
-
-def _natural(text: str) -> int:
-    """An argparse type: a whole number >= 0 (otherwise a usage error, exit 2)."""
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, not {text!r}") from None
-    if n < 0:
-        raise argparse.ArgumentTypeError(f"must be 0 or more, not {n}")
-    return n
 
 
 def run(args: argparse.Namespace) -> int:
