@@ -179,21 +179,8 @@ class _Converter:
         raise TlaError("syntax", "parse error", self.loc(root))
 
     def next_token_loc(self, pos: int) -> Loc:
-        data = self.data
-        while pos < len(data):
-            if data[pos:pos + 1].isspace():
-                pos += 1
-            elif data.startswith(b"\\*", pos):
-                end = data.find(b"\n", pos)
-                pos = len(data) if end < 0 else end
-            elif data.startswith(b"(*", pos):
-                end = data.find(b"*)", pos)
-                pos = len(data) if end < 0 else end + 2
-            else:
-                break
-        line = data.count(b"\n", 0, pos) + 1
-        col = len(data[data.rfind(b"\n", 0, pos) + 1:pos].decode("utf-8", "replace")) + 1
-        return Loc(self.file, line, col)
+        from .syntax_hints import next_token_loc
+        return next_token_loc(self.file, self.data, pos)
 
     def check_precedence(self, n: Node, sym: str) -> None:
         """SANY rejects ``a op1 b op2 c`` when the precedence ranges of op1 and op2

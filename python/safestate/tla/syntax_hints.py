@@ -227,6 +227,11 @@ def _empty_definition(data: bytes, start: int) -> tuple[str, int, int] | None:
     return None
 
 
+def next_token_loc(file: str, data: bytes, pos: int) -> Loc:
+    """Where the next token after `pos` starts (past whitespace and comments)."""
+    return _loc(file, data, _skip_blank(data, pos))
+
+
 def _skip_blank(data: bytes, pos: int) -> int:
     """The next position after whitespace and comments."""
     while pos < len(data):
