@@ -17,7 +17,7 @@ from typing import Callable
 from .errors import AssertFailure, EvalError, JavaOverrideError, ModuleEvalError, UnsupportedError
 from .tlcget import tlc_get, tlc_set
 from .values import (
-    INT, NAT, FilteredSet, check_same_kind_sets, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, fmt,
+    INT, NAT, FilteredSet, check_same_kind_sets, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, finite_subseteq, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
 )
 
@@ -550,11 +550,7 @@ def subseteq(a: Value, b: Value) -> bool:
     if not is_set(a) or not is_set(b):
         raise EvalError(f"Attempted to apply \\subseteq to a non-set: {fmt(a)}, {fmt(b)}")
     if type(b) is frozenset:
-        x = as_set(a)
-        types = set(map(type, x)) | set(map(type, b))
-        if len(types) <= 1 and types <= {bool, int, str}:
-            return x <= b
-        return all(member(v, b) for v in x)
+        return finite_subseteq(as_set(a), b)
     return all(member(x, b) for x in iter_set(a))
 
 

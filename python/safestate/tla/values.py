@@ -482,6 +482,16 @@ def member(v: Value, s: Value) -> bool:
     raise EvalError(f"Attempted to check if the value:\n{fmt(v)}\nis an element of the non-set {fmt(s)}")
 
 
+def finite_subseteq(x: frozenset, b: frozenset) -> bool:
+    """``x \\subseteq b`` for finite sets: Python's `<=` where every element on both
+    sides has the same kind signature (the signatures are cached per set), otherwise
+    element by element through `member` and its checks of TLC's comparisons."""
+    sigs = _element_sigs(b)
+    if not x or (len(sigs) == 1 and sigs[0] is not None and _element_sigs(x) == sigs):
+        return x <= b
+    return all(member(v, b) for v in x)
+
+
 def _container_member(v: Value, s: frozenset) -> bool:
     """A tuple, function, record or set looked up in a finite set.  Python's `in` is
     TLA+'s answer only where no position can hold TRUE on one side and 1 on the other:
