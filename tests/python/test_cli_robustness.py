@@ -408,10 +408,13 @@ def test_a_parse_error_says_what_was_expected_where_the_parse_stops(tmp_path, na
 
 
 @pytest.mark.parametrize("expr, shown", [("x + 1", "2147483647+1"), ("x * 2", "2147483647*2"),
-                                         ("0 - x - 10", "-2147483647-10"), ("2 ^ 40", "2^40")])
+                                         ("0 - x - 10", "-2147483647-10"), ("2 ^ 40", "2^40"),
+                                         ("-(-x - 1)", "--2147483648"),
+                                         ("(-x - 1) \\div (-1)", "-2147483648 \\div -1")])
 def test_arithmetic_beyond_tlcs_32_bit_ints_is_tlcs_overflow_error(tla_dir, expr: str, shown: str) -> None:
-    """TLC's Naturals: "Overflow when computing a+b" (EC.TLC_MODULE_OVERFLOW), exit 255
-    while computing successors -- never a number TLC cannot hold."""
+    """TLC's Naturals/Integers: "Overflow when computing a+b" (EC.TLC_MODULE_OVERFLOW), exit 255
+    while computing successors -- never a number TLC cannot hold (messages as TLC 1.8.0
+    prints them, unary minus and \\div of the least int included)."""
     tla = tla_dir("Over", f"""---- MODULE Over ----
 EXTENDS Integers
 VARIABLE x

@@ -117,6 +117,8 @@ def div(a: Value, b: Value) -> int:
     a, b = _int(a, "\\div"), _int(b, "\\div")
     if b == 0:
         raise ModuleEvalError("The second argument of \\div is 0.")
+    if a == TLC_MIN_INT and b == -1:  # the one quotient outside 32 bits (Integers.Divide)
+        raise ModuleEvalError(f"Overflow when computing {a} \\div {b}")
     return a // b
 
 
@@ -138,7 +140,10 @@ def interval(a: Value, b: Value) -> IntervalSet:
 
 
 def negate(a: Value) -> int:
-    return -_int(a, "-")
+    n = _int(a, "-")
+    if n == TLC_MIN_INT:  # TLC's Integers.Neg: the message as TLC writes it
+        raise ModuleEvalError(f"Overflow when computing -{n}")
+    return -n
 
 
 NATURALS = {
