@@ -567,7 +567,8 @@ def union(s: Value) -> Value:
     if any(_infinite(x) for x in parts):
         # UNION {[D -> Int]}: only membership can be tested, as TLC's UnionValue.
         return FilteredSet(lambda v: any(member(v, x) for x in parts), "UNION {" + ", ".join(
-            x.describe() if isinstance(x, LazySet) else fmt(x) for x in parts) + "}")
+            x.describe() if isinstance(x, LazySet) else fmt(x) for x in parts) + "}",
+            "Attempted to enumerate UNION(s), but some element of s is nonenumerable.")
     out: set = set()
     for x in parts:
         out |= as_set(x)

@@ -411,10 +411,13 @@ class ProductSet(LazySet):
 class FilteredSet(LazySet):
     """An infinite set combined with another set: ``Nat \\ {0}``, ``Int \\cup {..}``..."""
 
-    __slots__ = ("test", "text", "finite")
+    __slots__ = ("test", "text", "finite", "java_error")
 
-    def __init__(self, test: Any, text: str) -> None:
+    def __init__(self, test: Any, text: str, java_error: str | None = None) -> None:
         self.test, self.text, self.finite = test, text, False
+        # TLC's message where its Java code throws instead of reporting (UNION {Nat}
+        # held in a state: "TLC threw an unexpected exception", exit 255).
+        self.java_error = java_error
 
     def contains(self, v: Value) -> bool:
         return self.test(v)
