@@ -29,7 +29,7 @@ would make two different TLA+ values one, the kind is checked explicitly:
 from __future__ import annotations
 
 import itertools
-from itertools import compress
+from itertools import chain, compress
 from operator import is_, is_not
 from typing import Any, Callable, Iterable, Iterator
 
@@ -738,7 +738,7 @@ def _unequal_plainly(a: Value, b: Value, t: type) -> bool:
     if t is FnValue:
         da, db = a.d, b.d
         if len(da) != len(db):
-            return True
+            return not _record_against_non_record(a, b)
         if type(next(iter(da), "")) is str and list(da) == list(db):
             va, vb = da.values(), db.values()
             return _SIMPLE_SET.issuperset(map(type, va)) and list(map(type, va)) == list(map(type, vb))
@@ -796,6 +796,8 @@ def tlc_equals(a: Value, b: Value) -> bool:
         return all(tlc_equals(x, y) for x, y in zip(sorted_elems(a), sorted_elems(b)))
     if ta is tuple and tb is tuple:
         return len(a) == len(b) and all(tlc_equals(x, y) for x, y in zip(a, b))
+    if _record_against_non_record(a, b):
+        raise EvalError(f"Attempted to check equality of record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
     ia, ib = _fn_items(a), _fn_items(b)
     if len(ia) != len(ib):
         return False
@@ -808,6 +810,16 @@ def tlc_equals(a: Value, b: Value) -> bool:
             if not tlc_equals(x, y):
                 return False
     return all(tlc_equals(x, y) for (_, x), (_, y) in zip(ia, ib))
+
+
+def _record_against_non_record(a: Value, b: Value) -> bool:
+    """TLC's RecordValue.equals(b): `a` a record and `b` a function that is not one (a
+    domain other than field names), an error whatever the sizes; ``<<>>`` is the empty record."""
+    if type(a) is not FnValue or not a.d or not all(type(k) is str for k in a.d):
+        return False
+    if type(b) is tuple:
+        return len(b) > 0
+    return type(b) is FnValue and not all(type(k) is str for k in b.d)
 
 
 def same_kinds(a: Value, b: Value) -> bool:
@@ -925,17 +937,51 @@ def exact_key(v: Value) -> Any:
     return v
 
 
+def kind_signature(v: Value) -> Any:
+    """The kinds inside `v`, position by position: two values with one signature are
+    compared by TLC (sorting, ``=``) without meeting values of incomparable kinds.  None
+    where that cannot be told this way (model values, lazy sets, a set whose elements
+    differ in shape, a function over compound values)."""
+    t = type(v)
+    if t is int or t is str or t is bool:
+        return t
+    if t is tuple:
+        return (tuple, tuple(map(kind_signature, v)))
+    if t is FnValue:
+        d = v.d
+        kt = set(map(type, d))
+        if kt == {str}:  # a record: its fields by name
+            return (FnValue, frozenset((k, kind_signature(x)) for k, x in d.items()))
+        if kt == {int} or kt == {bool}:  # TLC compares the domains in this order
+            return (FnValue, tuple((type(k), kind_signature(d[k])) for k in sorted(d)))
+        return None
+    if t is frozenset:
+        inner = set(map(kind_signature, v))
+        if len(inner) > 1 or None in inner:
+            return None
+        return (frozenset, inner.pop() if inner else ())
+    return None
+
+
+def uniform_kinds(elems: Iterable[Value]) -> bool:
+    """True when all `elems` have one (known) kind signature: any comparison TLC makes
+    between them pairs values of one kind."""
+    sigs = set(map(kind_signature, elems))
+    return len(sigs) <= 1 and None not in sigs
+
+
 def check_set_kinds(elems: list, s: frozenset) -> frozenset:
     """The set `s` built from `elems`, or TLC's error where sorting them (TLC normalises
     every set it compares, stores or counts) compares values of incomparable kinds:
-    ``{1, TRUE}`` is an error, not a one-element set.  Sets of functions or sets are
-    checked when Python merged two of their elements (``{<<1>>, <<TRUE>>}``)."""
+    ``{1, TRUE}`` is an error, not a one-element set, and so are ``{<<1>>, <<TRUE>>}``
+    (which Python merges) and ``{[a |-> 1], (2 :> 1)}`` (a field name against 2).
+    Compounds of one kind signature need no sorting."""
     types = set(map(type, elems))
     if len(types) == 1:
         t = types.pop()
-        if t in _SIMPLE or t is ModelValue or len(s) == len(elems):
+        if t in _SIMPLE or t is ModelValue or len(elems) < 2:
             return s
-        if len(set(map(exact_key, elems))) == len(s):
+        if (len(s) == len(elems) or len(set(map(exact_key, elems))) == len(s)) and uniform_kinds(elems):
             return s
     else:
         types.discard(ModelValue)
@@ -951,8 +997,12 @@ def check_same_kind_sets(a: frozenset, b: frozenset, op: str) -> None:
     if not a or not b:
         return
     ta, tb = type(next(iter(a))), type(next(iter(b)))
-    if ta is tb or ta is ModelValue or tb is ModelValue or (ta in _CONTAINERS and tb in _CONTAINERS
-                                                             and (ta is frozenset) is (tb is frozenset)):
+    if ta is ModelValue or tb is ModelValue:
+        return
+    if ta is tb and ta not in _CONTAINERS:
+        return
+    if (ta in _CONTAINERS and tb in _CONTAINERS and (ta is frozenset) is (tb is frozenset)
+            and uniform_kinds(chain(a, b))):
         return
     # TLC looks each element of one set up in the other (`x.equals(y)` along a set
     # literal, which it keeps unsorted): for \\cup an element of `b` in `a`, for \\cap
