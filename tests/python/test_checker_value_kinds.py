@@ -191,11 +191,27 @@ CASES = {
         "(1 :> 2 @@ 3 :> 1)}) + Cardinality({{<<1>>}, {<<1, 2>>}})\nNext == UNCHANGED x",
         '',
         Tlc(0, 1, 2, 1, None)),
+    'KindCombineFcnKeys': Case(
+        '(TRUE :> 1) @@ (1 :> 2) is an error (TLC\'s CombineFcn compares the keys), not (TRUE :> 1)',
+        "VARIABLE x\nInit == x = (TRUE :> 1) @@ (1 :> 2)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of integer 1 with non-integer:\nTRUE')),
+    'KindCombineFcnArgument': Case(
+        '(1 :> 2) @@ 5 is TLC\'s argument error',
+        "VARIABLE x\nInit == x = (1 :> 2) @@ 5\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'The second argument of @@ should be a function, but instead it is:\n5')),
+    'KindCombineFcnTuple': Case(
+        '<<5, 6>> @@ (3 :> 7) is the sequence <<5, 6, 7>>',
+        "VARIABLE x\nInit == x = <<5, 6>> @@ (3 :> 7)\nNext == UNCHANGED x\nInv == x = <<5, 6, 7>>",
+        'INVARIANT Inv\n',
+        Tlc(0, 1, 2, 1, None)),
 }
 
 # Outside the native core's subset (refused with "not supported by the native engine").
 NATIVE_UNSUPPORTED = {"KindToString", "KindMemo", "KindFunctionSet", "KindRecordFunctionSet", "KindRecordCupFunction",
-                      "KindRecordEqualsFunction", "KindComparableShapes"}
+                      "KindRecordEqualsFunction", "KindComparableShapes", "KindCombineFcnKeys", "KindCombineFcnArgument",
+                      "KindCombineFcnTuple"}
 
 
 def _spec(tla_dir, name: str) -> str:

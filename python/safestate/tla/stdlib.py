@@ -19,6 +19,7 @@ from .tlcget import tlc_get, tlc_set
 from .values import (
     INT, NAT, FilteredSet, check_same_kind_sets, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, finite_subseteq, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
+    tlc_equals, tlc_key,
 )
 
 
@@ -287,17 +288,37 @@ def single_fn(k: Value, v: Value) -> Value:
     return make_fn({k: v})
 
 
-def fn_items(f: Value) -> dict:
+def fn_items(f: Value, which: str = "first") -> dict:
     if type(f) is tuple:
         return {i + 1: x for i, x in enumerate(f)}
     if type(f) is FnValue:
         return f.d
-    raise EvalError(f"Attempted to apply @@ to the non-function {fmt(f)}")
+    raise ModuleEvalError(f"The {which} argument of @@ should be a function, but instead it is:\n{fmt(f)}")
+
+
+_PLAIN_KEYS = (int, str)
+
+
+def _tlc_items(d: dict) -> list:
+    """A function's (key, value) pairs in TLC's order of its domain."""
+    return sorted(d.items(), key=lambda kv: tlc_key(kv[0]))
 
 
 def merge_fn(f: Value, g: Value) -> Value:
-    d = dict(fn_items(g))
-    d.update(fn_items(f))
+    """TLC's CombineFcn: f's keys, then each key of g that equals none of them, looked
+    up with TLC's ``equals`` (an error for keys of incomparable kinds: ``(TRUE :> 1) @@
+    (1 :> 2)``, which a Python dict would merge)."""
+    d1, d2 = fn_items(f), fn_items(g, "second")
+    types = set(map(type, d1)) | set(map(type, d2))
+    if len(types) == 1 and types <= set(_PLAIN_KEYS):
+        d = dict(d2)
+        d.update(d1)
+        return make_fn(d)
+    keys1 = [k for k, _ in _tlc_items(d1)]
+    d = dict(d1)
+    for k2, v2 in _tlc_items(d2):
+        if not any(tlc_equals(k2, k1) for k1 in keys1):
+            d[k2] = v2
     return make_fn(d)
 
 
