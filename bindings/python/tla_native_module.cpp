@@ -293,12 +293,23 @@ class Store {
   // elements in TLC's order; a tuple's length, then its items; a record's field
   // names, then its fields; a function's keys, then its values), failing at the first
   // pair of incomparable kinds it meets (<<1>> = <<TRUE>>), as values.tlc_equals.
+  bool is_record(uint32_t f) const {
+    if (kind(f) != K_FUN || len(f) == 0) return false;
+    const uint32_t* k = items(f);
+    for (uint32_t i = 0; i < len(f); ++i)
+      if (kind(k[i]) != K_STR) return false;
+    return true;
+  }
   bool equal_walk(uint32_t a, uint32_t b, int loc) const {
     if (a == b) return true;
     Kind ka = kind(a), kb = kind(b);
     if (ka == K_MV || kb == K_MV) return false;
     if (cls(ka) != cls(kb)) incomparable("check equality of", loc);
     if (ka != K_SEQ && ka != K_FUN && ka != K_SET) return false;
+    // TLC's RecordValue.equals: a record equals only what converts to a record (a
+    // function of field names, or <<>>), else an error whatever the sizes.
+    if (is_record(a) && ((kb == K_SEQ && len(b) > 0) || (kb == K_FUN && !is_record(b))))
+      incomparable("check equality of", loc);
     uint32_t n = len(a);
     if (n != len(b)) return false;
     const uint32_t *x = items(a), *y = items(b);

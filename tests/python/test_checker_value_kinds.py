@@ -209,9 +209,7 @@ CASES = {
 }
 
 # Outside the native core's subset (refused with "not supported by the native engine").
-NATIVE_UNSUPPORTED = {"KindToString", "KindMemo", "KindFunctionSet", "KindRecordFunctionSet", "KindRecordCupFunction",
-                      "KindRecordEqualsFunction", "KindComparableShapes", "KindCombineFcnKeys", "KindCombineFcnArgument",
-                      "KindCombineFcnTuple"}
+NATIVE_UNSUPPORTED = {"KindToString", "KindMemo", "KindFunctionSet"}
 
 
 def _spec(tla_dir, name: str) -> str:
