@@ -206,6 +206,26 @@ CASES = {
         "VARIABLE x\nInit == x = <<5, 6>> @@ (3 :> 7)\nNext == UNCHANGED x\nInv == x = <<5, 6, 7>>",
         'INVARIANT Inv\n',
         Tlc(0, 1, 2, 1, None)),
+    'KindTupleEqualsInt': Case(
+        '<<1>> = 1: TLC\'s TupleValue words it "the function ... with the value"',
+        "VARIABLE x\nInit == x = (<<1>> = 1)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of the function <<1>> with the value:\n1')),
+    'KindSetEqualsInt': Case(
+        '{1} = 1: "the set ... with the value"',
+        "VARIABLE x\nInit == x = ({1} = 1)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of the set {1} with the value:\n1')),
+    'KindRecordEqualsInt': Case(
+        '[a |-> 1] = 1: "record ... with non-record"',
+        "VARIABLE x\nInit == x = ([a |-> 1] = 1)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of record:\n[a |-> 1]\nwith non-record\n1')),
+    'KindIntEqualsTuple': Case(
+        '1 = <<1>>: the left operand is named first, as TLC',
+        "VARIABLE x\nInit == x = (1 = <<1>>)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of integer 1 with non-integer:\n<<1>>')),
 }
 
 # Outside the native core's subset (refused with "not supported by the native engine").

@@ -750,8 +750,15 @@ def _unequal_plainly(a: Value, b: Value, t: type) -> bool:
 
 
 def _equality_error(a: Value, b: Value) -> EvalError:
-    """TLC's message where ``a.equals(b)`` meets values of incomparable kinds."""
+    """TLC's message where ``a.equals(b)`` meets values of incomparable kinds (each
+    value class of TLC words it its own way)."""
     ka = kind(a)
+    if ka == "function":
+        if type(a) is FnValue and a.d and all(type(k) is str for k in a.d):
+            return EvalError(f"Attempted to check equality of record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
+        return EvalError(f"Attempted to check equality of the function {fmt(a)} with the value:\n{fmt(b)}")
+    if ka == "set":
+        return EvalError(f"Attempted to check equality of the set {fmt(a)} with the value:\n{fmt(b)}")
     verb = "compare equality" if ka == "boolean" else "check equality"
     return EvalError(f"Attempted to {verb} of {ka} {fmt(a)} with non-{ka}:\n{fmt(b)}")
 
