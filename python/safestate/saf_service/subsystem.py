@@ -66,7 +66,8 @@ class Subsystem:
                 self.set_state(m.state, f"Set Subsystem State from {sender[0]}:{sender[1]}")
                 self.sock.sendto(wire.report_subsystem_state(self.state), sender)
 
-    def step(self) -> None:
+    def receive(self) -> None:
+        """Handles every waiting datagram."""
         while True:
             try:
                 data, sender = self.sock.recvfrom(256)
@@ -78,6 +79,10 @@ class Subsystem:
                 self.handle(data, (sender[0], sender[1]))
             except OSError:
                 pass  # the answer could not be sent: the service will ask again
+
+    def step(self) -> None:
+        """One cycle: what is waiting, then the watchdog of the service."""
+        self.receive()
         silence = time.monotonic() - self.last_heard
         if silence > self.timeout and not self.silent:
             self.silent = True
@@ -115,6 +120,6 @@ def run(args: argparse.Namespace) -> int:
     ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
     while ticker.running and not quit_requested:
         sub.step()
-        ticker.wait(command)
+        ticker.wait(command, sock, sub.receive)
     log.emit("stopped", f"state {sub.state}", state=sub.state)
     return 0

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import select
 import signal
+import socket
 import sys
 import time
 from collections.abc import Callable
@@ -29,9 +30,11 @@ class Ticker:
     def running(self) -> bool:
         return self.stop_signal is None
 
-    def wait(self, on_line: Callable[[str], None] | None = None) -> None:
+    def wait(self, on_line: Callable[[str], None] | None = None, sock: socket.socket | None = None,
+             on_readable: Callable[[], None] | None = None) -> None:
         """Sleeps until the next cycle; with `on_line`, stdin lines that arrive meanwhile
-        are handed to it (the simulators' commands)."""
+        are handed to it (the simulators' commands); with `sock`, `on_readable` runs as soon
+        as a datagram waits (the subsystem answers on arrival, as a real one would)."""
         self.cycle += 1
         deadline = self.start + self.cycle * self.interval
         while self.running:
@@ -40,14 +43,21 @@ class Ticker:
                 if remaining < -self.interval:
                     self.late += 1
                 return
-            if on_line is None:
+            watched: list[int] = []
+            if on_line is not None:
+                watched.append(sys.stdin.fileno())
+            if sock is not None and on_readable is not None:
+                watched.append(sock.fileno())
+            if not watched:
                 time.sleep(remaining)
                 continue
             try:
-                ready, _, _ = select.select([sys.stdin], [], [], remaining)
+                ready, _, _ = select.select(watched, [], [], remaining)
             except InterruptedError:
                 continue
-            if ready:
+            if sock is not None and sock.fileno() in ready and on_readable is not None:
+                on_readable()
+            if on_line is not None and sys.stdin.fileno() in ready:
                 line = sys.stdin.readline()
                 if line == "":  # stdin closed: no more commands
                     on_line = None
