@@ -143,7 +143,7 @@ Captures press_and_capture(HostRig& r) {
   return cap;
 }
 
-TEST(SAF14_Attacks, EveryAttackRejectedAndCountedWhileTheEstopIsSet) {
+TEST(SAF03_HostileSender, EveryAttackRejectedAndCountedWhileTheEstopIsSet) {
   HostRig r{true};
   const Captures cap = press_and_capture(r);
   constexpr int kRepeats = 3;
@@ -198,7 +198,7 @@ TEST(SAF14_Attacks, EveryAttackRejectedAndCountedWhileTheEstopIsSet) {
   EXPECT_EQ(r.subsystem->state(), SubsystemState::Operational);
 }
 
-TEST(SAF14_Attacks, WithoutKeyTheSequenceStillRejectsReplayAndSeedForm) {
+TEST(SAF03_HostileSender, WithoutKeyTheSequenceStillRejectsReplayAndSeedForm) {
   HostRig r{false};
   const Captures cap = press_and_capture(r);
   for (int i = 0; i < 3; ++i) {
@@ -214,7 +214,8 @@ TEST(SAF14_Attacks, WithoutKeyTheSequenceStillRejectsReplayAndSeedForm) {
   EXPECT_EQ(c.of(IntakeReason::EstopBadMac), 3U);  // a MAC where no key is configured
 }
 
-TEST(SAF14_Attacks, AFloodWhileClearBringsTheSubsystemToEmergency) {
+// req: SAF-02
+TEST(SAF03_HostileSender, AFloodWhileClearBringsTheSubsystemToEmergency) {
   HostRig r{true};
   r.client->set_mode(ClientMode::Clear);
   for (int i = 0; i < 30; ++i) (void)r.cycle();

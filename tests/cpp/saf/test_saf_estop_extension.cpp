@@ -9,7 +9,7 @@
 namespace safestate::saf::test {
 namespace {
 
-TEST(SAF14_EstopExtension, SequencedLayoutIsLittleEndian) {
+TEST(SAF03_EstopExtension, SequencedLayoutIsLittleEndian) {
   const Encoded e = encode_set_estop(true, 0x0A0B0C0D, 0x0102030405060708ULL, MacKey{});
   ASSERT_EQ(e.size, kHeaderSize + kEstopSequencedPayload);
   const std::uint8_t expected[] = {0x3C, 0x01, 0,    0,    0x01, 0, 0, 0,   // id
@@ -26,7 +26,7 @@ TEST(SAF14_EstopExtension, SequencedLayoutIsLittleEndian) {
   EXPECT_EQ(r.message.sequence, 0x0102030405060708ULL);
 }
 
-TEST(SAF14_EstopExtension, AuthenticatedFormCarriesTheMacOfEverythingBeforeIt) {
+TEST(SAF03_EstopExtension, AuthenticatedFormCarriesTheMacOfEverythingBeforeIt) {
   MacKey key{};
   key.size = 16;
   for (std::size_t i = 0; i < key.size; ++i) key.bytes[i] = static_cast<std::uint8_t>(0xA0 + i);
@@ -43,7 +43,7 @@ TEST(SAF14_EstopExtension, AuthenticatedFormCarriesTheMacOfEverythingBeforeIt) {
   EXPECT_EQ(r.message.sequence, 99U);
 }
 
-TEST(SAF14_EstopExtension, OtherPayloadSizesAreBadLength) {
+TEST(SAF03_EstopExtension, OtherPayloadSizesAreBadLength) {
   for (std::uint16_t n = 0; n <= kMaxDatagram - kHeaderSize; ++n) {
     Encoded e = encode(Message::set_estop(false));
     e.bytes[8] = static_cast<std::uint8_t>(n);

@@ -39,7 +39,7 @@ IntakeReason judge(Intake& in, const Encoded& e, const Source& from = {kClient, 
   return in.judge(datagram(e), from, overflow).reason;
 }
 
-TEST(SAF14_Intake, ReplayWindowSeparatesReplayFromStaleAndNeverReorders) {
+TEST(SAF03_Intake, ReplayWindowSeparatesReplayFromStaleAndNeverReorders) {
   Intake in{config(false)};
   const MacKey none{};
   EXPECT_EQ(judge(in, encode_set_estop(false, kId, 100, none)), IntakeReason::None);
@@ -53,7 +53,7 @@ TEST(SAF14_Intake, ReplayWindowSeparatesReplayFromStaleAndNeverReorders) {
   EXPECT_EQ(in.highest_sequence(), 1'000'000U);
 }
 
-TEST(SAF14_Intake, OverflowRejectsAClearButAdvancesItsSequenceAndAcceptsASet) {
+TEST(SAF03_Intake, OverflowRejectsAClearButAdvancesItsSequenceAndAcceptsASet) {
   Intake in{config(false)};
   const MacKey none{};
   EXPECT_EQ(judge(in, encode_set_estop(false, kId, 10, none), {kClient, SocketRole::Client}, true),
@@ -63,7 +63,7 @@ TEST(SAF14_Intake, OverflowRejectsAClearButAdvancesItsSequenceAndAcceptsASet) {
   EXPECT_EQ(judge(in, encode_set_estop(true, kId, 11, none), {kClient, SocketRole::Client}, true), IntakeReason::None);
 }
 
-TEST(SAF14_Intake, SourceIsCheckedBeforeContentAndPerMessageType) {
+TEST(SAF03_Intake, SourceIsCheckedBeforeContentAndPerMessageType) {
   Intake in{config(true)};
   const MacKey key = config(true).key;
   const Encoded good = encode_set_estop(false, kId, 5, key);
@@ -84,7 +84,7 @@ TEST(SAF14_Intake, SourceIsCheckedBeforeContentAndPerMessageType) {
   EXPECT_EQ(in.counters().rejected_total(), 6U);
 }
 
-TEST(SAF14_Intake, SeedFormOnlyWhereTheDeploymentAllowsIt) {
+TEST(SAF03_Intake, SeedFormOnlyWhereTheDeploymentAllowsIt) {
   IntakeConfig c = config(false);
   c.require_sequence = false;
   Intake lax{c};
@@ -97,7 +97,7 @@ TEST(SAF14_Intake, SeedFormOnlyWhereTheDeploymentAllowsIt) {
   EXPECT_EQ(judge(strict, encode(Message::set_estop(false))), IntakeReason::EstopUnsequenced);
 }
 
-TEST(SAF14_Intake, FilterPassesAcceptedDatagramsInOrderWithTheirSources) {
+TEST(SAF03_Intake, FilterPassesAcceptedDatagramsInOrderWithTheirSources) {
   Intake in{config(false)};
   InboundBatch b{};
   ASSERT_TRUE(b.push(encode(Message::report_health(Health::Error)), {kSubsystem, SocketRole::Subsystem}));

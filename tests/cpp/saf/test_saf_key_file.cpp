@@ -25,7 +25,7 @@ std::string write_key(const std::string& text, mode_t mode) {
 
 const std::string kHex32 = "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f";
 
-TEST(SAF14_KeyFile, Mode0600HexKeyIsRead) {
+TEST(Issue30_KeyFile, Mode0600HexKeyIsRead) {
   const std::string p = write_key(kHex32 + "\n", 0600);
   const KeyFileResult r = load_key_file(p.c_str());
   ::unlink(p.c_str());
@@ -35,7 +35,7 @@ TEST(SAF14_KeyFile, Mode0600HexKeyIsRead) {
   EXPECT_EQ(r.key.bytes[31], 0x1f);
 }
 
-TEST(SAF14_KeyFile, GroupOrOtherPermissionIsRefused) {
+TEST(Issue30_KeyFile, GroupOrOtherPermissionIsRefused) {
   for (mode_t mode : {0640, 0604, 0644, 0660, 0666}) {
     const std::string p = write_key(kHex32, mode);
     const KeyFileResult r = load_key_file(p.c_str());
@@ -46,7 +46,7 @@ TEST(SAF14_KeyFile, GroupOrOtherPermissionIsRefused) {
   }
 }
 
-TEST(SAF14_KeyFile, ContentAndFileKindAreChecked) {
+TEST(Issue30_KeyFile, ContentAndFileKindAreChecked) {
   const std::string not_hex = write_key(kHex32.substr(0, 62) + "zz", 0600);
   EXPECT_EQ(load_key_file(not_hex.c_str()).error, KeyFileError::NotHex);
   const std::string short_key = write_key(kHex32.substr(0, 30), 0600);

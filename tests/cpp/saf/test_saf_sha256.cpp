@@ -30,7 +30,7 @@ std::string mac(const std::vector<std::uint8_t>& k, const std::vector<std::uint8
   return hex(hmac_sha256(k.data(), k.size(), m.data(), m.size()), n);
 }
 
-TEST(SAF14_Sha256, Fips180Examples) {
+TEST(Issue30_Sha256, Fips180Examples) {
   EXPECT_EQ(sha(bytes("abc")), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   EXPECT_EQ(sha({}), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
   EXPECT_EQ(sha(bytes("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq")),
@@ -38,7 +38,7 @@ TEST(SAF14_Sha256, Fips180Examples) {
   EXPECT_EQ(sha(repeat('a', 1000000)), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
-TEST(SAF14_Sha256, IncrementalEqualsOneShotAcrossBlockBoundaries) {
+TEST(Issue30_Sha256, IncrementalEqualsOneShotAcrossBlockBoundaries) {
   const std::vector<std::uint8_t> m = repeat('q', 200);
   for (std::size_t cut : {1U, 55U, 56U, 63U, 64U, 65U, 119U, 128U}) {
     Sha256 s;
@@ -48,7 +48,7 @@ TEST(SAF14_Sha256, IncrementalEqualsOneShotAcrossBlockBoundaries) {
   }
 }
 
-TEST(SAF14_Sha256, Rfc4231HmacTestCases) {
+TEST(Issue30_Sha256, Rfc4231HmacTestCases) {
   EXPECT_EQ(mac(repeat(0x0b, 20), bytes("Hi There")),
             "b0344c61d8db38535ca8afceaf0bf12b881dc200c9833da726e9376c2e32cff7");
   EXPECT_EQ(mac(bytes("Jefe"), bytes("what do ya want for nothing?")),
@@ -67,7 +67,7 @@ TEST(SAF14_Sha256, Rfc4231HmacTestCases) {
             "9b09ffa71b942fcb27635fbcd5b0e944bfdc63644f0713938a7f51535c3a35e2");
 }
 
-TEST(SAF14_Sha256, MacEqualDetectsAnyDifferingByte) {
+TEST(Issue30_Sha256, MacEqualDetectsAnyDifferingByte) {
   Digest a = sha256(nullptr, 0);
   for (std::size_t i = 0; i < a.size(); ++i) {
     Digest b = a;
