@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Issue 30 item 3 (design §14): the deployed service (ServiceHost, real UDP sockets on
 // 127.0.0.1) while the real Safety Client holds the E-stop SET, against 28 kinds of attack
-// datagram from another process's socket or from the client's own port (a sender that got
+// datagram from another socket on the host or from the client's own port (a sender that got
 // hold of it): spoofed source, replay, stale sequence, wrong component, bad or missing MAC,
 // forged Confirm/Report Control and reports, every malformed shape, outgoing types, a
 // datagram to the connected subsystem socket, and a flood of 3,000 datagrams. The subsystem
 // stays EMERGENCY in every cycle and every attack is counted under its reason. Built and
-// run under ASan/UBSan by bench/saf_fuzz.sh (and scripts/saf_sanitize.sh).
+// run under ASan/UBSan by `bash bench/saf_fuzz.sh --sanitize-only`.
 #include <cstdio>
 #include <functional>
 #include <string>
