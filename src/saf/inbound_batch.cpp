@@ -5,8 +5,9 @@
 
 namespace safestate::saf {
 
-bool InboundBatch::push(const std::uint8_t* data, std::size_t size) noexcept {
+bool InboundBatch::push(const std::uint8_t* data, std::size_t size, const Source& from) noexcept {
   if (count == items.size()) return false;
+  sources[count] = from;
   Datagram& d = items[count++];
   d.size = size;
   const std::size_t kept = std::min(size, kMaxDatagram);

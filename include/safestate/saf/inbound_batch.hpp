@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "safestate/saf/codec.hpp"
+#include "safestate/saf/source.hpp"
 
 namespace safestate::saf {
 
@@ -21,12 +22,17 @@ struct Datagram {
 
 struct InboundBatch {
   std::array<Datagram, kMaxInboundPerCycle> items{};
+  /// The sender of items[i] (design §14); the core ignores it, the intake checks it.
+  std::array<Source, kMaxInboundPerCycle> sources{};
   std::size_t count = 0;
 
   /// Appends a copy of the datagram; false (nothing stored) when the batch is full.
-  [[nodiscard]] bool push(const std::uint8_t* data, std::size_t size) noexcept;
+  [[nodiscard]] bool push(const std::uint8_t* data, std::size_t size, const Source& from = {}) noexcept;
   /// Appends an encoded message; false when the batch is full.
-  [[nodiscard]] bool push(const Encoded& e) noexcept { return push(e.bytes.data(), e.size); }
+  [[nodiscard]] bool push(const Encoded& e, const Source& from = {}) noexcept {
+    return push(e.bytes.data(), e.size, from);
+  }
+  [[nodiscard]] bool full() const noexcept { return count == items.size(); }
   void clear() noexcept { count = 0; }
 };
 
