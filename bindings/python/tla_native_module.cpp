@@ -186,6 +186,10 @@ class Store {
       case K_SET: return cmp_list(a, b);
       default: break;
     }
+    // TLC's RecordValue.compareTo fails on a function that is not a record whatever the
+    // sizes; which operand TLC's sort makes the receiver is not known here, so either
+    // orientation stops the core and the Python engine decides.
+    if (record_against_non_record(a, b) || record_against_non_record(b, a)) incomparable("compare", 0);
     uint32_t na = len(a), nb = len(b);
     if (na != nb) return na < nb ? -1 : 1;
     if (ka != kb) return ka == K_SEQ ? -1 : 1;  // () < (keys...)
@@ -300,6 +304,12 @@ class Store {
       if (kind(k[i]) != K_STR) return false;
     return true;
   }
+  // a a record, b a function or sequence that does not convert to one (<<>> does).
+  bool record_against_non_record(uint32_t a, uint32_t b) const {
+    if (!is_record(a)) return false;
+    Kind kb = kind(b);
+    return (kb == K_SEQ && len(b) > 0) || (kb == K_FUN && !is_record(b));
+  }
   bool equal_walk(uint32_t a, uint32_t b, int loc) const {
     if (a == b) return true;
     Kind ka = kind(a), kb = kind(b);
@@ -308,8 +318,7 @@ class Store {
     if (ka != K_SEQ && ka != K_FUN && ka != K_SET) return false;
     // TLC's RecordValue.equals: a record equals only what converts to a record (a
     // function of field names, or <<>>), else an error whatever the sizes.
-    if (is_record(a) && ((kb == K_SEQ && len(b) > 0) || (kb == K_FUN && !is_record(b))))
-      incomparable("check equality of", loc);
+    if (record_against_non_record(a, b)) incomparable("check equality of", loc);
     uint32_t n = len(a);
     if (n != len(b)) return false;
     const uint32_t *x = items(a), *y = items(b);

@@ -226,6 +226,16 @@ CASES = {
         "VARIABLE x\nInit == x = (1 = <<1>>)\nNext == UNCHANGED x",
         '',
         Tlc(75, 0, 0, 0, 'Attempted to check equality of integer 1 with non-integer:\n<<1>>')),
+    'KindRecordSortedAfterTuple': Case(
+        '{<<1, FALSE>>, [val |-> 0]}: TLC\'s sort asks the record to compare itself with a tuple, an error',
+        "VARIABLE x\nInit == x = Cardinality({<<1, FALSE>>, [val |-> 0]})\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to compare record:\n[val |-> 0]\nwith non-record\n<<1, FALSE>>')),
+    'KindTupleSortedAfterRecord': Case(
+        '{[val |-> 0], <<1, FALSE>>}: the other way round the tuple compares sizes first, a set of two',
+        "VARIABLE x\nInit == x = Cardinality({[val |-> 0], <<1, FALSE>>})\nNext == UNCHANGED x\nInv == x = 2",
+        'INVARIANT Inv\n',
+        Tlc(0, 1, 2, 1, None)),
 }
 
 # Outside the native core's subset (refused with "not supported by the native engine").

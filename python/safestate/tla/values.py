@@ -1042,6 +1042,8 @@ def _tlc_compare(a: Value, b: Value) -> int:
                 return c
         return 0
     if ka == "function":
+        if _record_against_non_record(a, b):  # RecordValue.compareTo, whatever the sizes
+            raise EvalError(f"Attempted to compare record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
         ia, ib = _fn_items(a), _fn_items(b)
         if len(ia) != len(ib):
             return len(ia) - len(ib)
