@@ -263,9 +263,14 @@ def prepare(subject: Subject) -> None:
 def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                  on_done: Callable[[Mutant, Outcome], None]) -> None:
     """Classifies every mutant in forked children, at most `workers` at once."""
+    import gc
     prepare(subject)
     todo = list(mutants)
     running: dict[Connection, tuple[Mutant, int, float]] = {}
+    # The original's graph and model are shared with every child: frozen, the children's
+    # collector never walks (and so never copies) their pages.
+    gc.collect()
+    gc.freeze()
     try:
         while todo or running:
             while todo and len(running) < max(1, workers):
@@ -286,6 +291,7 @@ def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                     on_done(m, Outcome(m.id, "timeout", reason=f"check exceeded {subject.timeout:.0f} s",
                                        seconds=now - t0))
     finally:
+        gc.unfreeze()
         for conn, (_m, pid, _t) in running.items():
             _end(pid)
             conn.close()
