@@ -220,8 +220,9 @@ def _run(args: argparse.Namespace) -> int:
     s.update(sample=args.sample, seed=args.seed if args.sample else None, selected_operators=args.operator,
              when=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), cfg=str(cfg))
     results.justify(s, justs)
-    if system is not None and (args.config is None or Path(args.config).resolve() == system.ci_config.resolve()):
-        results.write(system, s)  # the system's last result: safestate systems, the evidence package
+    if system is not None and not args.operator and (
+            args.config is None or Path(args.config).resolve() == system.ci_config.resolve()):
+        results.write(system, s)  # the system's last score (all operators): safestate systems, evidence
     if args.itf_dir:
         _write_itf(Path(args.itf_dir), name, ordered)
     if args.json:
