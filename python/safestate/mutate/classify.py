@@ -32,6 +32,7 @@ from multiprocessing.connection import Connection, wait
 from pathlib import Path
 from typing import Any
 
+from ..checker.explore import CheckResult
 from ..checker.itf import value_to_itf
 from ..checker.model import Model, load_model
 from ..tla.errors import TlaError, UnsupportedError
@@ -171,14 +172,16 @@ def _check(subject: Subject, model: Model) -> tuple[Any, LabelledGraph | None]:
     if subject.graph is None:
         return check_model(model, subject.engine, subject.max_memory_mb), None
     try:
-        labelled, graph, _why = native_labelled(model, subject.projection, subject.max_memory_mb)
+        labelled, graph, why = native_labelled(model, subject.projection, subject.max_memory_mb)
     except UnsupportedError:
-        labelled = graph = None
-    if labelled is not None:
-        return labelled, graph
-    # Not accepted, or an evaluation error: check_model's engine choice (the Python
-    # engine then reports TLC's exact error).
-    return check_model(model, subject.engine, subject.max_memory_mb), None
+        # A mutant outside the core's subset (the original is inside): the Python engine.
+        return check_model(model, subject.engine, subject.max_memory_mb), None
+    if labelled is None:
+        # An evaluation error: an error outcome either way, so the core's message is
+        # kept rather than searching the whole space again in the Python engine for
+        # TLC's exact wording (which `safestate check` gives).
+        return CheckResult("error", 0, 0, 0, 0, error=TlaError("eval", f"native engine: {why}")), None
+    return labelled, graph
 
 
 def _verdict(mutant: Mutant, result: Any, tmp: str, start: float) -> Outcome | None:
