@@ -203,7 +203,7 @@ def _run(args: argparse.Namespace) -> int:
         else:
             todo.append(m)
     if todo:
-        print(f"mutate: {name}: exploring the original's successors once for the product searches",
+        print(f"mutate: {name}: exploring the original once (its graph) for the difference searches",
               file=sys.stderr, flush=True)
         prepare(subject)
     progress = _Progress(len(chosen), len(outcomes), len(todo))
