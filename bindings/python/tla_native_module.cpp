@@ -1884,10 +1884,9 @@ PYBIND11_MODULE(_tla_native, m) {
                                    as_bytes(e.edge_params));
            })
       .def_readwrite("label_vars", &Engine::label_vars)
-      .def("labels_bytes",
-           [](Engine& e) {
-             return py::make_tuple(as_bytes(e.label_src), as_bytes(e.label_dst), as_bytes(e.label_val));
-           })
+      .def(
+          "labels_bytes",
+          [](Engine& e) { return py::make_tuple(as_bytes(e.label_src), as_bytes(e.label_dst), as_bytes(e.label_val)); })
       .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
       .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })
       .def_property_readonly("distinct", &Engine::nstates)
