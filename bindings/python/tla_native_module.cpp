@@ -1417,6 +1417,21 @@ class Engine {
     edge_params.push_back(st.mk_seq(buf_));
   }
 
+  // The labelled graph of `safestate mutate`'s difference search (mutate/graph.py): per
+  // successor inside the model (and per initial state, source 0xFFFFFFFF), the source,
+  // the stored target, and the values of `label_vars` in the successor itself as one
+  // interned tuple -- under a VIEW the stored target may differ from it outside the
+  // VIEW, and the search compares what the step produced.  Only the one-worker search.
+  std::vector<int64_t> label_vars;
+  std::vector<uint32_t> label_src, label_dst, label_val;
+  void record_label(uint32_t src, uint32_t dst, const uint32_t* t) {
+    buf_.clear();
+    for (int64_t v : label_vars) buf_.push_back(t[size_t(v)]);
+    label_src.push_back(src);
+    label_dst.push_back(dst);
+    label_val.push_back(st.mk_seq(buf_));
+  }
+
   int cur_level = 0;
   uint64_t before = 0;
   void on_emit(Ctx& c, int lf) {
@@ -1441,6 +1456,8 @@ class Engine {
         is_new = false;
       }
       if (record_edges && emit_kind == 1) record_edge(uint32_t(head), uint32_t(found < 0 ? idx : found), lf);
+      if (!label_vars.empty())
+        record_label(emit_kind ? uint32_t(head) : 0xFFFFFFFFu, uint32_t(found < 0 ? idx : found), c.t);
     }
     if (!is_new) return;
     int which = -1;
@@ -1473,7 +1490,7 @@ class Engine {
         }
         initial_count = nstates();
         emit_kind = 1;
-        if (workers > 1 && !record_edges) search_levels();
+        if (workers > 1 && !record_edges && label_vars.empty()) search_levels();
         while (head < nstates()) {
           while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
           std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
@@ -1886,6 +1903,10 @@ PYBIND11_MODULE(_tla_native, m) {
              return py::make_tuple(as_bytes(e.edge_src), as_bytes(e.edge_dst), as_bytes(e.edge_leaf),
                                    as_bytes(e.edge_params));
            })
+      .def_readwrite("label_vars", &Engine::label_vars)
+      .def(
+          "labels_bytes",
+          [](Engine& e) { return py::make_tuple(as_bytes(e.label_src), as_bytes(e.label_dst), as_bytes(e.label_val)); })
       .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
       .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })
       .def_property_readonly("distinct", &Engine::nstates)
