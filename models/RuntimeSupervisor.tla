@@ -47,9 +47,11 @@ VARIABLES safety_input, outputs
 \* ... and an observer: ticks spent in INIT, counted from the supervisor's
 \* state alone (not its timer), for the init-timeout hazard.
 VARIABLES init_age
+\* ... and one of the input: a shutdown has been requested (latched).
+VARIABLES shutdown_requested
 
 vars == <<status, fatal_fault, watchdog_ok, sup_state, init_ticks, stop_step,
-          outputs_safe, dispatched, safety_input, outputs, init_age>>
+          outputs_safe, dispatched, safety_input, outputs, init_age, shutdown_requested>>
 
 -----------------------------------------------------------------------------
 (*************************** Environment of a tick **************************)
@@ -160,6 +162,7 @@ Tick(ev) ==
     \* control's command is the safe value whatever the gate does).
     /\ outputs' = IF safe \/ SafetyInput(d) # "FRESH" THEN "SAFE" ELSE "GATED"
     /\ init_age' = IF s = "INIT" THEN init_age + 1 ELSE 0
+    /\ shutdown_requested' = (shutdown_requested \/ (Live /\ ev.kind = "SHUTDOWN"))
 
 \* Construction: every unit initialising, watchdog fine, nothing dispatched.
 Init ==
@@ -169,6 +172,7 @@ Init ==
     /\ stop_step = 0 /\ outputs_safe = FALSE
     /\ dispatched = NoDispatch
     /\ safety_input = "NONE" /\ outputs = "SAFE" /\ init_age = 0
+    /\ shutdown_requested = FALSE
 
 Next == \E ev \in Events : Tick(ev)
 
@@ -187,6 +191,7 @@ TypeOK ==
     /\ safety_input \in {"NONE", "FRESH", "EMPTY"}
     /\ outputs \in {"GATED", "SAFE"}
     /\ init_age \in 0..InitTimeoutTicks
+    /\ shutdown_requested \in BOOLEAN
 
 \* The order of PRO-05, spelled out here (not Order), so that a mutant of
 \* the dispatcher's table cannot change what the invariant demands.
@@ -251,6 +256,18 @@ INV_SUP_PROTECTION_RUNS ==
     /\ safety_input = "FRESH" =>
            \E i, j \in 1..5 : i < j /\ dispatched[i] = "monitoring" /\ dispatched[j] = "safety"
 
+\* PRO-05 (UCA-S7): the controlled shutdown happens exactly on request: in the
+\* tick of the request (from INIT, RUN or DEGRADED), and never without one.
+INV_SUP_SHUTDOWN_ON_REQUEST ==
+    sup_state \in {"SHUTTING_DOWN", "STOPPED"} <=> shutdown_requested
+
+\* PRO-05 (UCA-S8): Degraded (or INIT) is not kept once every readiness gate
+\* passes, no fatal fault is present and the watchdog is fine: RUN in the
+\* same tick (a controller kept degraded refuses the operator's clear).
+INV_SUP_RUN_WHEN_READY ==
+    (/\ \A u \in Units : status[u] = "READY"
+     /\ ~fatal_fault /\ watchdog_ok /\ ~shutdown_requested) => sup_state = "RUN"
+
 \* PRO-03/PRO-05 (UCA-S5): fail-safe output stage - the outputs carry a
 \* regulated value only in a tick in which safety evaluated that tick's
 \* snapshot, and never after shutdown step 1; a tick without safety (INIT,
@@ -287,6 +304,10 @@ Witness_BlindSafety ==      \* INV_SUP_PROTECTION_RUNS, monitoring failed: the e
 Witness_NoDispatcher ==     \* INV_SUP_FAIL_SAFE, dispatcher failed: nothing runs, outputs safe
     ~(sup_state = "DEGRADED" /\ status["dispatcher"] = "FAILED" /\ status["safety"] = "READY"
       /\ outputs = "SAFE")
+Witness_ShutdownFromInit == \* INV_SUP_SHUTDOWN_ON_REQUEST, a stop of a controller never ready
+    ~(sup_state = "SHUTTING_DOWN" /\ \E u \in Units : status[u] = "INIT")
+Witness_WatchdogHolds ==    \* INV_SUP_RUN_WHEN_READY, every gate passed, kept Degraded by the watchdog
+    ~(sup_state = "DEGRADED" /\ ~watchdog_ok /\ ~fatal_fault /\ \A u \in Units : status[u] = "READY")
 Witness_ShutdownProtects == \* INV_SUP_FAIL_SAFE, outputs safe, safety still running
     ~(sup_state = "SHUTTING_DOWN" /\ outputs_safe /\ safety_input = "FRESH")
 =============================================================================
