@@ -47,11 +47,13 @@ VARIABLES safety_input, outputs
 \* ... and an observer: ticks spent in INIT, counted from the supervisor's
 \* state alone (not its timer), for the init-timeout hazard.
 VARIABLES init_age
-\* ... and one of the input: a shutdown has been requested (latched).
-VARIABLES shutdown_requested
+\* ... and two of the input: a shutdown has been requested (latched), and the
+\* stop reports taken since (saturating at the length of the stop order).
+VARIABLES shutdown_requested, stop_reports
 
 vars == <<status, fatal_fault, watchdog_ok, sup_state, init_ticks, stop_step,
-          outputs_safe, dispatched, safety_input, outputs, init_age, shutdown_requested>>
+          outputs_safe, dispatched, safety_input, outputs, init_age, shutdown_requested,
+          stop_reports>>
 
 -----------------------------------------------------------------------------
 (*************************** Environment of a tick **************************)
@@ -163,6 +165,8 @@ Tick(ev) ==
     /\ outputs' = IF safe \/ SafetyInput(d) # "FRESH" THEN "SAFE" ELSE "GATED"
     /\ init_age' = IF s = "INIT" THEN init_age + 1 ELSE 0
     /\ shutdown_requested' = (shutdown_requested \/ (Live /\ ev.kind = "SHUTDOWN"))
+    /\ stop_reports' = IF ev.kind = "STOPPED" /\ stop_reports < Len(StopOrder)
+                      THEN stop_reports + 1 ELSE stop_reports
 
 \* Construction: every unit initialising, watchdog fine, nothing dispatched.
 Init ==
@@ -172,7 +176,7 @@ Init ==
     /\ stop_step = 0 /\ outputs_safe = FALSE
     /\ dispatched = NoDispatch
     /\ safety_input = "NONE" /\ outputs = "SAFE" /\ init_age = 0
-    /\ shutdown_requested = FALSE
+    /\ shutdown_requested = FALSE /\ stop_reports = 0
 
 Next == \E ev \in Events : Tick(ev)
 
@@ -192,6 +196,7 @@ TypeOK ==
     /\ outputs \in {"GATED", "SAFE"}
     /\ init_age \in 0..InitTimeoutTicks
     /\ shutdown_requested \in BOOLEAN
+    /\ stop_reports \in 0..Len(StopOrder)
 
 \* The order of PRO-05, spelled out here (not Order), so that a mutant of
 \* the dispatcher's table cannot change what the invariant demands.
@@ -261,6 +266,13 @@ INV_SUP_PROTECTION_RUNS ==
 INV_SUP_SHUTDOWN_ON_REQUEST ==
     sup_state \in {"SHUTTING_DOWN", "STOPPED"} <=> shutdown_requested
 
+\* PRO-05 (UCA-S9): the shutdown advances one step per stop report, in the
+\* tick of the report (a sequence stuck at a step leaves units running):
+\* while shutting down the supervisor waits for step 1 + reports so far.
+INV_SUP_SHUTDOWN_PROGRESS ==
+    /\ sup_state \in {"INIT", "RUN", "DEGRADED"} => stop_reports = 0
+    /\ sup_state = "SHUTTING_DOWN" => stop_step = 1 + stop_reports
+
 \* PRO-05 (UCA-S8): Degraded (or INIT) is not kept once every readiness gate
 \* passes, no fatal fault is present and the watchdog is fine: RUN in the
 \* same tick (a controller kept degraded refuses the operator's clear).
@@ -308,6 +320,8 @@ Witness_ShutdownFromInit == \* INV_SUP_SHUTDOWN_ON_REQUEST, a stop of a controll
     ~(sup_state = "SHUTTING_DOWN" /\ \E u \in Units : status[u] = "INIT")
 Witness_WatchdogHolds ==    \* INV_SUP_RUN_WHEN_READY, every gate passed, kept Degraded by the watchdog
     ~(sup_state = "DEGRADED" /\ ~watchdog_ok /\ ~fatal_fault /\ \A u \in Units : status[u] = "READY")
+Witness_HalfwayDown ==      \* INV_SUP_SHUTDOWN_PROGRESS, four stop reports taken
+    ~(sup_state = "SHUTTING_DOWN" /\ stop_reports = 4)
 Witness_ShutdownProtects == \* INV_SUP_FAIL_SAFE, outputs safe, safety still running
     ~(sup_state = "SHUTTING_DOWN" /\ outputs_safe /\ safety_input = "FRESH")
 =============================================================================

@@ -10,8 +10,8 @@ and the dispatch cycle; design §6-§8, §11).
 * Projection: `sup_state`, `status`, `init_ticks`, `stop_step`, `outputs_safe`,
   `dispatched`, `safety_input` (what ao_safety evaluated: `safety_input_of` the real
   dispatch record) and `outputs` (the output stage after the tick); the fault lines
-  `fatal_fault`, `watchdog_ok` are inputs, `init_age` and `shutdown_requested` are the
-  model's observers.
+  `fatal_fault`, `watchdog_ok` are inputs, `init_age`, `shutdown_requested` and
+  `stop_reports` are the model's observers.
 * The dispatcher gate is the runtime's `dispatch_gate`: no dispatch cycle while the
   dispatcher unit is not READY.
 * Replay of the 178,041 transitions runs as a compact plan in the binding (`PlanReplayer`).
@@ -46,7 +46,7 @@ def call(event: Event) -> tuple[str, str]:
 class RuntimeSupervisorAdapter(Adapter):
     observed_variables = ("sup_state", "status", "init_ticks", "stop_step", "outputs_safe", "dispatched",
                           "safety_input", "outputs")
-    hidden_variables = ("fatal_fault", "watchdog_ok", "init_age", "shutdown_requested")
+    hidden_variables = ("fatal_fault", "watchdog_ok", "init_age", "shutdown_requested", "stop_reports")
     config_constants = {"InitTimeoutTicks": "init_timeout_ticks"}
     rows_operator = "RowsFiredBy"
 
