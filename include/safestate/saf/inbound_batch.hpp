@@ -12,21 +12,34 @@ namespace safestate::saf {
 
 inline constexpr std::size_t kMaxInboundPerCycle = 16;
 
+/// Who sent a datagram, as the transport's sender binding tells it (design §5): the
+/// configured Safety Client, the configured subsystem, or any other source.
+enum class Peer : std::uint8_t { Client, Subsystem, Other };
+
 /// One received datagram. `size` is its real length; at most kMaxDatagram bytes are kept
-/// (a longer one is rejected as OVERSIZED without reading the rest).
+/// (a longer one is rejected as OVERSIZED without reading the rest). `from` and `fresh` are
+/// the transport's intake verdict: the sender, and whether its sequence number (Set Estop)
+/// is inside the replay window. The service accepts a message only from the peer of its
+/// kind and only fresh; an untagged datagram counts as from another source (fail safe).
 struct Datagram {
   std::array<std::uint8_t, kMaxDatagram> bytes{};
   std::size_t size = 0;
+  Peer from = Peer::Other;
+  bool fresh = true;
 };
 
 struct InboundBatch {
   std::array<Datagram, kMaxInboundPerCycle> items{};
   std::size_t count = 0;
 
-  /// Appends a copy of the datagram; false (nothing stored) when the batch is full.
-  [[nodiscard]] bool push(const std::uint8_t* data, std::size_t size) noexcept;
+  /// Appends a copy of the datagram with its intake verdict; false (nothing stored) when
+  /// the batch is full.
+  [[nodiscard]] bool push(const std::uint8_t* data, std::size_t size, Peer from = Peer::Other,
+                          bool fresh = true) noexcept;
   /// Appends an encoded message; false when the batch is full.
-  [[nodiscard]] bool push(const Encoded& e) noexcept { return push(e.bytes.data(), e.size); }
+  [[nodiscard]] bool push(const Encoded& e, Peer from = Peer::Other, bool fresh = true) noexcept {
+    return push(e.bytes.data(), e.size, from, fresh);
+  }
   void clear() noexcept { count = 0; }
 };
 
