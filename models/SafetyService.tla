@@ -372,7 +372,8 @@ Spec == Init /\ [][Next]_vars
 (******************************** Invariants *******************************)
 \* SAF-01: every variable in its type; the state one of PAIRING, OPERATIONAL,
 \* EMERGENCY, FAULT.
-TypeOK ==
+\* Every variable but the inbox in its type (SafetyServicePeers.tla has its own inboxes).
+SvcTypeOK ==
     /\ state \in States
     /\ estop \in EstopViews
     /\ estop_age \in 0..EstopTimeoutCycles
@@ -384,12 +385,13 @@ TypeOK ==
     /\ out_set_state \in OutSetStates
     /\ alarm \in BOOLEAN /\ resend \in BOOLEAN
     /\ set_age \in 0..MessageIntervalCycles
-    /\ inbox \in Inboxes
     /\ ever_faulted \in BOOLEAN
     /\ h_estop \in EstopViews /\ h_silence \in 0..EstopTimeoutCycles
     /\ h_health \in HealthViews /\ h_health_age \in 0..(ReportDataTimeoutCycles + 1)
     /\ h_told \in BOOLEAN /\ h_refused \in BOOLEAN /\ h_owed \in BOOLEAN /\ h_held_sent \in BOOLEAN
     /\ h_due \in BOOLEAN /\ h_due_age \in 0..MessageIntervalCycles
+
+TypeOK == SvcTypeOK /\ inbox \in Inboxes
 
 \* The invariants spell their conditions out from the requirements rather
 \* than reuse the operators of the rows above, so that a mutant of a row

@@ -5,8 +5,8 @@
 (* Client with its E-stop button, the subsystem with its state and the     *)
 (* access control of its Subsystem State service (a component of higher   *)
 (* authority can seize control and drive the subsystem OPERATIONAL), a     *)
-(* lossy, duplicating channel between them, and a local attacker who sends *)
-(* spoofed and replayed datagrams.  SafetyService.tla lets any message     *)
+(* lossy, duplicating channel between them.  SafetyService.tla lets any    *)
+(* message (and spoofed and replayed datagrams)                            *)
 (* arrive in any cycle; this module checks the same invariants against the *)
 (* concrete peers, shows the protocol's situations reachable, and states   *)
 (* the end-to-end property over the subsystem's state (page section 13).  *)
@@ -22,9 +22,9 @@ VARIABLES
     answer,    \* the access control's last answer, still in flight (duplicable):
                \* "NONE", "ACCEPTED", "REFUSED", "OTHER" (control seized)
     sub_state, \* the subsystem's state: "OPERATIONAL" or "EMERGENCY"
-    wrong_age  \* cycles the service has held control in an emergency-raising
-               \* state while it holds control at the access control and the
-               \* subsystem is not EMERGENCY (to MessageIntervalCycles + 2)
+    wrong_age  \* cycles with a delivering channel in which the service has held
+               \* control in an emergency-raising state, holds it at the access
+               \* control, and the subsystem is not EMERGENCY (to Mi + 2)
 
 peerVars == <<button, previous, holder, answer, sub_state, wrong_age>>
 PeersView == <<View, peerVars>>
@@ -33,18 +33,19 @@ Report(b) == IF b = "PRESSED" THEN "SET" ELSE "CLEAR"
 WrongMax == MessageIntervalCycles + 2
 
 \* What reaches the service in one cycle: the client's Set Estop (lost, fresh,
-\* or a late duplicate of the previous one), a health summary (lost or
-\* NORMAL), the answer in flight (lost or delivered, again and again), or a
+\* or a late duplicate of the previous one), a NORMAL health summary, the answer in flight (lost or delivered, again and again), or a
 \* Report Control answering a Query Control (naming us iff we hold control),
-\* the subsystem's Report Subsystem State (lost, or OPERATIONAL when it is),
-\* and the attacker's datagram (SafetyService.tla's ForgedIn).
+\* the subsystem's Report Subsystem State every cycle (OPERATIONAL when it is;
+\* never lost: the end-to-end bound below needs it).  The attacker's
+\* datagrams and health errors are left to SafetyService.tla, whose
+\* environment has them all, to keep this state space small.
 PeerInboxes ==
-    {in \in [estop: {"NONE", Report(button), Report(previous)},
-             health: {"NONE", "NORMAL"},
-             control: {"NONE", answer, IF holder = "SAF" THEN "US" ELSE "OTHER"},
-             subsys: {"NONE", IF sub_state = "OPERATIONAL" THEN "OPERATIONAL" ELSE "NONE"},
-             forged: ForgedIn,
-             hw_fault: {FALSE}] : in \in Inboxes}
+    [estop: {"NONE", Report(button), Report(previous)},
+     health: {"NORMAL"},
+     control: {"NONE", answer, IF holder = "SAF" THEN "US" ELSE "OTHER"},
+     subsys: {IF sub_state = "OPERATIONAL" THEN "OPERATIONAL" ELSE "NONE"},
+     forged: {"NONE"},
+     hw_fault: {FALSE}]
 
 \* The access control handles the service's Request Control of this cycle.
 AfterRequest(req, h) ==
@@ -92,11 +93,14 @@ PeersNext ==
                         ELSE IF r.answer # "NONE" THEN r.answer
                         ELSE answer
            /\ sub_state' = sub2
-           /\ wrong_age' = IF wrong THEN IF wrong_age < WrongMax THEN wrong_age + 1 ELSE wrong_age
-                           ELSE 0
+           /\ wrong_age' = IF ~wrong THEN 0
+                           ELSE IF env = "LOSE" \/ wrong_age = WrongMax THEN wrong_age
+                           ELSE wrong_age + 1
 
 PeersTypeOK ==
-    /\ TypeOK
+    /\ SvcTypeOK
+    /\ inbox \in [estop: EstopIn, health: HealthIn, control: ControlIn, subsys: SubsysIn,
+                  forged: ForgedIn, hw_fault: BOOLEAN]
     /\ button \in {"RELEASED", "PRESSED"} /\ previous \in {"RELEASED", "PRESSED"}
     /\ holder \in {"NOBODY", "SAF", "OTHER"}
     /\ answer \in {"NONE", "ACCEPTED", "REFUSED", "OTHER"}
@@ -106,7 +110,8 @@ PeersTypeOK ==
 \* UCA-1, UCA-2 end to end (page section 13): while the service holds control
 \* in an emergency-raising state and really holds it at the access control,
 \* the subsystem is EMERGENCY, or becomes so within MessageIntervalCycles + 1
-\* cycles (a lost Set Subsystem State is re-sent on the subsystem's report).
+\* cycles in which the channel delivers (a lost Set Subsystem State is
+\* re-sent on the subsystem's report).
 PEERS_HELD_MEANS_SUBSYSTEM_EMERGENCY == wrong_age <= MessageIntervalCycles + 1
 
 (* Witnesses of the protocol's situations (each violated = reachable).     *)
