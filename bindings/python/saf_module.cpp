@@ -55,7 +55,8 @@ struct Tagged {
 std::vector<Tagged> encode_inbox(const py::dict& inbox) {
   std::vector<Tagged> out;
   const std::string estop = field(inbox, "estop");
-  if (estop == "SET" || estop == "CLEAR") out.push_back({encode(Message::set_estop(estop == "SET")), Peer::Client, true});
+  if (estop == "SET" || estop == "CLEAR")
+    out.push_back({encode(Message::set_estop(estop == "SET")), Peer::Client, true});
   else if (estop == "CLEAR_SPOOFED") out.push_back({encode(Message::set_estop(false)), Peer::Other, true});
   else if (estop == "CLEAR_REPLAYED") out.push_back({encode(Message::set_estop(false)), Peer::Client, false});
   else if (estop != "NONE") bad("estop", estop, "NONE, CLEAR, SET, CLEAR_SPOOFED, CLEAR_REPLAYED");
@@ -71,12 +72,15 @@ std::vector<Tagged> encode_inbox(const py::dict& inbox) {
   const auto accepted = encode(Message::confirm_control(ControlResponse::Accepted));
   const auto us = encode(Message::report_control(kSafetyComponentId, kAuthorityCode));
   if (control == "ACCEPTED") out.push_back({accepted, Peer::Subsystem, true});
-  else if (control == "REFUSED") out.push_back({encode(Message::confirm_control(ControlResponse::NotAvailable)), Peer::Subsystem, true});
+  else if (control == "REFUSED")
+    out.push_back({encode(Message::confirm_control(ControlResponse::NotAvailable)), Peer::Subsystem, true});
   else if (control == "US") out.push_back({us, Peer::Subsystem, true});
-  else if (control == "OTHER") out.push_back({encode(Message::report_control(kOtherComponentId, 255)), Peer::Subsystem, true});
+  else if (control == "OTHER")
+    out.push_back({encode(Message::report_control(kOtherComponentId, 255)), Peer::Subsystem, true});
   else if (control == "ACCEPTED_SPOOFED") out.push_back({accepted, Peer::Other, true});
   else if (control == "US_SPOOFED") out.push_back({us, Peer::Other, true});
-  else if (control != "NONE") bad("control", control, "NONE, ACCEPTED, REFUSED, US, OTHER, ACCEPTED_SPOOFED, US_SPOOFED");
+  else if (control != "NONE")
+    bad("control", control, "NONE, ACCEPTED, REFUSED, US, OTHER, ACCEPTED_SPOOFED, US_SPOOFED");
   const std::string subsys = inbox.contains("subsys") ? field(inbox, "subsys") : std::string("NONE");
   if (subsys == "OPERATIONAL") {
     out.push_back({encode(Message::report_subsystem_state(SubsystemState::Operational)), Peer::Subsystem, true});
@@ -255,7 +259,8 @@ PYBIND11_MODULE(_saf, m) {
       "encode_inbox",
       [](const py::dict& inbox) {
         py::list out;
-        for (const Tagged& e : encode_inbox(inbox)) out.append(py::make_tuple(to_bytes(e.bytes), peer_name(e.from), e.fresh));
+        for (const Tagged& e : encode_inbox(inbox))
+          out.append(py::make_tuple(to_bytes(e.bytes), peer_name(e.from), e.fresh));
         return out;
       },
       py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded: [(bytes, peer, fresh)].");

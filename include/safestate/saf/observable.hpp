@@ -18,8 +18,8 @@ struct Observable {
   std::uint32_t control_age = 0;
   OutRequest out_request = OutRequest::None;
   OutSetState out_set_state = OutSetState::None;
-  bool alarm = false;   // the authority contest is lost (K03, K06), design §7
-  bool resend = false;  // a re-send of Set Subsystem State(EMERGENCY) is due, design §7
+  bool alarm = false;         // the authority contest is lost (K03, K06), design §7
+  bool resend = false;        // a re-send of Set Subsystem State(EMERGENCY) is due, design §7
   std::uint32_t set_age = 0;  // cycles since the last Set Subsystem State(EMERGENCY), to Mi
 
   friend constexpr bool operator==(const Observable& a, const Observable& b) noexcept {

@@ -33,7 +33,7 @@ TEST(SAF02_TransitionB, SetEstopTimeoutAfterEstopTimeoutCycles) {
   SafetyService s = operational();  // EstopTimeoutCycles = 2
   (void)run(s, {});
   EXPECT_EQ(s.observe().state, SafState::Operational);  // 1 cycle without: tolerated
-  CycleResult r = run(s, {});  // ESTOPTIMEOUT = 2 cycles without a Set Estop: B
+  CycleResult r = run(s, {});                           // ESTOPTIMEOUT = 2 cycles without a Set Estop: B
   EXPECT_EQ(r.state_row, "O01");
   EXPECT_EQ(s.observe().state, SafState::Emergency);
   EXPECT_EQ(r.control_row, "K01");

@@ -28,7 +28,7 @@ TEST(SAF_Issue30_Attacker, SpoofedAndReplayedClearLeaveEmergency) {
   for (int i = 0; i < 20; ++i) {
     InboundBatch b{};
     ASSERT_TRUE(b.push(encode(pressed()), Peer::Client));
-    ASSERT_TRUE(b.push(encode(clear()), Peer::Other));         // another local process
+    ASSERT_TRUE(b.push(encode(clear()), Peer::Other));          // another local process
     ASSERT_TRUE(b.push(encode(clear()), Peer::Client, false));  // a replay (stale sequence)
     ASSERT_TRUE(b.push(encode(clear()), Peer::Subsystem));      // the wrong peer
     ASSERT_TRUE(b.push(encode(health(Health::Normal)), Peer::Subsystem));
@@ -113,9 +113,8 @@ TEST(SAF_Issue30_Resend, SubsystemReportedOperationalIsSetAgainEveryInterval) {
   SafetyService s = emergency_held(Timing{2, 40, 10, 20});
   int sent = 0;
   for (int i = 0; i < 100; ++i) {
-    const CycleResult r =
-        run(s, {pressed(), health(Health::Normal), Message::report_control(kSafetyComponentId, 225),
-                Message::report_subsystem_state(SubsystemState::Operational)});
+    const CycleResult r = run(s, {pressed(), health(Health::Normal), Message::report_control(kSafetyComponentId, 225),
+                                  Message::report_subsystem_state(SubsystemState::Operational)});
     sent += find(r.outbox, MessageId::SetSubsystemState) != nullptr;
   }
   EXPECT_EQ(sent, 10);  // once every MESSAGEINTERVAL (10 cycles), never dropped
