@@ -120,8 +120,9 @@ Witness_PeersGranted ==
       /\ sub_state = "EMERGENCY")
 Witness_PeersRefused ==
     ~(state = "EMERGENCY" /\ control = "REFUSED" /\ holder = "OTHER")
-Witness_PeersLostRelease ==    \* K10 sends the release again
-    ~(state = "OPERATIONAL" /\ holder = "SAF" /\ out_request = "RELEASE" /\ estop_age > 0)
+Witness_PeersLostRelease ==    \* a release while the access control still names us (K10)
+    ~(state = "OPERATIONAL" /\ holder = "SAF" /\ out_request = "RELEASE" /\ inbox.control = "US"
+      /\ out_set_state = "NONE")
 Witness_PeersLostSetResent ==  \* the re-send repairs a lost Set Subsystem State
-    ~(wrong_age > 0 /\ out_set_state = "EMERGENCY" /\ control_age > 0)
+    ~(out_set_state = "EMERGENCY" /\ control_age > 0 /\ sub_state = "EMERGENCY" /\ holder = "SAF")
 =============================================================================
