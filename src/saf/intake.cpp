@@ -69,7 +69,10 @@ IntakeCycle Intake::filter(const InboundBatch& in, bool overflow, InboundBatch& 
   for (std::size_t i = 0; i < in.count && i < in.items.size(); ++i) {
     const IntakeRejection r = judge(in.items[i], in.sources[i], overflow);
     if (r.reason == IntakeReason::None) {
-      (void)out.push(in.items[i].bytes.data(), in.items[i].size, in.sources[i]);
+      // Accepted: the core's tag is the socket the binding matched (a stale or replayed
+      // Set Estop never gets here, so every accepted datagram is fresh).
+      const Sender sender = in.sources[i].socket == SocketRole::Client ? Sender::Client : Sender::Subsystem;
+      (void)out.push(in.items[i].bytes.data(), in.items[i].size, in.sources[i], sender, true);
     } else if (cycle.count < cycle.rejected.size()) {
       cycle.rejected[cycle.count++] = r;
     }
