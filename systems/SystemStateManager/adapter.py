@@ -74,7 +74,9 @@ class SystemStateManagerAdapter(Adapter):
                           "safeguard_mismatch", "enabling_mismatch", "selector_invalid",
                           "state_cycles", "t2_confirmed", "resume_to", "axes",
                           # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
-                          "stale_commands", "estop_tested_a", "estop_tested_b")
+                          "stale_commands", "estop_tested_a", "estop_tested_b",
+                          # issue 29 item 6: K39's memory of a PANIC since the last RELEASED.
+                          "enable_release_required")
     split_records = {"jog": (("jog_axis", "axis"), ("jog_direction", "direction"),
                              ("jog_speed_mm_s", "speed_mm_s"))}
     observed_operators = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request",
@@ -87,7 +89,8 @@ class SystemStateManagerAdapter(Adapter):
                         "last_accepted", "jog_in_auto", "obs_guard_fault", "obs_servo_on_powered", "obs_t2",
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
-                        "obs_submit_lost", "obs_link_lost")
+                        "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
+                        "obs_panic")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
@@ -465,9 +468,11 @@ def flagship_rules(D: int, queue_capacity: int, timers: list[int]) -> type:  # n
         @rule(kind=st.sampled_from(["START", "JOG_START", "PAUSE", "RESUME", "JOG_STOP", "SERVO_OFF", "RESET"]),
               i=st.integers(0, 7))
         def command(self, kind: str, i: int) -> None:
-            """One command and the cycle that pops it."""
+            """One command and the cycle that pops it (the drives kept ready where offered)."""
             self._submit(kind, i)
-            self._cycle_where(lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
+            healthy = (lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
+            if not self._cycle_where(lambda r: healthy(r) and r["servo_ready"]):
+                self._cycle_where(healthy)
 
         @rule(n=st.sampled_from(timers), i=st.integers(0, 7))
         def hold(self, n: int, i: int) -> None:
