@@ -1146,6 +1146,8 @@ Witness_RSM08_START          == ~(last_accepted = "START")
 Witness_INV_T1SPEED          == ~t1_overspeed
 Witness_RSM06_SERVO_ON       == ~(last_accepted = "SERVO_ON" /\ inputs.selector = "T2")
 Witness_RSM07_DRIVE_FAULT    == ~obs_drive_fault
+\* (issue 29 item 7: an E-stop demand in the cycle that reads the drive fault)
+Witness_RSM07_DRIVE_FAULT_ESTOP == ~(obs_drive_fault /\ (~inputs.estop_a \/ ~inputs.estop_b))
 Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
 Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
 Witness_UCA_BRAKE_ORDER      == ~brake_release
@@ -1178,7 +1180,7 @@ CI_ChannelPairs  == {<<TRUE, TRUE>>, <<TRUE, FALSE>>}
 \* E-stop: also both channels open (a normal press), so that the test of
 \* both channels (K37) can pass and a Reset be accepted.
 CI_EstopPairs    == {<<TRUE, TRUE>>, <<TRUE, FALSE>>, <<FALSE, FALSE>>}
-All_ChannelPairs == BOOLEAN \X BOOLEAN
+All_ChannelPairs == {<<a, b>> : a \in BOOLEAN, b \in BOOLEAN}
 \* Full cfg (long timers): only consistent readings where a disagreement
 \* would let a 50-cycle counter run along a 1000-cycle timer.
 Consistent_ChannelPairs == {<<TRUE, TRUE>>, <<FALSE, FALSE>>}
@@ -1188,7 +1190,7 @@ Consistent_EnablingPairs == {<<"RELEASED", "RELEASED">>, <<"MIDDLE", "MIDDLE">>}
 \* middle, and a disagreement).
 CI_EnablingPairs  == {<<"RELEASED", "RELEASED">>, <<"MIDDLE", "MIDDLE">>,
                       <<"MIDDLE", "PANIC">>}
-All_EnablingPairs == EnablePositions \X EnablePositions
+All_EnablingPairs == {<<a, b>> : a \in EnablePositions, b \in EnablePositions}
 
 -----------------------------------------------------------------------------
 (***************** Row reachability (for the coverage check) ***************)
