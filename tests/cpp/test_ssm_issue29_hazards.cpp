@@ -24,6 +24,7 @@ void expect_unpowered(const ScanOutputs& out) {
 // UCA-RSM-07: after JOG_STOP the arm keeps moving (T1 at 96 mm/s, T2 at 1,284 mm/s in the
 // reproduction): the stop is a Cat 2 ramp watched by the stop timer, so power is cut and the
 // manager locks out max_stop_cycles + 1 cycles after the JOG_STOP at the latest.
+// req: RSM-11 RSM-09
 TEST(UCA_RSM_07_JogStop, ArmStillMovingAfterTheStopTimeLocksOutInT1AndT2) {
   for (const SelectorReading mode : {SelectorReading::T1, SelectorReading::T2}) {
     Rig r;
@@ -45,6 +46,7 @@ TEST(UCA_RSM_07_JogStop, ArmStillMovingAfterTheStopTimeLocksOutInT1AndT2) {
 
 // UCA-RSM-07: another axis turning at 3 rad/s while the jogged axis stops is seen too: in
 // T2 the stop never completes (stop timer), in T1 it is above the TCP limit at once (C10).
+// req: RSM-11 RSM-09
 TEST(UCA_RSM_07_JogStop, AnotherAxisTurningDuringTheJogStopIsNotMissed) {
   Rig r;
   r.to_jogging(SelectorReading::T2);
@@ -63,6 +65,7 @@ TEST(UCA_RSM_07_JogStop, AnotherAxisTurningDuringTheJogStopIsNotMissed) {
 }
 
 // UCA-RSM-07: once the jog stop reached standstill (MANUAL_IDLE), any motion is a violation.
+// req: RSM-11 RSM-09
 TEST(UCA_RSM_07_JogStop, MotionAfterTheJogStopReachedStandstillLocksOutAtOnce) {
   Rig r;
   r.to_jogging(SelectorReading::T2);
@@ -79,6 +82,7 @@ TEST(UCA_RSM_07_JogStop, MotionAfterTheJogStopReachedStandstillLocksOutAtOnce) {
 // ---------------------------------------------------------------- item 2: brake release order
 
 // UCA-RSM-02: contactor and drive enable in ARMING, the brakes only once servo_ready is read.
+// req: RSM-07
 TEST(UCA_RSM_02_BrakeOrder, BrakesStayEngagedUntilTheDrivesReportReady) {
   Rig r;
   r.boot(SelectorReading::Auto);
@@ -98,6 +102,7 @@ TEST(UCA_RSM_02_BrakeOrder, BrakesStayEngagedUntilTheDrivesReportReady) {
 }
 
 // UCA-RSM-02: a stop trigger while arming removes power at once; the brakes never opened.
+// req: RSM-07
 TEST(UCA_RSM_02_BrakeOrder, AStopTriggerInArmingRemovesPowerWithoutReleasingTheBrakes) {
   Rig r;
   r.boot(SelectorReading::Auto);
@@ -114,6 +119,7 @@ TEST(UCA_RSM_02_BrakeOrder, AStopTriggerInArmingRemovesPowerWithoutReleasingTheB
 
 // UCA-RSM-03: servo_ready lost in AUTO_RUNNING, AUTO_IDLE, MANUAL_IDLE, MANUAL_JOGGING, HOLD
 // and STOPPING (the reproduction held it false for 5,000 cycles): Cat 0 in that cycle, lockout.
+// req: RSM-07 RSM-03
 TEST(UCA_RSM_03_ServoReadyLost, InEveryStateWithTheBrakesReleasedLocksOutInTheSameCycle) {
   std::vector<std::pair<const char*, void (*)(Rig&)>> setups{
       {"AUTO_IDLE", [](Rig& r) { r.to_operational(SelectorReading::Auto); }},
@@ -144,6 +150,7 @@ TEST(UCA_RSM_03_ServoReadyLost, InEveryStateWithTheBrakesReleasedLocksOutInTheSa
 
 // UCA-RSM-05 (ISO 10218-1 5.8.3): after a panic stop, the device back in MIDDLE without
 // passing RELEASED does not enable: Servo-on is refused until it was released.
+// req: RSM-09 RSM-06 INV-ENABLE
 TEST(UCA_RSM_05_PanicRearm, PanicThenMiddleDoesNotReEnableUntilReleased) {
   Rig r;
   r.to_jogging(SelectorReading::T1);
@@ -170,6 +177,7 @@ TEST(UCA_RSM_05_PanicRearm, PanicThenMiddleDoesNotReEnableUntilReleased) {
 }
 
 // UCA-RSM-05: a one-channel PANIC while unpowered counts as well.
+// req: RSM-09 RSM-06 INV-ENABLE
 TEST(UCA_RSM_05_PanicRearm, OneChannelPanicInIdleAlsoNeedsARelease) {
   Rig r;
   r.boot(SelectorReading::T2);
@@ -185,6 +193,7 @@ TEST(UCA_RSM_05_PanicRearm, OneChannelPanicInIdleAlsoNeedsARelease) {
 
 // UCA-RSM-06: an E-stop and a drive fault in the same cycle: power off and the lockout kept;
 // Reset after both cleared is refused (LOCKED_OUT), not accepted.
+// req: RSM-07 RSM-10 RSM-04
 TEST(UCA_RSM_06_SimultaneousEvents, EstopWithADriveFaultKeepsTheLockout) {
   Rig r;
   r.to_auto_running();
@@ -201,6 +210,7 @@ TEST(UCA_RSM_06_SimultaneousEvents, EstopWithADriveFaultKeepsTheLockout) {
 }
 
 // UCA-RSM-06: an E-stop and a T1 overspeed in the same cycle: the overspeed is not forgotten.
+// req: RSM-07 RSM-10 RSM-04
 TEST(UCA_RSM_06_SimultaneousEvents, EstopWithAT1OverspeedKeepsTheLockout) {
   Rig r;
   r.to_jogging(SelectorReading::T1);
@@ -212,6 +222,7 @@ TEST(UCA_RSM_06_SimultaneousEvents, EstopWithAT1OverspeedKeepsTheLockout) {
 }
 
 // UCA-RSM-06: an E-stop in the cycle the drives stop reporting ready keeps that lockout too.
+// req: RSM-07 RSM-10 RSM-04
 TEST(UCA_RSM_06_SimultaneousEvents, EstopWithServoReadyLostKeepsTheLockout) {
   Rig r;
   r.to_operational(SelectorReading::Auto);
