@@ -226,7 +226,9 @@ class Scenario {
       in_.selector.t1 = true;
     }
     in_.self_test_ok = self_test_ok_;
-    in_.servo_ready = st.state == StateId::Arming && arming_cycles_ >= ready_delay_;
+    // Ready after the drives' delay in ARMING, and kept while powered but for a rare loss (C27).
+    const bool ready_kept = safestate::is_powered(st.state) && st.state != StateId::Arming && !rng_.one_in(20'000);
+    in_.servo_ready = (st.state == StateId::Arming && arming_cycles_ >= ready_delay_) || ready_kept;
     in_.drive_fault = drive_fault_;
     in_.fieldbus_ok = fieldbus_ok_;
     in_.operator_link_ok = link_lost_cycles_ == 0;

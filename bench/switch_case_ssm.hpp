@@ -68,6 +68,7 @@ class SwitchCaseSsm {
   std::uint32_t stale_commands_{0};  // K36: commands queued at the E-stop release (C07)
   bool estop_tested_a_{false};       // K37: channel A seen open since the last accepted Reset
   bool estop_tested_b_{false};
+  bool enable_release_required_{false};  // K39: PANIC seen since the last RELEASED
   std::array<safestate::PlcopenAxis, safestate::kAxisCount> axes_{};
 
   safestate::StatusRecord status_{};

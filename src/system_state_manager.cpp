@@ -63,9 +63,10 @@ void SystemStateManager::derive_inputs(const ScanInputs& in) noexcept {
   d.drive_fault = in.drive_fault;
   d.fieldbus_ok = in.fieldbus_ok;
   d.operator_link_ok = in.operator_link_ok;
-  d.axes_at_rest = std::all_of(axes_.begin(), axes_.end(), [](const PlcopenAxis& a) {
-    return a.state() == AxisState::Disabled || a.state() == AxisState::StandStill;
-  });
+  // K39: PANIC on either channel latches; only RELEASED on both channels clears it.
+  enable_release_required_ = enabling_.either(EnablePosition::Panic) ||
+                             (enable_release_required_ && !enabling_.both(EnablePosition::Released));
+  d.enable_release_required = enable_release_required_;
   // K37: an E-stop channel seen open, every cycle, in every state.
   reset_.estop_tested_a = reset_.estop_tested_a || !in.estop_closed.a;
   reset_.estop_tested_b = reset_.estop_tested_b || !in.estop_closed.b;
@@ -168,7 +169,9 @@ ScanOutputs SystemStateManager::outputs() const noexcept {
   ScanOutputs out;
   out.contactor_closed = is_powered(s);
   out.drive_enable = is_powered(s);
-  out.brake_release = is_powered(s);
+  // Contactor and drive enable from ARMING on, the brakes only once the drives reported
+  // ready (C15): contactor -> servo on -> brake release (issue 29 item 2).
+  out.brake_release = is_powered(s) && s != StateId::Arming;
   out.ramp_down_request = s == StateId::Stopping;
   out.reset_lamp = s == StateId::EstopResetNeeded;
   out.commanded_speed_mm_s = s == StateId::ManualJogging ? jog(state_).speed_mm_s : 0;
@@ -202,6 +205,7 @@ StatusRecord SystemStateManager::status() const noexcept {
   r.stale_commands = reset_.stale_commands;
   r.estop_tested_a = reset_.estop_tested_a;
   r.estop_tested_b = reset_.estop_tested_b;
+  r.enable_release_required = enable_release_required_;
   return r;
 }
 

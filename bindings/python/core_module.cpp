@@ -126,6 +126,7 @@ py::dict observe(const SystemStateManager& m) {
   d["stale_commands"] = s.stale_commands;
   d["estop_tested_a"] = s.estop_tested_a;
   d["estop_tested_b"] = s.estop_tested_b;
+  d["enable_release_required"] = s.enable_release_required;
   put_outputs(d, m.outputs());
   return d;
 }
@@ -192,7 +193,7 @@ py::dict derived_dict(const DerivedInputs& d) {
   out["drive_fault"] = d.drive_fault;
   out["fieldbus_ok"] = d.fieldbus_ok;
   out["operator_link_ok"] = d.operator_link_ok;
-  out["axes_at_rest"] = d.axes_at_rest;
+  out["enable_release_required"] = d.enable_release_required;
   out["discrepancy"] = str(to_string(d.discrepancy));
   return out;
 }
@@ -294,6 +295,7 @@ void observe_key(const SystemStateManager& m, std::string& k) {
   num(static_cast<long long>(s.stale_commands));
   num(s.estop_tested_a ? 1 : 0);
   num(s.estop_tested_b ? 1 : 0);
+  num(s.enable_release_required ? 1 : 0);
   num(o.contactor_closed ? 1 : 0);
   num(o.drive_enable ? 1 : 0);
   num(o.brake_release ? 1 : 0);
@@ -426,7 +428,7 @@ PYBIND11_MODULE(_core, m) {
            "session_mode, stop_category, fault_code, last_reject_reason, command_result,\n"
            "estop_mismatch, safeguard_mismatch, enabling_mismatch, selector_invalid, state_cycles,\n"
            "t2_confirmed, resume_to, jog_axis, jog_direction, jog_speed_mm_s, queue_length,\n"
-           "stale_commands, estop_tested_a, estop_tested_b,\n"
+           "stale_commands, estop_tested_a, estop_tested_b, enable_release_required,\n"
            "contactor_closed, drive_enable, brake_release, ramp_down_request, reset_lamp,\n"
            "commanded_speed_mm_s, axes.")
       .def(

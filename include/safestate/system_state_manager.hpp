@@ -91,6 +91,7 @@ class SystemStateManager {
   DerivedInputs derived_{};
   StopCategory stop_category_{StopCategory::None};
   ResetInterlock reset_{};
+  bool enable_release_required_{false};  ///< K39: PANIC seen since the last RELEASED (both channels)
   CommandResult command_result_{};
   // Written by submit() (producer) and cycle() (consumer): atomic, and a plain value.
   std::atomic<RejectReason> last_reject_reason_{RejectReason::None};

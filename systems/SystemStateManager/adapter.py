@@ -74,7 +74,9 @@ class SystemStateManagerAdapter(Adapter):
                           "safeguard_mismatch", "enabling_mismatch", "selector_invalid",
                           "state_cycles", "t2_confirmed", "resume_to", "axes",
                           # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
-                          "stale_commands", "estop_tested_a", "estop_tested_b")
+                          "stale_commands", "estop_tested_a", "estop_tested_b",
+                          # issue 29 item 6: K39's memory of a PANIC since the last RELEASED.
+                          "enable_release_required")
     split_records = {"jog": (("jog_axis", "axis"), ("jog_direction", "direction"),
                              ("jog_speed_mm_s", "speed_mm_s"))}
     observed_operators = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request",
@@ -87,7 +89,8 @@ class SystemStateManagerAdapter(Adapter):
                         "last_accepted", "jog_in_auto", "obs_guard_fault", "obs_servo_on_powered", "obs_t2",
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
-                        "obs_submit_lost", "obs_link_lost")
+                        "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
+                        "obs_panic")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
@@ -108,6 +111,7 @@ class SystemStateManagerAdapter(Adapter):
         self._raw_cache: dict[Value, dict[str, Any]] = {}
         self.discrepancy_cycles = int(self.constants["DiscrepancyCycles"])
         self._combined_seen: set[tuple[Value, Value]] = set()
+        self._hazard_seen: set[tuple[Value, Value]] = set()
 
     # ------------------------------------------------------------ C++ calls
     def new_sut(self) -> Any:
@@ -181,6 +185,7 @@ class SystemStateManagerAdapter(Adapter):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
         probes += self._combined_disagreement_probes(state, cur, base)
+        probes += self._hazard_probes(state, cur, base)
         if not state[self.index["queue"]]:
             hold = Event.of(CYCLE, {"in": FnValue(cur)})
             for label, cmd in self.jog_probes:
@@ -210,6 +215,51 @@ class SystemStateManagerAdapter(Adapter):
                              f"{g1} and {g2} disagreeing from one cycle on, held {self.discrepancy_cycles + 1} cycles",
                              (ev,) * self.discrepancy_cycles))
         return out
+
+    def _hazard_probes(self, state: tuple, cur: dict[str, Value], base: dict[str, Any]) -> list[Probe]:
+        """The reproductions of issue 29, named by the design page's unsafe control actions
+        (§13): two inputs changing in one cycle and short command sequences that the
+        one-dimension alphabet above does not contain.  Offered once per (control state,
+        session mode), from the first probed state there with an empty queue."""
+        key = (state[self.index["state"]], state[self.index["session_mode"]])
+        if key in self._hazard_seen or state[self.index["queue"]]:
+            return []
+        self._hazard_seen.add(key)
+
+        def cyc(model: dict[str, Value], raw: dict[str, Any]) -> tuple[Event, dict[str, Any]]:
+            return Event.of(CYCLE, {"in": FnValue(dict(cur, **model))}), dict(base, **raw)
+
+        def sub(kind: str) -> tuple[Event, Any]:
+            ev = Event.of(SUBMIT, {"c": FnValue({"kind": kind, "axis": 0, "direction": 0, "speed_mm_s": 0})})
+            return ev, self.plan_call(ev)
+
+        def seq(label: str, steps: list[tuple[Event, Any]]) -> Probe:
+            events = tuple(e for e, _ in steps)
+            return Probe(events[-1], [c for _, c in steps], label, events[:-1])
+
+        estop = ({"estop_a": False, "estop_b": False}, {"estop_closed_a": False, "estop_closed_b": False})
+        panic = ({"enable_a": "PANIC", "enable_b": "PANIC"}, {"enabling_a": "PANIC", "enabling_b": "PANIC"})
+        middle = ({"enable_a": "MIDDLE", "enable_b": "MIDDLE"}, {"enabling_a": "MIDDLE", "enabling_b": "MIDDLE"})
+        moving = ({"speed": "MOVING"}, {"qd": self.speeds["MOVING"][0]})
+        unready = ({"servo_ready": False}, {"servo_ready": False})
+        stop_cycles = int(self.constants["MaxStopCycles"]) + 2
+        arming_cycles = int(self.constants["ArmingTimeoutCycles"]) + 2
+        return [
+            seq("UCA-RSM-06 E-stop and a drive fault in one cycle",
+                [cyc(dict(estop[0], drive_fault=True), dict(estop[1], drive_fault=True))]),
+            seq("UCA-RSM-06 E-stop and servo_ready lost in one cycle",
+                [cyc(dict(estop[0], **unready[0]), dict(estop[1], **unready[1]))]),
+            seq("UCA-RSM-06 E-stop channel B and a T1 overspeed in one cycle",
+                [cyc({"estop_b": False, "speed": "OVER_T1"},
+                     {"estop_closed_b": False, "qd": self.speeds["OVER_T1"][0]})]),
+            seq("UCA-RSM-03 servo_ready lost, held 3 cycles", [cyc(*unready)] * 3),
+            seq("UCA-RSM-05 enabling PANIC, back to MIDDLE, then Servo-on",
+                [cyc(*panic), cyc(*middle), sub("SERVO_ON"), cyc(*middle)]),
+            seq(f"UCA-RSM-07 JOG_STOP with the arm still moving, {stop_cycles} cycles",
+                [sub("JOG_STOP")] + [cyc(*moving)] * stop_cycles),
+            seq(f"UCA-RSM-02 Servo-on without servo_ready, {arming_cycles} cycles",
+                [sub("SERVO_ON")] + [cyc(*unready)] * arming_cycles),
+        ]
 
     def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
         """Run each probe on a fresh C++ manager brought to the state by `prefix`."""
@@ -465,9 +515,11 @@ def flagship_rules(D: int, queue_capacity: int, timers: list[int]) -> type:  # n
         @rule(kind=st.sampled_from(["START", "JOG_START", "PAUSE", "RESUME", "JOG_STOP", "SERVO_OFF", "RESET"]),
               i=st.integers(0, 7))
         def command(self, kind: str, i: int) -> None:
-            """One command and the cycle that pops it."""
+            """One command and the cycle that pops it (the drives kept ready where offered)."""
             self._submit(kind, i)
-            self._cycle_where(lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
+            healthy = (lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
+            if not self._cycle_where(lambda r: healthy(r) and r["servo_ready"]):
+                self._cycle_where(healthy)
 
         @rule(n=st.sampled_from(timers), i=st.integers(0, 7))
         def hold(self, n: int, i: int) -> None:

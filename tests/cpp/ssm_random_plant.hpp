@@ -42,7 +42,9 @@ class RandomPlant {
       in_.selector = contacts(mode_target_);
     }
     if (chance(0.0005)) in_.selector = SelectorContacts{true, true, false};  // welded contact
-    if (chance(0.05)) in_.servo_ready = chance(0.8);
+    // Drives become ready a few cycles after power-up and stay ready, but for a rare loss
+    // (C27 must catch it with the brakes released).
+    if (in_.servo_ready ? chance(0.0005) : chance(0.05)) in_.servo_ready = !in_.servo_ready;
     if (in_.drive_fault ? chance(0.1) : chance(0.002)) in_.drive_fault = !in_.drive_fault;
     in_.fieldbus_ok = !chance(0.0003);      // a lost EtherCAT frame / missed cycle deadline (C24)
     in_.operator_link_ok = !chance(0.001);  // the operator client's heartbeat expired (C26)

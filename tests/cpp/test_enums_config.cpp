@@ -49,9 +49,10 @@ TEST(RSM16_StatusNames, EnumNamesAreTheUpperCaseNamesOfTheDesignPage) {
   EXPECT_EQ(names(kAllOperatingModes), (V{"NONE", "AUTO", "T1", "T2"}));
   EXPECT_EQ(names(kAllSelectorReadings), (V{"INVALID", "AUTO", "T1", "T2"}));
   EXPECT_EQ(names(kAllStopCategories), (V{"NONE", "CAT0", "CAT1", "CAT2"}));
-  EXPECT_EQ(names(kAllFaultCodes), (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD",
-                                      "DISCREPANCY_ENABLING", "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED",
-                                      "ARMING_TIMEOUT", "STOP_TIMEOUT", "FIELDBUS_LOSS", "STANDSTILL_VIOLATION"}));
+  EXPECT_EQ(names(kAllFaultCodes),
+            (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING",
+               "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT", "FIELDBUS_LOSS",
+               "STANDSTILL_VIOLATION", "SERVO_READY_LOST"}));
   EXPECT_EQ(names(kAllRejectReasons),
             (V{"NONE", "LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT", "SELECTOR_INVALID",
                "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE", "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO",

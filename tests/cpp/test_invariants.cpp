@@ -158,7 +158,8 @@ TEST(INV_POWER, PowerOnlyInPoweredStatesAndNeverInEstopOrLockout) {
     const bool powered = is_powered(s.after.state);
     ASSERT_EQ(s.out.contactor_closed, powered) << describe(s.after);
     ASSERT_EQ(s.out.drive_enable, powered);
-    ASSERT_EQ(s.out.brake_release, powered);
+    // issue 29 item 2: the brakes only once the drives reported ready (not in ARMING).
+    ASSERT_EQ(s.out.brake_release, powered && s.after.state != StateId::Arming);
     if (s.after.state == StateId::EstopActive || s.after.state == StateId::ErrorLockout) {
       ASSERT_FALSE(s.out.contactor_closed || s.out.drive_enable || s.out.brake_release);
     }

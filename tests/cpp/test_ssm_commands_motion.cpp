@@ -363,13 +363,20 @@ TEST(RSM09_Manual, TheSafeguardIsNotRequiredInManualModes) {
   EXPECT_EQ(r.state(), StateId::ManualJogging);
 }
 
-TEST(RSM09_Manual, JogStopReturnsToManualIdle) {
+TEST(RSM09_Manual, JogStopRampsDownThenReturnsToManualIdleAtStandstill) {
   Rig r;
   r.to_jogging(SelectorReading::T1);
   EXPECT_EQ(r.command(Command::jog_stop()), CommandResult::accepted());
-  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  EXPECT_EQ(r.state(), StateId::Stopping);
+  EXPECT_EQ(r.st().stop_category, StopCategory::Cat2);
+  EXPECT_TRUE(r.out.ramp_down_request);
   EXPECT_EQ(r.out.commanded_speed_mm_s, 0);
   EXPECT_EQ(r.command(Command::jog_stop()), CommandResult::rejected(RejectReason::WrongState));
+  r.in.qd = kRest;
+  r.cycle();
+  EXPECT_EQ(r.cycle_row(), "C28");
+  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  EXPECT_FALSE(r.out.ramp_down_request);
 }
 
 // ---------------------------------------------------------------- RSM-10 T1 speed (integration)
@@ -692,7 +699,8 @@ TEST(RSM14_CommandQueue, CommandsAreHandledOnePerCycleInOrder) {
   EXPECT_EQ(r.state(), StateId::ManualJogging);
   EXPECT_EQ(r.st().queue_length, 1U);
   r.cycle();
-  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  EXPECT_EQ(r.state(), StateId::Stopping);  // the jog stop's Cat 2 ramp (K32)
+  EXPECT_EQ(r.st().queue_length, 0U);
 }
 
 TEST(RSM14_CommandQueue, AProducerThreadNeverBlocksAndNothingIsLost) {

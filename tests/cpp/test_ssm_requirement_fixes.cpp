@@ -62,13 +62,14 @@ TEST(RSM11_StandstillMonitoring, MotionInAutoIdleAndManualIdleIsCat0AndLockout) 
   }
 }
 
-TEST(RSM11_StandstillMonitoring, AnAxisStillDeceleratingAfterJogStopIsNotAViolation) {
+TEST(RSM11_StandstillMonitoring, AJogStopIsMonitoredUntilStandstillAndAfterIt) {
   Rig r;
   r.to_jogging(SelectorReading::T1);
   ASSERT_EQ(r.command(Command::jog_stop()), CommandResult::accepted());
-  ASSERT_EQ(r.state(), StateId::ManualIdle);
-  r.cycle();  // still moving: the jogged axis is in PLCopen Stopping
-  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  ASSERT_EQ(r.state(), StateId::Stopping);  // ramp-down requested, stop timer running
+  r.cycle();                                // still decelerating
+  EXPECT_EQ(r.state(), StateId::Stopping);
+  EXPECT_TRUE(r.out.ramp_down_request);
   r.in.qd = kRest;
   r.cycle();  // at rest: StandStill, monitoring from now on
   r.in.qd = kSlow;

@@ -18,6 +18,7 @@ STATUS_KEYS = {
     "selector_invalid", "state_cycles", "t2_confirmed", "resume_to", "jog_axis",
     "jog_direction", "jog_speed_mm_s", "queue_length",
     "stale_commands", "estop_tested_a", "estop_tested_b",  # K36, K37 (issue 17)
+    "enable_release_required",  # K39 (issue 29)
 }
 OUTPUT_KEYS = {
     "contactor_closed", "drive_enable", "brake_release", "ramp_down_request", "reset_lamp",
@@ -171,11 +172,14 @@ def test_bad_arguments_raise():
     assert m.observe()["state"] == "BOOT"  # nothing ran
 
 
-def test_transition_table_lists_c01_to_c26_and_k01_to_k38_and_matches_json_and_dot():
+def test_transition_table_lists_c01_to_c28_and_k01_to_k39_and_matches_json_and_dot():
     rows = core.transition_table()
     ids = [r["id"] for r in rows]
-    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 27)]
-    assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 39)]
+    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 29)]
+    assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 40)]
+    # issue 29: the latching rows before the E-stop's C06, C28 before C19, K39 after K10
+    assert ids.index("C09") < ids.index("C27") < ids.index("C10") < ids.index("C25") < ids.index("C06")
+    assert ids[ids.index("C28") + 1] == "C19" and ids[ids.index("K10") + 1] == "K39"
     # rows added by issues 17 and 16 sit where first-match needs them
     assert ids[3] == "C24" and ids[ids.index("K02") + 1] == "K36" and ids[ids.index("K06") + 1] == "K38"
     assert ids[ids.index("C14") + 1] == "C26"
