@@ -114,6 +114,13 @@ using safestate::StateId;
 using safestate::StatusRecord;
 using safestate::SubmitResult;
 
+// The design-page defaults with the tool stated (a tool-less flange), as a Config must.
+Config bench_config() noexcept {
+  Config c;
+  c.tool_offset_m = safestate::kFlangeTcp;
+  return c;
+}
+
 // ---------------------------------------------------------------------------------------
 // Deterministic RNG (splitmix64): same seed, same scenario, on every platform.
 class Rng {
@@ -519,7 +526,7 @@ class Runner {
   }
 
   Options opt_;
-  Config config_{};
+  Config config_{bench_config()};
   Scenario scenario_;
   std::optional<Impl> impl_;
   ScanOutputs last_out_{};
@@ -576,7 +583,7 @@ void print_command(const Command& c) {
 }
 
 int crosscheck(const Options& opt, bool describe) {
-  const Config config{};
+  const Config config = bench_config();
   std::optional<safestate::SystemStateManager> a;
   std::optional<safestate_bench::SwitchCaseSsm> b;
   a.emplace(config);

@@ -73,6 +73,12 @@ ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
 ASSUME MaxStopCycles       \in Nat \ {0}
 ASSUME T1SpeedLimit        \in Nat \ {0}
+\* Config::validate (page §9 "Configuration bounds"): every timer at most
+\* kMaxTimerCycles, the T1 limit at most ISO 10218-1's reduced speed.
+ASSUME DiscrepancyCycles   <= 2147483647
+ASSUME ArmingTimeoutCycles <= 2147483647
+ASSUME MaxStopCycles       <= 2147483647
+ASSUME T1SpeedLimit        <= 250
 ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
 ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
                               speed_mm_s: Int]

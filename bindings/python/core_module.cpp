@@ -371,14 +371,30 @@ PYBIND11_MODULE(_core, m) {
                      "Joint speed at or below which the axis is at rest (default 0.001 rad/s).")
       .def_readwrite("command_queue_limit", &Config::command_queue_limit,
                      "Commands the queue holds, 1..16 (default 8).")
+      .def_readwrite("t2_speed_limit_mm_s", &Config::t2_speed_limit_mm_s,
+                     "T2 TCP speed limit, mm/s, above the T1 limit and at most 3000 (default 1000).")
+      .def_readwrite("standstill_speed_window_mm_s", &Config::standstill_speed_window_mm_s,
+                     "TCP speed the standstill class may admit, below the T1 limit (default 10 mm/s).")
       .def_property(
           "tool_offset_m",
-          [](const Config& c) { return py::make_tuple(c.tool_offset_m[0], c.tool_offset_m[1], c.tool_offset_m[2]); },
-          [](Config& c, const py::sequence& v) {
-            if (py::len(v) != 3) throw py::value_error("tool_offset_m is (x, y, z) in metres");
-            for (std::size_t i = 0; i < 3; ++i) c.tool_offset_m[i] = v[i].cast<double>();
+          [](const Config& c) -> py::object {
+            if (!c.tool_offset_m) return py::none();
+            const auto& t = *c.tool_offset_m;
+            return py::make_tuple(t[0], t[1], t[2]);
           },
-          "Tool centre point in the flange frame, metres (RSM-10: T1 speed at the tool tip).")
+          [](Config& c, const py::object& v) {
+            if (v.is_none()) {
+              c.tool_offset_m.reset();
+              return;
+            }
+            const auto seq = v.cast<py::sequence>();
+            if (py::len(seq) != 3) throw py::value_error("tool_offset_m is (x, y, z) in metres, or None");
+            std::array<double, 3> t{};
+            for (std::size_t i = 0; i < 3; ++i) t[i] = seq[i].cast<double>();
+            c.tool_offset_m = t;
+          },
+          "Tool centre point in the flange frame, metres (RSM-10: T1 speed at the tool tip). None (the\n"
+          "default) is an invalid Config (TOOL_OFFSET_NOT_GIVEN); (0, 0, 0) states a tool-less flange.")
       .def_property(
           "dh", [](const Config& c) { return dh_to_list(c.dh); },
           [](Config& c, const py::sequence& rows) { c.dh = dh_from(rows); },
@@ -392,6 +408,7 @@ PYBIND11_MODULE(_core, m) {
                ", arming_timeout_cycles=" + std::to_string(c.arming_timeout_cycles) +
                ", max_stop_cycles=" + std::to_string(c.max_stop_cycles) +
                ", t1_speed_limit_mm_s=" + std::to_string(c.t1_speed_limit_mm_s) +
+               ", t2_speed_limit_mm_s=" + std::to_string(c.t2_speed_limit_mm_s) +
                ", zero_velocity_rad_s=" + std::to_string(c.zero_velocity_rad_s) +
                ", command_queue_limit=" + std::to_string(c.command_queue_limit) + ")";
       });

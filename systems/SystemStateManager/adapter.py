@@ -109,6 +109,13 @@ class SystemStateManagerAdapter(Adapter):
         self.discrepancy_cycles = int(self.constants["DiscrepancyCycles"])
         self._combined_seen: set[tuple[Value, Value]] = set()
 
+    def config(self) -> Any:
+        """The model's constants, and the tool stated as a tool-less flange (design §9: a
+        Config states its tool); the model abstracts the tool into `speed`."""
+        cfg = super().config()
+        cfg.tool_offset_m = (0.0, 0.0, 0.0)
+        return cfg
+
     # ------------------------------------------------------------ C++ calls
     def new_sut(self) -> Any:
         return self.core.Manager(self.cfg)

@@ -26,6 +26,14 @@ inline constexpr JointVector kSlow{0.05, 0.0, 0.0, 0.0, 0.0, 0.0};
 inline constexpr JointVector kFast{2.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 inline constexpr JointVector kRest{};
 
+/// The design-page defaults with the tool stated as a tool-less flange: a Config states its
+/// tool (design §9), and these tests measure the speed at the flange.
+inline Config flange_config() {
+  Config c;
+  c.tool_offset_m = kFlangeTcp;
+  return c;
+}
+
 inline SelectorContacts contacts(SelectorReading mode) {
   SelectorContacts c;
   c.auto_ = mode == SelectorReading::Auto;
@@ -76,7 +84,7 @@ inline std::string describe(const StatusRecord& s) {
 /// A manager plus the inputs it sees every cycle. `in` is edited between cycles.
 class Rig {
  public:
-  explicit Rig(const Config& config = Config{}) : m(config) {}
+  explicit Rig(const Config& config = flange_config()) : m(config) {}
 
   SystemStateManager m;
   ScanInputs in{healthy(SelectorReading::Auto)};

@@ -29,7 +29,7 @@ struct Step {
 
 /// A small configuration so that timeouts and discrepancy latches happen in short runs.
 Config walk_config() {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 8;
   c.arming_timeout_cycles = 25;
   c.max_stop_cycles = 120;

@@ -24,7 +24,7 @@ TEST(RSM15_NoHeap, TheCountingAllocatorSeesAllocations) {
 }
 
 TEST(RSM15_NoHeap, HundredThousandRandomCyclesAndCommandsAllocateNothing) {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 8;
   c.arming_timeout_cycles = 25;
   c.max_stop_cycles = 120;

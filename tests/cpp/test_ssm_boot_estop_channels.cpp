@@ -123,7 +123,7 @@ TEST(RSM12_Boot, FailedSelfTestLocksOutWithSelfTestFailed) {
 }
 
 TEST(RSM12_Boot, InvalidConfigFailsTheSelfTest) {
-  Config c;
+  Config c = flange_config();
   c.command_queue_limit = 0;
   ASSERT_EQ(validate(c), ConfigError::QueueLimitOutOfRange);
   Rig r(c);
@@ -333,7 +333,7 @@ void PrintTo(const DiscrepancyCase& c, std::ostream* os) { *os << c.name; }
 class RSM04_Discrepancy : public ::testing::TestWithParam<DiscrepancyCase> {};
 
 TEST_P(RSM04_Discrepancy, ExactlyDCyclesAreToleratedAndTheNextLatchesLockout) {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 50;
   Rig r(c);
   r.to_operational(SelectorReading::T1);
@@ -410,7 +410,7 @@ TEST(RSM04_Discrepancy, CodesAreCheckedInTheDocumentedOrder) {
 }
 
 TEST(RSM04_Discrepancy, CountersRunInBootAndInLockout) {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 0;  // no tolerance: the first disagreement latches
   Rig r(c);
   r.in = healthy();

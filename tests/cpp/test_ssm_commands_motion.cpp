@@ -154,7 +154,7 @@ TEST(RSM07_Arming, DriveFaultDuringArmingLocksOut) {
 }
 
 TEST(RSM07_Arming, ArmingTimesOutAfterExactlyTheConfiguredCycles) {
-  Config c;
+  Config c = flange_config();
   c.arming_timeout_cycles = 10;
   Rig r(c);
   r.boot();
@@ -171,7 +171,7 @@ TEST(RSM07_Arming, ArmingTimesOutAfterExactlyTheConfiguredCycles) {
 }
 
 TEST(RSM07_Arming, ReadyInTheLastAllowedCycleIsInTime) {
-  Config c;
+  Config c = flange_config();
   c.arming_timeout_cycles = 10;
   Rig r(c);
   r.boot();
@@ -406,7 +406,7 @@ TEST(RSM10_T1Speed, AJointTurningBackwardsIsNotAtRest) {
 // overspeed. The joint-1 rate whose TCP speed is the limit exactly is found by nudging
 // the last bits of limit / (speed per rad/s).
 TEST(RSM10_T1Speed, ExactlyTheT1LimitIsNotAnOverspeed) {
-  const Config config{};
+  const Config config = flange_config();
   const SpeedMonitor mon{config};
   const double limit = static_cast<double>(config.t1_speed_limit_mm_s);
   double w = limit / mon.tcp_speed_mm_s(kPose, JointVector{1.0, 0, 0, 0, 0, 0});
@@ -473,7 +473,7 @@ TEST(RSM10_T1Speed, HighSpeedInT2OrAutoIsNotAT1Overspeed) {
 }
 
 TEST(RSM10_T1Speed, AConfiguredLimitIsUsedForClampAndOverspeed) {
-  Config c;
+  Config c = flange_config();
   c.t1_speed_limit_mm_s = 20;
   Rig r(c);
   r.to_operational(SelectorReading::T1);
@@ -488,7 +488,7 @@ TEST(RSM10_T1Speed, AConfiguredLimitIsUsedForClampAndOverspeed) {
 // ---------------------------------------------------------------- RSM-11 stopping, pause
 
 TEST(RSM11_Stopping, Cat1StopTimesOutAfterExactlyMaxStopCyclesAndCutsPower) {
-  Config c;
+  Config c = flange_config();
   c.max_stop_cycles = 20;
   Rig r(c);
   r.to_auto_running();
@@ -671,7 +671,7 @@ TEST(RSM14_CommandQueue, AFullQueueRejectsAtOnceAndChangesNothingElse) {
 }
 
 TEST(RSM14_CommandQueue, TheConfiguredLimitBoundsTheQueue) {
-  Config c;
+  Config c = flange_config();
   c.command_queue_limit = 2;
   Rig r(c);
   EXPECT_EQ(r.submit(Command::reset()), SubmitResult::queued);

@@ -148,7 +148,7 @@ TEST(RSM06_ServoOn, ServoOnPoppedInTheCycleThatRemovedPowerIsRejected) {
 // ---------------------------------------------------------------- C12-C14: stop watchdog
 
 TEST(RSM11_Stopping, EscalatedStopIsCutWithinMaxStopCyclesOfTheFirstTrigger) {
-  Config c;
+  Config c = flange_config();
   c.max_stop_cycles = 20;
   Rig r(c);
   r.to_auto_running();
@@ -168,8 +168,8 @@ TEST(RSM11_Stopping, EscalatedStopIsCutWithinMaxStopCyclesOfTheFirstTrigger) {
 // ---------------------------------------------------------------- RSM-10: tool offset
 
 TEST(RSM10_TcpSpeed, ALongToolIsMeasuredAtItsTip) {
-  Config flange;
-  Config tool;
+  Config flange = flange_config();
+  Config tool = flange_config();
   tool.tool_offset_m = {0.0, 0.0, 0.5};  // a 500 mm tool along the flange z axis
   const SpeedMonitor at_flange(flange);
   const SpeedMonitor at_tip(tool);
@@ -188,7 +188,7 @@ TEST(RSM10_TcpSpeed, ALongToolIsMeasuredAtItsTip) {
 }
 
 TEST(RSM10_TcpSpeed, T1OverspeedAtTheToolTipLocksOut) {
-  Config c;
+  Config c = flange_config();
   c.tool_offset_m = {0.0, 0.0, 0.5};
   Rig r(c);
   r.to_jogging(SelectorReading::T1);
