@@ -10,6 +10,7 @@
 
 #include "safestate/config_error.hpp"
 #include "safestate/dh_table.hpp"
+#include "safestate/fieldbus_watchdog.hpp"
 #include "safestate/speed_limits.hpp"
 #include "safestate/standstill_bound.hpp"
 
@@ -34,7 +35,12 @@ struct Config {
   /// tool (zero_class_tcp_bound_mm_s) must not exceed it, and it stays below the T1 limit.
   double standstill_speed_window_mm_s{10.0};
   std::uint32_t command_queue_limit{8};  ///< commands the queue holds, 1..kMaxQueueCapacity
-  DhTable dh{kUr5DhTable};               ///< arm kinematics (UR5 standard DH)
+  /// EtherCAT working counter of a complete frame: 3 per drive for the LRW datagram
+  /// (read 1 + write 2) of the six drives (§2 "Fieldbus watchdog").
+  std::uint16_t fieldbus_expected_working_counter{18};
+  /// Missed bus cycles in a row tolerated before C24 (0 = none), at most kMaxFieldbusLostCycles.
+  std::uint32_t fieldbus_lost_cycles_limit{0};
+  DhTable dh{kUr5DhTable};  ///< arm kinematics (UR5 standard DH)
   /// Tool centre point in the flange (last DH) frame, metres: the T1 speed (RSM-10) is
   /// measured at the tool tip, not at the flange. No default: the integrator states the
   /// mounted tool (kFlangeTcp for none); a Config without it is invalid (C02).
@@ -84,6 +90,12 @@ inline constexpr std::array<double, 3> kFlangeTcp{0.0, 0.0, 0.0};
   }
   if (c.command_queue_limit == 0U || c.command_queue_limit > kMaxQueueCapacity) {
     return ConfigError::QueueLimitOutOfRange;
+  }
+  if (c.fieldbus_expected_working_counter == 0U) {
+    return ConfigError::FieldbusWorkingCounterZero;
+  }
+  if (c.fieldbus_lost_cycles_limit > kMaxFieldbusLostCycles) {
+    return ConfigError::FieldbusToleranceTooLarge;
   }
   if (!c.tool_offset_m.has_value()) {
     return ConfigError::ToolOffsetNotGiven;

@@ -24,9 +24,11 @@ enum class ConfigError : std::uint8_t {
   StandstillWindowOutOfRange,  ///< standstill_speed_window_mm_s must be in (0, t1 limit)
   ToolOffsetNotGiven,          ///< tool_offset_m must be stated (kFlangeTcp for no tool)
   ZeroVelocityAboveWindow,     ///< zero_velocity_rad_s seen at the tool exceeds the standstill window
+  FieldbusWorkingCounterZero,  ///< fieldbus_expected_working_counter must be > 0 (0 accepts silence)
+  FieldbusToleranceTooLarge,   ///< fieldbus_lost_cycles_limit above kMaxFieldbusLostCycles
 };
 
-inline constexpr std::size_t kConfigErrorCount = 14;
+inline constexpr std::size_t kConfigErrorCount = 16;
 
 inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
     ConfigError::None,
@@ -43,6 +45,8 @@ inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
     ConfigError::StandstillWindowOutOfRange,
     ConfigError::ToolOffsetNotGiven,
     ConfigError::ZeroVelocityAboveWindow,
+    ConfigError::FieldbusWorkingCounterZero,
+    ConfigError::FieldbusToleranceTooLarge,
 };
 
 [[nodiscard]] constexpr std::string_view to_string(ConfigError e) noexcept {
@@ -61,6 +65,8 @@ inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
     case ConfigError::StandstillWindowOutOfRange: return "STANDSTILL_WINDOW_OUT_OF_RANGE";
     case ConfigError::ToolOffsetNotGiven: return "TOOL_OFFSET_NOT_GIVEN";
     case ConfigError::ZeroVelocityAboveWindow: return "ZERO_VELOCITY_ABOVE_WINDOW";
+    case ConfigError::FieldbusWorkingCounterZero: return "FIELDBUS_WORKING_COUNTER_ZERO";
+    case ConfigError::FieldbusToleranceTooLarge: return "FIELDBUS_TOLERANCE_TOO_LARGE";
   }
   return "?";
 }

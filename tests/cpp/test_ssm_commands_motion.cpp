@@ -43,7 +43,7 @@ TEST(RSM06_ServoOn, RejectedOutsideIdle) {
 TEST(RSM06_ServoOn, RejectedWithADriveFault) {
   Rig r;
   r.boot();
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   EXPECT_EQ(r.command(Command::servo_on()), CommandResult::rejected(RejectReason::DriveFault));
   EXPECT_EQ(r.state(), StateId::Idle);
 }
@@ -142,10 +142,10 @@ TEST(RSM07_Arming, ArmingPowersTheDrivesAndReadyEntersTheSubStateOfTheMode) {
 TEST(RSM07_Arming, DriveFaultDuringArmingLocksOut) {
   Rig r;
   r.boot();
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   r.cycles(3);
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   EXPECT_EQ(r.state(), StateId::ErrorLockout);
   EXPECT_EQ(r.st().fault_code, FaultCode::DriveFault);
@@ -158,7 +158,7 @@ TEST(RSM07_Arming, ArmingTimesOutAfterExactlyTheConfiguredCycles) {
   c.arming_timeout_cycles = 10;
   Rig r(c);
   r.boot();
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   EXPECT_EQ(r.st().state_cycles, 0U);
   r.cycles(10);  // 10 full cycles after the Servo-on cycle
@@ -175,10 +175,10 @@ TEST(RSM07_Arming, ReadyInTheLastAllowedCycleIsInTime) {
   c.arming_timeout_cycles = 10;
   Rig r(c);
   r.boot();
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   r.cycles(10);
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();  // C15 precedes C16
   EXPECT_EQ(r.state(), StateId::AutoIdle);
 }
@@ -614,7 +614,7 @@ TEST(RSM13_Commands, ARejectedCommandChangesNothingButTheCommandFields) {
       },
       [](Rig& r) {
         r.boot();
-        r.in.servo_ready = false;
+        r.plant.servo_ready = false;
         (void)r.command(Command::servo_on());
       },
   };
@@ -762,7 +762,7 @@ TEST(RSM16_Outputs, StatusRecordNamesStateModeStopReasonAndFault) {
   EXPECT_EQ(to_string(s.stop_category), "NONE");
   EXPECT_EQ(to_string(s.last_reject_reason), "WRONG_MODE");
   EXPECT_EQ(to_string(s.command_result), "WRONG_MODE");
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   s = r.st();
   EXPECT_EQ(to_string(s.fault_code), "DRIVE_FAULT");
@@ -776,10 +776,10 @@ TEST(RSM17_AxesInManager, ServoOnStopAndPowerOffWalkTheAxesThroughThePlcopenStat
   Rig r;
   r.boot();
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::Disabled);
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::Disabled);  // ARMING
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::StandStill);  // MC_Power on
   (void)r.command(Command::start());
@@ -815,10 +815,10 @@ TEST(RSM17_AxesInManager, PauseTakesAxesThroughStoppingToStandStill) {
 TEST(RSM17_AxesInManager, DriveFaultPutsEveryAxisInErrorStopForGood) {
   Rig r;
   r.to_auto_running();
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::ErrorStop);
-  r.in.drive_fault = false;
+  r.plant.drive_fault = false;
   r.cycles(10);
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::ErrorStop);
 }
