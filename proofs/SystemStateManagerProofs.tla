@@ -68,8 +68,7 @@ Strengthen_OBSERVERS ==
     /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
     /\ (obs_arming > 0) <=> (state = "ARMING")
     /\ obs_arming > 0 => obs_arming = state_cycles + 1
-    /\ t2_confirmed => obs_t2 = state_cycles + 1
-    /\ state = "IDLE" => state_cycles <= T2ConfirmTimeoutCycles
+    /\ t2_confirmed => obs_t2
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
 \* changes while a jog is kept: Enter keeps session_mode in powered states).
