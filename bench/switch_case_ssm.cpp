@@ -52,7 +52,10 @@ OperatingMode flat_mode_of(SelectorReading sel) noexcept {
 }  // namespace
 
 SwitchCaseSsm::SwitchCaseSsm(const safestate::Config& config) noexcept
-    : config_(config), kin_(config.dh), config_ok_(safestate::validate(config) == safestate::ConfigError::None) {}
+    : config_(config),
+      kin_(config.dh),
+      config_ok_(safestate::validate(config) == safestate::ConfigError::None),
+      bus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit) {}
 
 safestate::SubmitResult SwitchCaseSsm::submit(const safestate::Command& command) noexcept {
   if (queue_.size() >= config_.command_queue_limit || !queue_.try_push(command)) {
@@ -118,6 +121,9 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   const bool enable_middle = in.enabling.a == EnablePosition::Middle && in.enabling.b == EnablePosition::Middle;
   const bool enable_panic = in.enabling.a == EnablePosition::Panic || in.enabling.b == EnablePosition::Panic;
   const SelectorReading sel = in.selector.reading();
+  // The drives' status words and the bus watchdog: the product's decoders (not under test here).
+  const safestate::DriveStatusSummary drives = safestate::summarize_drives(in.bus.status_words);
+  const bool fieldbus_ok = bus_.update(in.bus.cycle_counter, in.bus.working_counter);
 
   SpeedLevel speed = SpeedLevel::Zero;
   for (std::size_t i = 0; i < safestate::kAxisCount; ++i) {
@@ -171,7 +177,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     lockout(FaultCode::SelfTestFailed);  // C02
   } else if (discrepancy != FaultCode::None) {
     lockout(discrepancy);  // C03
-  } else if (!in.fieldbus_ok) {
+  } else if (!fieldbus_ok) {
     lockout(FaultCode::FieldbusLoss);  // C24
   } else if (state_ == StateId::Boot) {
     if (estop_tripped) {
@@ -180,9 +186,9 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     } else {
       enter(StateId::Idle);  // C05
     }
-  } else if (powered && in.drive_fault) {
+  } else if (powered && drives.drive_fault) {
     lockout(FaultCode::DriveFault);  // C09
-  } else if (powered && state_ != StateId::Arming && !in.servo_ready) {
+  } else if (powered && state_ != StateId::Arming && !drives.servo_ready) {
     lockout(FaultCode::ServoReadyLost);  // C27
   } else if (powered && session_ == OperatingMode::T1 && speed == SpeedLevel::OverT1) {
     lockout(FaultCode::T1Overspeed);  // C10
@@ -220,7 +226,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   } else {
     switch (state_) {
       case StateId::Arming:
-        if (in.servo_ready) {
+        if (drives.servo_ready) {
           enter(session_ == OperatingMode::Auto ? StateId::AutoIdle : StateId::ManualIdle);  // C15
         } else if (state_cycles_ == config_.arming_timeout_cycles) {
           lockout(FaultCode::ArmingTimeout);  // C16
@@ -260,7 +266,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   // ---- §6 at most one command ----------------------------------------------------------
   safestate::Command c;
   if (queue_.try_pop(c)) {
-    handle_command(c, sel, gate_open, enable_middle, in.drive_fault, state_at_start);
+    handle_command(c, sel, gate_open, enable_middle, drives.drive_fault, state_at_start);
     if (stale_commands_ > 0) --stale_commands_;  // K36: one fewer command from before the release
   } else {
     status_.command_result = CommandResult::none();

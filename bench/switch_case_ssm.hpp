@@ -17,6 +17,8 @@
 #include "safestate/arm_kinematics.hpp"
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
+#include "safestate/drive_status_summary.hpp"
+#include "safestate/fieldbus_watchdog.hpp"
 #include "safestate/plcopen_axis.hpp"
 #include "safestate/scan_inputs.hpp"
 #include "safestate/scan_outputs.hpp"
@@ -49,6 +51,7 @@ class SwitchCaseSsm {
   safestate::ArmKinematics kin_;
   bool config_ok_;
   safestate::SpscQueue<safestate::Command, safestate::kMaxQueueCapacity> queue_;
+  safestate::FieldbusWatchdog bus_;
 
   // Machine state (flat, all fields always present).
   safestate::StateId state_{safestate::StateId::Boot};

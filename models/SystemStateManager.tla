@@ -27,6 +27,7 @@ CONSTANTS
     ArmingTimeoutCycles,  \* Config::arming_timeout_cycles (RSM-07)
     MaxStopCycles,        \* Config::max_stop_cycles (RSM-11)
     T1SpeedLimit,         \* Config::t1_speed_limit_mm_s (RSM-10)
+    T2SpeedLimit,         \* Config::t2_speed_limit_mm_s (K26: the largest jog speed accepted)
     QueueCapacity,        \* Config::command_queue_limit (RSM-14)
     JogCommands           \* the JOG_START commands the operator may submit
 
@@ -77,6 +78,12 @@ ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
 ASSUME MaxStopCycles       \in Nat \ {0}
 ASSUME T1SpeedLimit        \in 1..T1MaxSpeed   \* ISO 10218-1 5.7.3: at most 250 mm/s
+\* Config::validate (page §9 "Configuration bounds"): every timer at most
+\* kMaxTimerCycles, the T1 limit at most ISO 10218-1's reduced speed.
+ASSUME DiscrepancyCycles   <= 2147483647
+ASSUME ArmingTimeoutCycles <= 2147483647
+ASSUME MaxStopCycles       <= 2147483647
+ASSUME T2SpeedLimit \in Nat /\ T1SpeedLimit < T2SpeedLimit /\ T2SpeedLimit <= 3000
 ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
 ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
                               speed_mm_s: Int]
@@ -484,6 +491,7 @@ Safety(m, in) ==
 (********** §6 One command from the queue: validation rows K01-K35 *********)
 (* `m` is the manager after §5; `c` the popped command; `in` the inputs.  *)
 ValidJog(c) == c.axis \in Axes /\ c.direction \in {-1, 1} /\ c.speed_mm_s > 0
+               /\ c.speed_mm_s <= T2SpeedLimit  \* issue 29 item 5: no jog request above T2's limit
 
 CommandRow(m, c, in) ==
     IF m.state = "ERROR_LOCKOUT" THEN "K01"                            \* RSM-04

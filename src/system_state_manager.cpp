@@ -33,7 +33,8 @@ SystemStateManager::SystemStateManager(const Config& config) noexcept
       estop_(config.discrepancy_cycles),
       safeguard_(config.discrepancy_cycles),
       enabling_(config.discrepancy_cycles),
-      selector_(config.discrepancy_cycles) {}
+      selector_(config.discrepancy_cycles),
+      fieldbus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit) {}
 
 SubmitResult SystemStateManager::submit(const Command& command) noexcept {
   // size() only shrinks under a concurrent consumer, so the limit check is conservative.
@@ -59,9 +60,11 @@ void SystemStateManager::derive_inputs(const ScanInputs& in) noexcept {
   d.selector = selector_.reading();
   d.speed = speed_.classify(in.q, in.qd);
   d.self_test_ok = in.self_test_ok;
-  d.servo_ready = in.servo_ready;
-  d.drive_fault = in.drive_fault;
-  d.fieldbus_ok = in.fieldbus_ok;
+  // §2: the drives' CiA 402 status words and the bus watchdog, decoded here.
+  drives_ = summarize_drives(in.bus.status_words);
+  d.servo_ready = drives_.servo_ready;
+  d.drive_fault = drives_.drive_fault;
+  d.fieldbus_ok = fieldbus_.update(in.bus.cycle_counter, in.bus.working_counter);
   d.operator_link_ok = in.operator_link_ok;
   // K39: PANIC on either channel latches; only RELEASED on both channels clears it.
   enable_release_required_ = enabling_.either(EnablePosition::Panic) ||

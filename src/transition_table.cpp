@@ -108,10 +108,11 @@ bool in_auto(const StepContext& c) noexcept {
   return c.in.selector == SelectorReading::Auto || session_mode(c.state) == OperatingMode::Auto;
 }
 
-// K26: axis ∉ 1..6 ∨ dir ∉ {-1, 1} ∨ speed ≤ 0.
+// K26: axis ∉ 1..6 ∨ dir ∉ {-1, 1} ∨ speed ≤ 0 ∨ speed > t2_speed_limit_mm_s.
 bool jog_arguments_invalid(const StepContext& c) noexcept {
   const Command& k = c.command;
-  return k.axis < 1 || k.axis > 6 || (k.direction != -1 && k.direction != 1) || k.speed_mm_s <= 0;
+  return k.axis < 1 || k.axis > 6 || (k.direction != -1 && k.direction != 1) || k.speed_mm_s <= 0 ||
+         k.speed_mm_s > c.config.t2_speed_limit_mm_s;
 }
 
 bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }

@@ -96,6 +96,7 @@ class SystemStateManagerAdapter(Adapter):
         "ArmingTimeoutCycles": "arming_timeout_cycles",
         "MaxStopCycles": "max_stop_cycles",
         "T1SpeedLimit": "t1_speed_limit_mm_s",
+        "T2SpeedLimit": "t2_speed_limit_mm_s",
         "QueueCapacity": "command_queue_limit",
     }
     rows_operator = "RowsFiredBy"
@@ -107,11 +108,18 @@ class SystemStateManagerAdapter(Adapter):
         self.cfg = self.config()
         self.queue_capacity = int(self.constants["QueueCapacity"])
         self.speeds = speed_vectors(core, self.cfg)
-        self.jog_probes = jog_probes(int(self.constants["T1SpeedLimit"]))
+        self.jog_probes = jog_probes(int(self.constants["T1SpeedLimit"]), int(self.constants["T2SpeedLimit"]))
         self._raw_cache: dict[Value, dict[str, Any]] = {}
         self.discrepancy_cycles = int(self.constants["DiscrepancyCycles"])
         self._combined_seen: set[tuple[Value, Value]] = set()
         self._hazard_seen: set[tuple[Value, Value]] = set()
+
+    def config(self) -> Any:
+        """The model's constants, and the tool stated as a tool-less flange (design §9: a
+        Config states its tool); the model abstracts the tool into `speed`."""
+        cfg = super().config()
+        cfg.tool_offset_m = (0.0, 0.0, 0.0)
+        return cfg
 
     # ------------------------------------------------------------ C++ calls
     def new_sut(self) -> Any:
@@ -350,17 +358,20 @@ class SystemStateManagerAdapter(Adapter):
                                       for d in (-1, 0, 1, 2)} - {0}))
 
 
-def jog_probes(t1_limit: int) -> list[tuple[str, dict[str, Value]]]:
+def jog_probes(t1_limit: int, t2_limit: int) -> list[tuple[str, dict[str, Value]]]:
     """JOG_START commands at each bound of K26's argument check (axis 1..6, direction
-    -1/1, speed > 0) and of the T1 clamp, beyond the cfg's JogCommands: the
-    input-complete pass submits each (queue empty) and then runs one cycle."""
+    -1/1, 0 < speed <= the T2 limit) and of the T1 clamp, beyond the cfg's JogCommands:
+    the input-complete pass submits each (queue empty) and then runs one cycle."""
     def jog(axis: int, direction: int, speed: int) -> dict[str, Value]:
         return {"kind": "JOG_START", "axis": axis, "direction": direction, "speed_mm_s": speed}
     return [("JOG_START speed 0", jog(1, 1, 0)), ("JOG_START speed 1 mm/s", jog(1, 1, 1)),
             ("JOG_START axis 0", jog(0, 1, 100)), ("JOG_START axis 6", jog(6, -1, 100)),
             ("JOG_START direction 0", jog(1, 0, 100)),
             ("JOG_START exactly at the T1 limit", jog(1, 1, t1_limit)),
-            ("JOG_START just above the T1 limit", jog(1, -1, t1_limit + 1))]
+            ("JOG_START just above the T1 limit", jog(1, -1, t1_limit + 1)),
+            ("JOG_START exactly at the T2 limit", jog(2, 1, t2_limit)),
+            ("JOG_START just above the T2 limit", jog(2, -1, t2_limit + 1)),
+            ("JOG_START at the largest int32", jog(1, 1, 2**31 - 1))]
 
 
 def tcp_speed_per_rad_s(dh: list[tuple[float, ...]], q: list[float], joint: int) -> float:

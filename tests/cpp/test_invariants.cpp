@@ -29,7 +29,7 @@ struct Step {
 
 /// A small configuration so that timeouts and discrepancy latches happen in short runs.
 Config walk_config() {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 8;
   c.arming_timeout_cycles = 25;
   c.max_stop_cycles = 120;
@@ -53,7 +53,7 @@ std::array<std::uint64_t, kStateCount> walk(const Config& config, std::uint32_t 
       Command c;
       if (plant.next_command(c)) (void)m->submit(c);
       const StatusRecord before = m->status();
-      const ScanInputs& in = plant.next(RandomPlant::at_rest(m->outputs()));
+      const ScanInputs& in = plant.next(m->fieldbus_watchdog(), RandomPlant::at_rest(m->outputs()));
       const ScanOutputs out = m->cycle(in);
       const StatusRecord after = m->status();
       check(Step{*m, in, before, after, out, m->derived_inputs()});

@@ -86,7 +86,7 @@ TEST(UCA_RSM_07_JogStop, MotionAfterTheJogStopReachedStandstillLocksOutAtOnce) {
 TEST(UCA_RSM_02_BrakeOrder, BrakesStayEngagedUntilTheDrivesReportReady) {
   Rig r;
   r.boot(SelectorReading::Auto);
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   ASSERT_EQ(r.command(Command::servo_on()), CommandResult::accepted());
   for (std::uint32_t i = 0; i < r.m.config().arming_timeout_cycles; ++i) {
     ASSERT_EQ(r.state(), StateId::Arming);
@@ -95,7 +95,7 @@ TEST(UCA_RSM_02_BrakeOrder, BrakesStayEngagedUntilTheDrivesReportReady) {
     EXPECT_FALSE(r.out.brake_release) << "cycle " << i;
     r.cycle();
   }
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();
   EXPECT_EQ(r.state(), StateId::AutoIdle);
   EXPECT_TRUE(r.out.brake_release);
@@ -106,7 +106,7 @@ TEST(UCA_RSM_02_BrakeOrder, BrakesStayEngagedUntilTheDrivesReportReady) {
 TEST(UCA_RSM_02_BrakeOrder, AStopTriggerInArmingRemovesPowerWithoutReleasingTheBrakes) {
   Rig r;
   r.boot(SelectorReading::Auto);
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   ASSERT_EQ(r.command(Command::servo_on()), CommandResult::accepted());
   r.in.safeguard_closed = {true, false};
   r.cycle();
@@ -137,11 +137,11 @@ TEST(UCA_RSM_03_ServoReadyLost, InEveryStateWithTheBrakesReleasedLocksOutInTheSa
     Rig r;
     setup(r);
     ASSERT_TRUE(r.out.brake_release) << name;
-    r.in.servo_ready = false;
+    r.plant.servo_ready = false;
     r.cycle();
     expect_unpowered(r.out);
     EXPECT_EQ(r.st().fault_code, FaultCode::ServoReadyLost) << name;
-    r.in.servo_ready = true;
+    r.plant.servo_ready = true;
     EXPECT_EQ(r.command(Command::reset()), CommandResult::rejected(RejectReason::LockedOut)) << name;
   }
 }
@@ -198,12 +198,12 @@ TEST(UCA_RSM_06_SimultaneousEvents, EstopWithADriveFaultKeepsTheLockout) {
   Rig r;
   r.to_auto_running();
   r.in.estop_closed = {false, false};
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   expect_unpowered(r.out);
   EXPECT_EQ(r.st().fault_code, FaultCode::DriveFault);
   r.in.estop_closed = {true, true};
-  r.in.drive_fault = false;
+  r.plant.drive_fault = false;
   r.cycles(3);
   EXPECT_EQ(r.command(Command::reset()), CommandResult::rejected(RejectReason::LockedOut));
   EXPECT_EQ(r.state(), StateId::ErrorLockout);
@@ -227,7 +227,7 @@ TEST(UCA_RSM_06_SimultaneousEvents, EstopWithServoReadyLostKeepsTheLockout) {
   Rig r;
   r.to_operational(SelectorReading::Auto);
   r.in.estop_closed = {false, false};
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   r.cycle();
   expect_unpowered(r.out);
   EXPECT_EQ(r.st().fault_code, FaultCode::ServoReadyLost);
