@@ -119,7 +119,7 @@ class SafetyServiceAdapter(Adapter):
 
     def __init__(self, core: ModuleType, stepper: ModelStepper) -> None:
         super().__init__(core, stepper)
-        self._encoded: dict[Any, list[bytes]] = {}
+        self._encoded: dict[Any, list[tuple[bytes, str, bool]]] = {}
         self._alphabet: list[Probe] = []
         other = struct.pack("<IB", OTHER_HOLDER, 255)
         # The other messages that carry the same control event (design §5).
