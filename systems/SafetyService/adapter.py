@@ -209,11 +209,13 @@ class SafetyServiceAdapter(Adapter):
             at = valid.index(control[0])
             for label, d in self._control_alternatives.get(str(rec["control"]), ()):
                 probes.append(Probe(event, valid[:at] + [(d, "SUBSYSTEM", True)] + valid[at + 1:], f"{name}: {label}"))
-        # An earlier message of each kind that the last one overrides, every message
-        # twice, and Report Subsystem State(EMERGENCY): <= 11 datagrams.
-        first = [d for k in ("estop", "health", "control") for d in SUPERSEDED[k].get(str(rec[k]), ())]
-        probes.append(Probe(event, first + valid + valid + list(INERT.values()),
-                            f"{name}: superseded messages first, every message twice, Report Subsystem State"))
+        # An earlier message of each kind that the last one overrides (from its own peer),
+        # then every message twice: <= 11 datagrams.  Report Subsystem State is one of the
+        # model's inputs (`subsys`), so it is not added here as if it changed nothing.
+        first = [(d, "CLIENT" if k == "estop" else "SUBSYSTEM", True)
+                 for k in ("estop", "health", "control") for d in SUPERSEDED[k].get(str(rec[k]), ())]
+        probes.append(Probe(event, first + valid + valid,
+                            f"{name}: superseded messages first, every message twice"))
         # One datagram of every reject reason and the outgoing types around the valid ones.
         probes.append(Probe(event, list(GARBAGE.values())[:4] + valid + list(GARBAGE.values())[4:] + OUTGOING,
                             f"{name}: every reject reason and outgoing message types"))
