@@ -90,7 +90,16 @@ def _start(*args: str, env_extra: dict[str, str] | None = None, new_session: boo
     env["PYTHONPATH"] = str(PYTHON_DIR) + os.pathsep + env.get("PYTHONPATH", "")
     env.update(env_extra or {})
     return subprocess.Popen([sys.executable, "-m", "safestate.cli", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env, start_new_session=new_session)
+                            stderr=subprocess.PIPE, text=True, env=env, start_new_session=new_session,
+                            preexec_fn=_as_from_a_terminal)
+
+
+def _as_from_a_terminal() -> None:
+    """The child starts as a foreground job does: SIGINT at its default, unblocked. A
+    process started with SIGINT ignored keeps ignoring Ctrl-C (Python installs no
+    handler), and a pytest worker may have inherited it ignored or blocked."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})
 
 
 def _wait_for(p: subprocess.Popen, text: str) -> list[str]:
