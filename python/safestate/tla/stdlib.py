@@ -19,7 +19,7 @@ from .tlcget import tlc_get, tlc_set
 from .values import (
     INT, NAT, FilteredSet, check_same_kind_sets, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, finite_subseteq, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
-    tlc_equals, tlc_key,
+    tlc_equals, tlc_fn_items,
 )
 
 
@@ -299,11 +299,6 @@ def fn_items(f: Value, which: str = "first") -> dict:
 _PLAIN_KEYS = (int, str)
 
 
-def _tlc_items(d: dict) -> list:
-    """A function's (key, value) pairs in TLC's order of its domain."""
-    return sorted(d.items(), key=lambda kv: tlc_key(kv[0]))
-
-
 def merge_fn(f: Value, g: Value) -> Value:
     """TLC's CombineFcn: f's keys, then each key of g that equals none of them, looked
     up with TLC's ``equals`` (an error for keys of incomparable kinds: ``(TRUE :> 1) @@
@@ -314,9 +309,9 @@ def merge_fn(f: Value, g: Value) -> Value:
         d = dict(d2)
         d.update(d1)
         return make_fn(d)
-    keys1 = [k for k, _ in _tlc_items(d1)]
+    keys1 = [k for k, _ in tlc_fn_items(f)]
     d = dict(d1)
-    for k2, v2 in _tlc_items(d2):
+    for k2, v2 in tlc_fn_items(g):
         if not any(tlc_equals(k2, k1) for k1 in keys1):
             d[k2] = v2
     return make_fn(d)

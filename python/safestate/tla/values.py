@@ -774,7 +774,7 @@ def _compare_error(a: Value, b: Value) -> EvalError:
     return EvalError(f"Attempted to compare the set {fmt(a)} with the value:\n{fmt(b)}")
 
 
-def _fn_items(f: Value) -> list:
+def tlc_fn_items(f: Value) -> list:
     """A function's (key, value) pairs in TLC's order of its domain."""
     if type(f) is tuple:
         return list(zip(range(1, len(f) + 1), f))
@@ -805,7 +805,7 @@ def tlc_equals(a: Value, b: Value) -> bool:
         return len(a) == len(b) and all(tlc_equals(x, y) for x, y in zip(a, b))
     if _record_against_non_record(a, b):
         raise EvalError(f"Attempted to check equality of record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
-    ia, ib = _fn_items(a), _fn_items(b)
+    ia, ib = tlc_fn_items(a), tlc_fn_items(b)
     if len(ia) != len(ib):
         return False
     if ta is FnValue and tb is FnValue and all(type(k) is str for k, _ in ia):
@@ -1044,7 +1044,7 @@ def _tlc_compare(a: Value, b: Value) -> int:
     if ka == "function":
         if _record_against_non_record(a, b):  # RecordValue.compareTo, whatever the sizes
             raise EvalError(f"Attempted to compare record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
-        ia, ib = _fn_items(a), _fn_items(b)
+        ia, ib = tlc_fn_items(a), tlc_fn_items(b)
         if len(ia) != len(ib):
             return len(ia) - len(ib)
         for (x, _), (y, _) in zip(ia, ib):
