@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "safestate/config.hpp"
 #include "safestate/enable_position.hpp"
 #include "safestate/jog_setpoint.hpp"
 #include "safestate/scan_inputs.hpp"
@@ -17,6 +18,13 @@
 #include "safestate/state_id.hpp"
 
 namespace safestate::sim {
+
+/// The simulated demo cell's parameters: the design-page defaults, no tool on the flange.
+[[nodiscard]] inline Config demo_cell_config() noexcept {
+  Config c;
+  c.tool_offset_m = kFlangeTcp;
+  return c;
+}
 
 class CellPlant {
  public:
