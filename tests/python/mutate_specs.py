@@ -14,3 +14,36 @@ Next == \E i \in {0, 1} :
 TypeOK == inp \in 0..1 /\ h \in 0..1 /\ note \in {"a", "b"}
 ====
 """
+
+# Reachability witnesses (mutate/witness.py): Witness_Alarm is reached by input 2 only;
+# Witness_Never is never reached by the original (reported, not used).  Safe pins
+# `alarm` to input 2 one way only, so a mutant that never raises the alarm passes it.
+WITNESSED = r"""---- MODULE Witnessed ----
+EXTENDS Naturals
+VARIABLES inp, alarm
+Init == inp = 0 /\ alarm = FALSE
+Next == \E i \in {0, 1, 2} :
+    /\ inp' = i
+    /\ alarm' = (i = 2)
+TypeOK == inp \in 0..2 /\ alarm \in BOOLEAN
+Safe == alarm => inp = 2
+Witness_Alarm == ~alarm
+Witness_Never == inp # 7
+====
+"""
+
+# Witness_Hot reads Hot, which the behaviour uses too: a mutant of Hot must not change
+# what the witness asks (input 2 read), only what the model does with it.
+WITNESS_READS_BEHAVIOUR = r"""---- MODULE HotWitness ----
+EXTENDS Naturals
+VARIABLES inp, alarm
+Hot(i) == i = 2
+Init == inp = 0 /\ alarm = FALSE
+Next == \E i \in {0, 1, 2} :
+    /\ inp' = i
+    /\ alarm' = Hot(i)
+TypeOK == inp \in 0..2 /\ alarm \in BOOLEAN
+Safe == alarm => inp = 2
+Witness_Hot == ~Hot(inp)
+====
+"""

@@ -51,6 +51,7 @@ class LabelledGraph:
     _cval: dict[int, int] = field(default_factory=dict)
     _clab: dict[int, tuple[int, int]] = field(default_factory=dict)
     _sig: dict[int, tuple[dict[int, list[int]], dict[int, int], bool]] = field(default_factory=dict)
+    run: Any = None     # the NativeRun whose engine holds the stored states (witness.py)
 
     def share(self, other: "LabelledGraph") -> None:
         """Canonical label numbers comparable with `other`'s (one table for both)."""
@@ -125,7 +126,7 @@ def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None
     if result.result != "success":
         return result, None, ""
     src, dst, val = (array("I", b) for b in eng.labels_bytes())
-    g = LabelledGraph(run.bridge, len(proj.inputs))
+    g = LabelledGraph(run.bridge, len(proj.inputs), run=run)
     n = result.distinct_states
     k = 0
     while k < len(src) and src[k] == NO_SOURCE:
