@@ -47,3 +47,25 @@ Safe == alarm => inp = 2
 Witness_Hot == ~Hot(inp)
 ====
 """
+
+# Poke keeps the inputs, and the VIEW leaves out `free`: a stored state of class
+# <<1, FALSE, 1>> is the original's (1, 1, FALSE, 1) but the mutant's (seen never set)
+# (1, 0, FALSE, 1), first reached by another input -- their Poke steps carry different
+# `free` values, though after any one input trace both sides hold the same (graph.py,
+# "Carried values under a VIEW").
+CARRIED = r"""---- MODULE Carried ----
+EXTENDS Naturals
+VARIABLES inp, free, seen, out
+View == <<inp, seen, out>>
+Init == inp = 0 /\ free = 0 /\ seen = FALSE /\ out = 0
+Tick == \E i \in {0, 1}, f \in {0, 1} :
+    /\ inp' = i
+    /\ free' = f
+    /\ seen' = (seen \/ f = 0)
+    /\ out' = i
+Poke == /\ UNCHANGED <<inp, free, seen>>
+        /\ out' = 2
+Next == Tick \/ Poke
+TypeOK == inp \in 0..1 /\ free \in 0..1 /\ seen \in BOOLEAN /\ out \in 0..2
+====
+"""
