@@ -131,14 +131,33 @@ class Store {
   uint32_t mk_str(Kind k, const std::string& s, int64_t rank) {
     std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
     if (concurrent) lock.lock();
-    auto key = std::make_pair(int(k), s);
-    auto it = strings_.find(key);
+    auto it = strings_.find(std::make_pair(int(k), s));
     if (it != strings_.end()) return it->second;
-    uint32_t id = uint32_t(vals.size());
-    names.push_back(s);
-    vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s)), nullptr});
-    strings_[key] = id;
+    return add_str(k, s, rank);
+  }
+  // The ranks of the strings the spec's modules name (Python's string_rank), for a
+  // string made while checking: TLC interns every string of the spec when it parses it,
+  // a string made later (ToString) when it is made, so it ranks after them all, in the
+  // order made.
+  std::unordered_map<std::string, int64_t> known_ranks;
+  std::vector<uint32_t> made_strings;  // in the order made
+  static constexpr int64_t kMadeRank = int64_t(1) << 40;
+  uint32_t made_str(const std::string& s) {
+    std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
+    if (concurrent) lock.lock();
+    auto it = strings_.find(std::make_pair(int(K_STR), s));
+    if (it != strings_.end()) return it->second;
+    auto known = known_ranks.find(s);
+    int64_t rank = known != known_ranks.end() ? known->second : kMadeRank + int64_t(made_strings.size());
+    uint32_t id = add_str(K_STR, s, rank);
+    made_strings.push_back(id);
     return id;
+  }
+  // A string's or model value's text (names may grow in another thread meanwhile).
+  std::string name_of(uint32_t id) {
+    std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
+    if (concurrent) lock.lock();
+    return names[vals[id].off];
   }
 
   // Interns a sequence, function (keys then values) or set whose items are canonical.
@@ -366,6 +385,13 @@ class Store {
   std::vector<uint32_t> table_;
   size_t count_ = 0;
   std::map<std::pair<int, std::string>, uint32_t> strings_;
+  uint32_t add_str(Kind k, const std::string& s, int64_t rank) {  // under the lock
+    uint32_t id = uint32_t(vals.size());
+    names.push_back(s);
+    vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s)), nullptr});
+    strings_[std::make_pair(int(k), s)] = id;
+    return id;
+  }
 
   void grow() {
     std::vector<uint32_t> old(table_.size() * 2, kUnset);
@@ -469,6 +495,8 @@ enum Op : int {
   // an operator call whose body reads only its parameters (no state, no outer binder):
   // its value is remembered per argument values
   BIND_MEMO,
+  // TLC's ToString: the value as TLC prints it
+  TOSTRING,
   OP_COUNT
 };
 
@@ -1096,6 +1124,11 @@ class Engine {
         }
         return st.mk_seq(out);
       }
+      case TOSTRING: {
+        std::string out;
+        print(eval(n->kids[0], c), out);
+        return st.made_str(out);
+      }
       case RECSET: {
         // [a : S, b : T] as a finite set of records (ints: the field names).
         size_t nf = n->ints.size();
@@ -1116,6 +1149,51 @@ class Engine {
       }
       default: fail("not an expression", n->loc);
     }
+  }
+
+  // A value as TLC prints it (values.fmt): a function of strings as a record, another
+  // function as (k :> v @@ ...); a set's elements and a function's keys are in TLC's
+  // order already.
+  void print(uint32_t v, std::string& out) {
+    Kind k = st.kind(v);
+    switch (k) {
+      case K_BOOL: out += v == kTrue ? "TRUE" : "FALSE"; return;
+      case K_INT: out += std::to_string(Store::int_of(v)); return;
+      case K_MV: out += st.name_of(v); return;
+      case K_STR:
+        out += '"';
+        for (char ch : st.name_of(v)) {
+          if (ch == '\\') out += "\\\\";
+          else if (ch == '"') out += "\\\"";
+          else if (ch == '\n') out += "\\n";
+          else out += ch;
+        }
+        out += '"';
+        return;
+      default: break;
+    }
+    uint32_t n = st.len(v);
+    const uint32_t* it = st.items(v);
+    if (k == K_FUN) {
+      bool record = true;
+      for (uint32_t i = 0; i < n && record; ++i) record = st.kind(it[i]) == K_STR;
+      out += record ? "[" : "(";
+      for (uint32_t i = 0; i < n; ++i) {
+        if (i) out += record ? ", " : " @@ ";
+        if (record) out += st.name_of(it[i]);
+        else print(it[i], out);
+        out += record ? " |-> " : " :> ";
+        print(it[n + i], out);
+      }
+      out += record ? "]" : ")";
+      return;
+    }
+    out += k == K_SEQ ? "<<" : "{";
+    for (uint32_t i = 0; i < n; ++i) {
+      if (i) out += ", ";
+      print(it[i], out);
+    }
+    out += k == K_SEQ ? ">>" : "}";
   }
 
   // ------------------------------------------------------------ actions
@@ -1266,7 +1344,7 @@ class Engine {
 
   // ------------------------------------------------------------ folding constants
   void fold(Node* n) {
-    if (n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) return;
+    if ((n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) && n->op != TOSTRING) return;
     if (n->kids.empty() && n->op != SETENUM && n->op != TUPLE && n->op != RECLIT) return;
     for (Node* k : n->kids)
       if (k->op != CONST) return;
@@ -1840,6 +1918,7 @@ PYBIND11_MODULE(_tla_native, m) {
   m.attr("OP_A_BIND") = int(A_BIND);
   m.attr("OP_SELECTSEQ") = int(SELECTSEQ);
   m.attr("OP_BIND_MEMO") = int(BIND_MEMO);
+  m.attr("OP_TOSTRING") = int(TOSTRING);
   // An evaluation error of Engine.step / Engine.evaluate (the Python evaluator reports it).
   py::register_exception<Engine::StepError>(m, "StepError");
   py::class_<Engine>(m, "Engine")
@@ -1870,6 +1949,15 @@ PYBIND11_MODULE(_tla_native, m) {
              }
            })
       .def("describe", &Engine::describe)
+      .def("set_known_ranks",
+           [](Engine& e, const std::unordered_map<std::string, int64_t>& r) { e.st.known_ranks = r; })
+      // The strings made while checking, in the order made (their ranks follow it).
+      .def("made_strings",
+           [](Engine& e) {
+             std::vector<std::string> out;
+             for (uint32_t id : e.st.made_strings) out.push_back(e.st.names[e.st.vals[id].off]);
+             return out;
+           })
       .def("set_slots", [](Engine& e, size_t n) { e.slots.assign(n, kUnset); })
       .def("build", [](Engine& e, py::handle node) { return reinterpret_cast<uintptr_t>(e.build(node)); })
       .def("configure",

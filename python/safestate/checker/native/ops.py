@@ -90,8 +90,10 @@ class Op(IntEnum):
     CHOOSE = 78
     SELECTSEQ = 79
     BIND_MEMO = 80
+    TOSTRING = 81
 
 
 assert (core.OP_COUNT, core.OP_IN_SD, core.OP_SD_STRING, core.OP_A_BIND, core.OP_SELECTSEQ,
-        core.OP_BIND_MEMO) == (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ, Op.BIND_MEMO), \
+        core.OP_BIND_MEMO, core.OP_TOSTRING) == (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ,
+                                                 Op.BIND_MEMO, Op.TOSTRING), \
     "checker/native/ops.py is out of step with the C++ core"

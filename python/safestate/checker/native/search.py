@@ -17,11 +17,13 @@ from typing import Callable
 from ...tla import ast as A
 from ...tla.errors import TlaError, UnsupportedError
 from ...tla.tlcget import RUNTIME
+from ...tla.values import register_token_order
 from ..explore import CheckResult, Step, default_memory_limit_mb, step_params
 from ..model import Model
 from .ops import Op
+from .printing import lazily_printed
 from .translate import TEnv, Translator, unsupported
-from .values import NOT_NATIVE, ValueBridge
+from .values import NOT_NATIVE, ValueBridge, known_string_ranks
 
 
 class NativeRun:
@@ -61,6 +63,11 @@ class NativeRun:
         self.nslots = tr.nslots
         self.leaf_params = tr.leaf_params  # per leaf: (name, slot) of its parameters
         self.translator = tr  # more trees for the same engine (conform/native_step.py)
+        lazy = lazily_printed(tr.const_flags, len(model.variables),
+                              [init, next_, *self.invariants, *self.constraints, *self.action_constraints, self.view])
+        if lazy:
+            raise unsupported("ToString of a value that may be or hold a set TLC prints as a rule (1..3, [a : S])",
+                              tr.locs[lazy[0][1]])
 
 
 def _refuse_model(model: Model) -> None:
@@ -110,12 +117,14 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
                      f"{left} states left on queue.")
     if progress is not None:
         progress("Computing initial states...")
+    eng.set_known_ranks(known_string_ranks())
     if run.view is not None:
         eng.set_view(run.view)
     eng.configure(run.init, run.next, run.invariants, run.constraints, run.action_constraints,
                   model.check_deadlock, limit, report)
     cpu_start = time.process_time()
     eng.run()
+    register_token_order(eng.made_strings())  # ranked as the core ranked them, after the spec's
     result = _result(run, limit)
     if result is not None:
         result.seconds = time.monotonic() - start

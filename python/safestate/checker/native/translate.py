@@ -23,6 +23,7 @@ from ...tla.modules import BuiltinSym, ConstSym, DefSym, Scope, VarSym
 from ...tla.values import BOOLEAN, string_rank
 from ..model import Model
 from .ops import Op
+from .printing import value_flags
 from .values import NOT_NATIVE, ValueBridge
 
 # Ops that iterate over a set: an operator call whose body has one is worth remembering.
@@ -130,6 +131,8 @@ class Translator:
         self._depth = 0
         self._free: dict[int, tuple[Node, frozenset[int]]] = {}
         self._iterates: dict[int, tuple[Node, bool]] = {}
+        self.const_flags: dict[int, int] = {}  # printing.value_flags of the constants that have some
+        self._keep: list[Node] = []
 
     # ---------------------------------------------------------------- nodes
     def node(self, op: Op, loc: Loc, ints: Iterable[int] = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
@@ -141,7 +144,12 @@ class Translator:
         return (int(op), li, tuple(int(i) for i in ints), v, tuple(kids), k)
 
     def const(self, value: Any, loc: Loc) -> Node:
-        return self.node(Op.CONST, loc, v=self.bridge.to_native(value, loc))
+        n = self.node(Op.CONST, loc, v=self.bridge.to_native(value, loc))
+        flags = value_flags(value)
+        if flags:
+            self.const_flags[id(n)] = flags
+            self._keep.append(n)  # its id stays its own
+        return n
 
     def alloc(self) -> int:
         self.nslots += 1
@@ -371,6 +379,8 @@ class Translator:
         if b.name == "SelectSeq" and b.module == "Sequences" and len(args) == 2:
             slot = self.alloc()
             return self.node(Op.SELECTSEQ, loc, (slot,), kids=(self.expr(args[0], env), self.test_body(args[1], slot, env)))
+        if b.name == "ToString" and b.module == "TLC" and len(args) == 1:
+            return self.node(Op.TOSTRING, loc, kids=(self.expr(args[0], env),))
         spec = _BUILTIN_APPLY.get(b.name)
         if spec is None or b.module not in _NATIVE_MODULES or b.refused:
             raise unsupported(f"the operator {b.name} as a value", loc)
