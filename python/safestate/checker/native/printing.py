@@ -76,6 +76,8 @@ class _Analysis:
                 self.slot_sources += [(s, k, True) for s, k in zip(ints, sets)]
             elif op in _VALUE_BINDERS:
                 self.slot_sources += [(s, k, False) for s, k in zip(ints, kids)]
+            elif op == Op.A_FORALL:
+                self.slot_sources += [(s, k, True) for s, k in zip(ints[3:], kids)]
             elif op == Op.EXCEPT:
                 self.slot_sources.append((ints[0], kids[0], True))  # @: a value inside the base
             elif op in (Op.A_ASSIGN, Op.A_ASSIGN_IN):
@@ -124,7 +126,7 @@ class _Analysis:
             return INNER if any(self.flags(k) for k in kids) else 0
         if op == Op.RANGE:
             return SELF
-        if op in (Op.DOMAIN, Op.RECSET):
+        if op in (Op.DOMAIN, Op.RECSET, Op.POWERSET, Op.PRODUCT, Op.FNSET):
             return SELF | (INNER if any(self.flags(k) & INNER for k in kids) else 0)
         if op in (Op.CUP, Op.SETFILTER, Op.IF, Op.CASE):
             # \cup may be one operand itself ({} \cup 1..2 is 1..2); a filter conservatively
