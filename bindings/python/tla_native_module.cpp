@@ -1613,7 +1613,15 @@ class Engine {
     return rss * 4096 / (1024 * 1024);
   }
   std::chrono::steady_clock::time_point last_progress = std::chrono::steady_clock::now();
+  // Ctrl-C, SIGTERM: the search runs without the GIL, so Python's handlers run only
+  // here; the exception they raise (KeyboardInterrupt, the CLI's Terminated) leaves
+  // run() as it is, with the counts so far readable.
+  void poll_signals() {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
   void periodic() {
+    poll_signals();
     if (max_memory_mb && rss_mb() > max_memory_mb) {
       result = "memory";
       throw Stop{};
@@ -1730,6 +1738,7 @@ class Engine {
           std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
           Ctx nc{cur.data(), t.data(), nullptr};
           before = generated;
+          if ((head & 255) == 0) poll_signals();
           exec(next, nc);
           if (generated == before && check_deadlock) {
             result = "deadlock failure";

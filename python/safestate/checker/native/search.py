@@ -12,13 +12,13 @@ the model again with the Python engine, which reports TLC's exact error.
 from __future__ import annotations
 
 import time
-from typing import Callable
+from typing import Any, Callable, cast
 
 from ...tla import ast as A
 from ...tla.errors import TlaError, UnsupportedError
 from ...tla.tlcget import RUNTIME
 from ...tla.values import register_token_order
-from ..explore import CheckResult, Step, default_memory_limit_mb, step_params
+from ..explore import RUNNING, CheckResult, Explorer, Step, default_memory_limit_mb, step_params
 from ..model import Model
 from .ops import Op
 from .printing import lazily_printed
@@ -123,6 +123,7 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
     eng.configure(run.init, run.next, run.invariants, run.constraints, run.action_constraints,
                   model.check_deadlock, limit, report)
     cpu_start = time.process_time()
+    RUNNING[:] = [cast(Explorer, _SoFar(eng))]  # Ctrl-C during eng.run(): the CLI reports these counts
     eng.run()
     register_token_order(eng.made_strings())  # ranked as the core ranked them, after the spec's
     result = _result(run, limit)
@@ -132,6 +133,31 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
             result.parallel = _cpu_report(workers, list(eng.worker_cpu), eng.critical_cpu,
                                           time.process_time() - cpu_start)
     return result, eng.error
+
+
+class _SoFar:
+    """The core's counts while it searches, as `explore.counts_so_far` reads an Explorer's."""
+
+    states: tuple = ()
+
+    def __init__(self, eng: Any) -> None:
+        self.eng = eng
+
+    @property
+    def distinct_so_far(self) -> int:
+        return int(self.eng.distinct)
+
+    @property
+    def generated(self) -> int:
+        return int(self.eng.generated)
+
+    @property
+    def max_level(self) -> int:
+        return int(self.eng.depth)
+
+    @property
+    def head(self) -> int:
+        return int(self.eng.head)
 
 
 def _cpu_report(workers: int, worker_cpu: list[float], critical_cpu: float, run_cpu: float) -> dict:
