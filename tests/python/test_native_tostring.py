@@ -82,3 +82,19 @@ def test_tostring_of_a_set_tlc_prints_as_a_rule_is_refused_with_its_position(
     assert auto.returncode == python.returncode == 0
     assert "using the Python engine" in auto.stderr and len(auto.stderr.strip().splitlines()) == 1
     assert json.loads(auto.stdout)["distinct_states"] == json.loads(python.stdout)["distinct_states"]
+
+
+def test_a_trace_prints_a_range_held_in_a_state_as_tlc_does(tmp_path: Path) -> None:
+    # The core holds 1..n by its elements; the trace shows TLC's 1..n, as the Python engine's.
+    tla = write_spec(tmp_path, "Ranges", "EXTENDS Naturals\nVARIABLES n, r, d\n"
+                     "Init == n = 1 /\\ r = 1..1 /\\ d = {}\n"
+                     "Next == n < 4 /\\ n' = n + 1 /\\ r' = 1..n' /\\ d' = DOMAIN <<n, n>> \\cup {}\n"
+                     "Inv == n < 3\n", "INIT Init\nNEXT Next\nINVARIANT Inv\n")
+    r = assert_engines_agree(tla)
+    assert r.trace is not None and len(r.trace) == 3
+    native = run_safestate("check", tla, "--engine", "native")
+    python = run_safestate("check", tla, "--engine", "python")
+    assert native.returncode == python.returncode == 12
+    assert "/\\ r = 1..3" in native.stdout and "/\\ d = {1, 2}" in native.stdout  # TLC prints both so
+    strip = lambda out: [x for x in out.splitlines() if not x.startswith("Finished")]  # noqa: E731
+    assert strip(native.stdout) == strip(python.stdout)

@@ -150,12 +150,11 @@ def _union(fs: Iterable[int]) -> int:
     return out
 
 
-def lazily_printed(const_flags: dict[int, int], nvars: int, roots: Iterable[Node | None]) -> list[Node]:
+def lazily_printed(const_flags: dict[int, int], nvars: int, roots: Iterable[Node | None]) -> tuple[list[Node], bool]:
     """The ToString nodes under `roots` whose argument may be, or hold, a set TLC prints
-    as a rule (``1..3``, ``[a : S]``)."""
+    as a rule (``1..3``, ``[a : S]``), and whether a variable may hold one (then a
+    trace's states are printed from the Python engine's values, `search._trace`)."""
     a = _Analysis(const_flags, nvars)
     a.collect(roots)
-    if not a.to_string:
-        return []
     a.solve()
-    return [n for n in a.to_string if a.flags(n[4][0])]
+    return [n for n in a.to_string if a.flags(n[4][0])], any(a.var)

@@ -17,7 +17,7 @@ from typing import Any, Callable, cast
 from ...tla import ast as A
 from ...tla.errors import TlaError, UnsupportedError
 from ...tla.tlcget import RUNTIME
-from ...tla.values import register_token_order
+from ...tla.values import exact_key, register_token_order
 from ..explore import RUNNING, CheckResult, Explorer, Step, default_memory_limit_mb, step_params
 from ..model import Model
 from .ops import Op
@@ -63,8 +63,9 @@ class NativeRun:
         self.nslots = tr.nslots
         self.leaf_params = tr.leaf_params  # per leaf: (name, slot) of its parameters
         self.translator = tr  # more trees for the same engine (conform/native_step.py)
-        lazy = lazily_printed(tr.const_flags, len(model.variables),
-                              [init, next_, *self.invariants, *self.constraints, *self.action_constraints, self.view])
+        lazy, self.rule_sets = lazily_printed(
+            tr.const_flags, len(model.variables),
+            [init, next_, *self.invariants, *self.constraints, *self.action_constraints, self.view])
         if lazy:
             raise unsupported("ToString of a value that may be or hold a set TLC prints as a rule (1..3, [a : S])",
                               tr.locs[lazy[0][1]])
@@ -189,14 +190,20 @@ def _result(run: NativeRun, limit_mb: int) -> CheckResult | None:
         if eng.trace_to >= 0:
             return CheckResult("safety failure", n, gen, depth, n, name, _trace(run, eng.trace_to),
                                initial_violation=True)
-        return CheckResult("safety failure", n, gen, 1, n, name, [Step(run.bridge.state(eng.extra), "Init", {})],
-                           initial_violation=True)
+        first = run.bridge.state(eng.extra)
+        if run.rule_sets:
+            first = _python_step(m, None, -1, first)[0]
+        return CheckResult("safety failure", n, gen, 1, n, name, [Step(first, "Init", {})], initial_violation=True)
     if not eng.extra:
         return CheckResult("safety failure", n, gen, depth, n - head - 2, name, _trace(run, eng.trace_to))
     trace = _trace(run, eng.trace_to)
     st = run.bridge.state(eng.extra)
     leaf = eng.extra_leaf
-    trace.append(Step(st, m.leaves[leaf].name, step_params(m, trace[-1].state, leaf, st)))
+    if run.rule_sets:
+        st, params = _python_step(m, trace[-1].state, leaf, st)
+    else:
+        params = step_params(m, trace[-1].state, leaf, st)
+    trace.append(Step(st, m.leaves[leaf].name, params))
     return CheckResult("safety failure", n, gen, depth, n - head - 1, name, trace)
 
 
@@ -208,8 +215,45 @@ def _trace(run: NativeRun, idx: int) -> list[Step]:
         idx = eng.parent(idx)
     path.reverse()
     states = [run.bridge.state(eng.state(i)) for i in path]
+    if run.rule_sets:
+        return _python_trace(m, states, [eng.leaf(i) for i in path[1:]])
     steps = [Step(states[0], "Init", {})]
     for a, b, i in zip(states, states[1:], path[1:]):
         leaf = eng.leaf(i)
         steps.append(Step(b, m.leaves[leaf].name, step_params(m, a, leaf, b)))
     return steps
+
+
+class _Found(Exception):
+    pass
+
+
+def _python_trace(m: Model, states: list[tuple], leaves: list[int]) -> list[Step]:
+    """The trace with each state as the Python engine holds it: the core keeps ``1..3``
+    as its elements, TLC (and the Python engine) print it as ``1..3``."""
+    steps = [Step(_python_step(m, None, -1, states[0])[0], "Init", {})]
+    for want, leaf in zip(states[1:], leaves):
+        st, params = _python_step(m, steps[-1].state, leaf, want)
+        steps.append(Step(st, m.leaves[leaf].name, params))
+    return steps
+
+
+def _python_step(m: Model, prev: tuple | None, leaf: int, want: tuple) -> tuple[tuple, dict]:
+    """`want` as the Python engine holds it, found again among its initial states (prev
+    None) or the successors of `prev` by action `leaf` (by TLA+ equality: TRUE is not
+    1), with the step's parameters."""
+    key = exact_key(want)
+    got: list[tuple[tuple, dict]] = []
+
+    def match(st: tuple, lf: int, L: list) -> None:
+        if (prev is None or lf == leaf) and st == want and exact_key(st) == key:
+            got.append((st, m.leaf_params(lf, L) if prev is not None else {}))
+            raise _Found()
+    try:
+        if prev is None:
+            m.run_init(match)
+        else:
+            m.run_next(prev, match)
+    except _Found:
+        return got[0]
+    return want, {}
