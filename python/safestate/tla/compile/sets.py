@@ -14,7 +14,7 @@ from ..modules import BuiltinSym, DefSym
 from ..specialise import membership_const
 from ..stdlib import non_integer_error
 from ..values import (FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as_set, check_set_kinds, interval_member,
-                      is_set, member)
+                      is_set, member, tlc_equals)
 from .binders import _enum_checked, _assign, _comprehension
 from .closures import Value, check_bool, _guard
 from .host import CompilerHost
@@ -74,6 +74,24 @@ class SetsMixin(CompilerHost):
             return _kinds_checked([c(s, t, L) for c in codes], loc)
         return setenum
 
+    def _in_enumeration(self, e: A.SetEnum, env: Env) -> Callable[[Any, Any, list, Value], bool]:
+        """``v \\in {e1, ..., en}`` as TLC decides it: a set enumeration is not yet
+        normalised, so its membership is a scan in the written order with each element's
+        ``equals(v)`` (ValueVec.search): elements of other kinds than `v` are an error
+        only where the scan reaches them, and none at all once an element equals `v`."""
+        codes = [self.expr(x, env) for x in e.elems]
+        loc = e.loc
+
+        def in_enum(s: Any, t: Any, L: list, v: Value) -> bool:
+            try:
+                for c in codes:
+                    if tlc_equals(c(s, t, L), v):
+                        return True
+            except EvalError as err:
+                raise err.with_loc(loc) from None
+            return False
+        return in_enum
+
     def c_SetFilter(self, e: A.SetFilter, env: Env) -> Code:
         inner, binds = self.bind_bounds([e.bound], env)
         pred = self.expr(e.pred, inner)
@@ -119,6 +137,9 @@ class SetsMixin(CompilerHost):
     def membership(self, set_expr: A.Expr, env: Env) -> Callable[[Any, Any, list, Value], bool]:
         """Compile ``v \\in set_expr`` without building structured sets."""
         e = set_expr
+        if isinstance(e, A.SetEnum) and len({type(x) for x in e.elems}) > 1 or (
+                isinstance(e, A.SetEnum) and not all(isinstance(x, (A.Num, A.Str, A.Bool)) for x in e.elems)):
+            return self._in_enumeration(e, env)
         if self.fast_paths and self.folder.is_constant(e, env):
             fast = membership_const(const_value(self.expr(e, env)), e.loc)
             if fast is not None:
