@@ -370,6 +370,13 @@ Spec == Init /\ [][Next]_vars
 
 -----------------------------------------------------------------------------
 (******************************** Invariants *******************************)
+\* The values of the service record (Svc, and the shadow service).
+SvcRecords == [state: States, estop: EstopViews, estop_age: 0..EstopTimeoutCycles,
+               health: HealthViews, health_age: 0..(ReportDataTimeoutCycles + 1),
+               control: ControlStatus, control_age: 0..ControlAgeMax,
+               out_request: OutRequests, out_set_state: OutSetStates,
+               alarm: BOOLEAN, resend: BOOLEAN, set_age: 0..MessageIntervalCycles]
+
 \* SAF-01: every variable in its type; the state one of PAIRING, OPERATIONAL,
 \* EMERGENCY, FAULT.
 \* Every variable but the inbox in its type (SafetyServicePeers.tla has its own inboxes).
@@ -390,6 +397,7 @@ SvcTypeOK ==
     /\ h_health \in HealthViews /\ h_health_age \in 0..(ReportDataTimeoutCycles + 1)
     /\ h_told \in BOOLEAN /\ h_refused \in BOOLEAN /\ h_owed \in BOOLEAN /\ h_held_sent \in BOOLEAN
     /\ h_due \in BOOLEAN /\ h_due_age \in 0..MessageIntervalCycles
+    /\ shadow \in SvcRecords
 
 TypeOK == SvcTypeOK /\ inbox \in Inboxes
 
