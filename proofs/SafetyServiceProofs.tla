@@ -53,5 +53,18 @@ Lemma_RESEND ==
     /\ h_due => (h_due_age <= set_age /\ set_age < MessageIntervalCycles)
     /\ resend => (control = "HELD" /\ state \in RaisingStates)
 
-Strengthen_LEMMAS == Strengthen_MSG /\ Lemma_VIEWS /\ Lemma_OWED /\ Lemma_RESEND
+\* UCA-6: the history's wait for a Request Control never exceeds the
+\* service's control age, which K04 / K05 bound by the timeout / interval.
+Lemma_ASK ==
+    /\ (state \notin RaisingStates \/ control \in {"HELD", "RELEASED"}) => h_ask_age = 0
+    /\ (state \in RaisingStates /\ control = "REQUESTED")
+         => (~h_ask_refused /\ h_ask_age <= control_age
+             /\ control_age <= ReportDataTimeoutCycles)
+    /\ (state \in RaisingStates /\ control = "REFUSED")
+         => (h_ask_refused /\ h_ask_age <= control_age
+             /\ control_age <= MessageIntervalCycles)
+
+Strengthen_LEMMAS ==
+    /\ Strengthen_MSG /\ INV_SAF_ASKS_AGAIN
+    /\ Lemma_VIEWS /\ Lemma_OWED /\ Lemma_RESEND /\ Lemma_ASK
 =============================================================================
