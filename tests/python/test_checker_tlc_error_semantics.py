@@ -4,6 +4,7 @@
   again to print the call stack, and the new ones among them join its distinct states and
   queue (ModelChecker.doNext with a CallStackTool) -- a spec of the grammar-6 differential
   run (seed 404, spec 174) showed 3 distinct states in TLC against our 2;
+  where the replay meets a second error TLC exits with 75;
 * ``x \\in {0, 1, TRUE}`` written in place is a scan of a not yet normalised set
   (ValueVec.search): no error once an element equals ``x``; ours was an error at the
   set's construction where TLC reports no error at all.
@@ -48,6 +49,11 @@ Inv == x[1] # 1 /\\ x[1] # 8""", Tlc(76, 2, 4, 1, 2)),
 Init == x = <<0>>
 Next == x' = <<5>> \\/ x' = <<TRUE>> \\/ x' = <<6>> \\/ x' = <<5>> \\/ x' = <<7>>
 Inv == x[1] # 1""", Tlc(76, 3, 5, 3, 2)),
+    # The replay adds <<5>> (queued), then <<"a">> fails the invariant too: TLC exits 75.
+    "ReplayMeetsASecondError": ("""VARIABLES x
+Init == x = <<0>>
+Next == x' = <<TRUE>> \\/ x' = <<5>> \\/ x' = <<"a">> \\/ x' = <<6>>
+Inv == x[1] # 1""", Tlc(75, 2, 4, 1, 2)),
     "MembershipScanStopsAtAMatch": ("""VARIABLES x
 Init == x = 0
 Next == x' = (x + 1) % 3

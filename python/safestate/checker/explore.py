@@ -356,22 +356,23 @@ class Explorer:
                                            len(self.states) - self.head, None, [Step(st, "Init", {})], err)
                 raise _Stop() from None  # ends the search; the error is in self.outcome
             err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
-            self._replay_for_call_stack(parent)
+            if self._replay_for_call_stack(parent):
+                err.kind = "invariant eval, replay failed"
             if idx >= 0:
                 self._finish("error", None, idx, error=err)
             lf = self.m.leaves[leaf]
             self._finish("error", None, parent, Step(st, lf.name, self.m.leaf_params(leaf, L)), error=err)
             raise  # not reached: _finish raises _Stop
 
-    def _replay_for_call_stack(self, parent: int) -> None:
+    def _replay_for_call_stack(self, parent: int) -> bool:
         """What TLC 1.8.0 does after an invariant failed to evaluate in a successor of
         `parent`, to print the error's call stack: it generates the successors of
         `parent` again (ModelChecker.doNext with a CallStackTool and a worker whose
         counts are not reported).  Each new one among them joins the state set and, if
         its invariants and action properties hold, the queue; the generated count stays.
-        The replay stops at the first step that violates one.  A new successor whose
-        invariant fails to evaluate too is TLC's double error (docs/tla-subset.md,
-        "Known differences"): the replay stops there as well."""
+        The replay stops at the first step that violates one, or that fails to evaluate:
+        then TLC prints where that second error occurred and exits with 75, not 76
+        (returned True)."""
         m = self.m
         cur = self.states[parent]
         level = self.level[parent] + 1
@@ -395,16 +396,22 @@ class Explorer:
                 if new:
                     self._add(st, key, parent, leaf, level)
             added = int(new and in_model)
-            if new and not all(m.holds(inv, st) for inv in m.invariants):
+            try:
+                holds = not new or all(m.holds(inv, st) for inv in m.invariants)
+                holds = holds and all(m.holds(prop, cur, st) for prop in m.action_properties)
+            except TlaError:
                 self.unqueued += added
-                raise _Done()
-            if not all(m.holds(prop, cur, st) for prop in m.action_properties):
+                raise
+            if not holds:
                 self.unqueued += added
                 raise _Done()
         try:
             m.run_next(cur, on_succ)
-        except (_Done, TlaError):
+        except _Done:
             pass
+        except TlaError:
+            return True
+        return False
 
     def _expand_all(self) -> None:
         while self.head < len(self.states):
