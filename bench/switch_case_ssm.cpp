@@ -257,7 +257,12 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
         }
         break;
       case StateId::Idle:
-        if (sel != SelectorReading::T2) t2_confirmed_ = false;  // C22
+        if (sel != SelectorReading::T2 || (t2_confirmed_ && state_cycles_ == config_.t2_confirm_timeout_cycles)) {
+          t2_confirmed_ = false;  // C22: off T2, or the confirmation expired
+          state_cycles_ = 0;
+        } else if (t2_confirmed_) {
+          ++state_cycles_;  // C22: the confirmation ages
+        }
         break;
       default: break;  // C23
     }
@@ -477,6 +482,7 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
         reject(RejectReason::WrongMode);  // K34
       } else {
         t2_confirmed_ = true;  // K35
+        state_cycles_ = 0;
         status_.command_result = CommandResult::accepted();
       }
       return;

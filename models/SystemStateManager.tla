@@ -26,6 +26,7 @@ CONSTANTS
     DiscrepancyCycles,    \* D, Config::discrepancy_cycles (RSM-04, RSM-02)
     ArmingTimeoutCycles,  \* Config::arming_timeout_cycles (RSM-07)
     MaxStopCycles,        \* Config::max_stop_cycles (RSM-11)
+    T2ConfirmTimeoutCycles, \* Config::t2_confirm_timeout_cycles (C22: a T2 confirmation expires)
     T1SpeedLimit,         \* Config::t1_speed_limit_mm_s (RSM-10)
     T2SpeedLimit,         \* Config::t2_speed_limit_mm_s (K26: the largest jog speed accepted)
     QueueCapacity,        \* Config::command_queue_limit (RSM-14)
@@ -83,6 +84,7 @@ ASSUME T1SpeedLimit        \in 1..T1MaxSpeed   \* ISO 10218-1 5.7.3: at most 250
 ASSUME DiscrepancyCycles   <= 2147483647
 ASSUME ArmingTimeoutCycles <= 2147483647
 ASSUME MaxStopCycles       <= 2147483647
+ASSUME T2ConfirmTimeoutCycles \in Nat \ {0} /\ T2ConfirmTimeoutCycles <= 2147483647
 ASSUME T2SpeedLimit \in Nat /\ T1SpeedLimit < T2SpeedLimit /\ T2SpeedLimit <= 3000
 ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
 ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
@@ -393,7 +395,7 @@ C28_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-
                     /\ m.stop_category = "CAT2" /\ m.resume_to = "NONE"
 C20_Guard(m, in) == m.state = "STOPPING" /\ m.state_cycles = MaxStopCycles
 C21_Guard(m, in) == m.state = "STOPPING"                                 \* RSM-11
-C22_Guard(m, in) == m.state = "IDLE" /\ in.selector # "T2"               \* RSM-06
+C22_Guard(m, in) == m.state = "IDLE" /\ (in.selector # "T2" \/ m.t2_confirmed) \* RSM-06
 
 C01(m, in) == m                                        \* stay: only re-init leaves
 C02(m, in) == Lockout(m, "SELF_TEST_FAILED")
@@ -434,7 +436,11 @@ C28(m, in) == Enter(m, "MANUAL_IDLE")
 C19(m, in) == [Enter(m, "HOLD") EXCEPT !.resume_to = m.resume_to, !.jog = m.jog]
 C20(m, in) == Lockout(m, "STOP_TIMEOUT")
 C21(m, in) == [m EXCEPT !.state_cycles = @ + 1]
-C22(m, in) == [m EXCEPT !.t2_confirmed = FALSE]
+\* Off T2, or confirmed T2ConfirmTimeoutCycles cycles ago: cleared; else it
+\* ages (issue 29 item 5: the confirmation expires).
+C22(m, in) == IF in.selector # "T2" \/ m.state_cycles = T2ConfirmTimeoutCycles
+              THEN [m EXCEPT !.t2_confirmed = FALSE, !.state_cycles = 0]
+              ELSE [m EXCEPT !.state_cycles = @ + 1]
 C23(m, in) == m                                        \* no change
 
 \* First matching row wins (§5). The chain is written once, here.  The
@@ -583,7 +589,7 @@ K29(m, c, in) == [Enter(m, "MANUAL_JOGGING")
 \* issue 29 item 1: a JOG_STOP is a Cat 2 stop (IEC 60204-1 9.2.2), ramped
 \* down and watched by the stop timer (C20); C28 ends it in MANUAL_IDLE.
 K32(m, c, in) == WithCat(Enter(m, "STOPPING"), "CAT2")
-K35(m, c, in) == [m EXCEPT !.t2_confirmed = TRUE]
+K35(m, c, in) == [m EXCEPT !.t2_confirmed = TRUE, !.state_cycles = 0]
 
 Accept(r, m, c, in) ==
     LET n == CASE r = "K05" -> K05(m, c, in) [] r = "K12" -> K12(m, c, in)
@@ -693,9 +699,9 @@ Cycle(in) ==
                          /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
        /\ obs_guard_fault' = (acc \in {"RESET", "SERVO_ON"} /\ in.drive_fault)
        /\ obs_servo_on_powered' = (acc = "SERVO_ON" /\ PowerOut(Mgr))
-       /\ obs_t2' = IF acc = "T2_CONFIRM" THEN TRUE
-                    ELSE IF in.selector # "T2" \/ tripped \/ PowerOut(Mgr) THEN FALSE
-                    ELSE obs_t2
+       /\ obs_t2' = IF acc = "T2_CONFIRM" THEN 1
+                    ELSE IF in.selector # "T2" \/ tripped \/ PowerOut(Mgr) \/ obs_t2 = 0 THEN 0
+                    ELSE Min(obs_t2 + 1, T2ConfirmTimeoutCycles + 2)
        /\ obs_drive_fault' = (in.drive_fault /\ PowerOut(Mgr))
        /\ obs_fieldbus_lost' = (obs_fieldbus_lost \/ ~in.fieldbus_ok)
        /\ obs_unexpected_motion' =
@@ -837,7 +843,7 @@ Init ==
     /\ obs_locked = FALSE         /\ obs_ramp = 0
     /\ last_accepted = "NONE"     /\ jog_in_auto = FALSE
     /\ obs_guard_fault = FALSE    /\ obs_servo_on_powered = FALSE
-    /\ obs_t2 = FALSE             /\ obs_drive_fault = FALSE
+    /\ obs_t2 = 0                 /\ obs_drive_fault = FALSE
     /\ obs_fieldbus_lost = FALSE  /\ obs_unexpected_motion = FALSE
     /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
     /\ obs_self_test_failed = FALSE /\ obs_link_lost = FALSE
@@ -882,7 +888,7 @@ TypeOK ==
     /\ command_result \in Reasons \cup {"NONE", "ACCEPTED"}
     /\ estop_mismatch \in 0..(D + 1) /\ safeguard_mismatch \in 0..(D + 1)
     /\ enabling_mismatch \in 0..(D + 1) /\ selector_invalid \in 0..(D + 1)
-    /\ state_cycles \in 0..Max2(ArmingTimeoutCycles, MaxStopCycles)
+    /\ state_cycles \in 0..Max2(Max2(ArmingTimeoutCycles, MaxStopCycles), T2ConfirmTimeoutCycles)
     /\ t2_confirmed \in BOOLEAN
     /\ resume_to \in {"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}
     /\ jog \in JogType
@@ -898,7 +904,7 @@ TypeOK ==
     /\ obs_locked \in BOOLEAN /\ obs_ramp \in 0..(MaxStopCycles + 2)
     /\ last_accepted \in CommandKinds \cup {"NONE"}
     /\ jog_in_auto \in BOOLEAN /\ obs_guard_fault \in BOOLEAN
-    /\ obs_servo_on_powered \in BOOLEAN /\ obs_t2 \in BOOLEAN
+    /\ obs_servo_on_powered \in BOOLEAN /\ obs_t2 \in 0..(T2ConfirmTimeoutCycles + 2)
     /\ obs_drive_fault \in BOOLEAN /\ obs_fieldbus_lost \in BOOLEAN
     /\ obs_unexpected_motion \in BOOLEAN /\ t1_overspeed \in BOOLEAN
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
@@ -911,7 +917,7 @@ TypeOK ==
     /\ (session_mode # "NONE") <=> (state \in Powered)
     /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
     /\ t2_confirmed => state = "IDLE"
-    /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"}
+    /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"} \/ (state = "IDLE" /\ t2_confirmed)
     \* RSM-01: STOPPING is of category 1 or 2; HOLD is a category 2 pause
     /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
     /\ state = "HOLD" => stop_category = "CAT2"
@@ -1055,7 +1061,7 @@ RSM06_SERVO_ON ==
         /\ inputs.selector = "AUTO" => inputs.gate_a /\ inputs.gate_b
         /\ inputs.selector \in {"T1", "T2"} =>
                inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
-        /\ inputs.selector = "T2" => obs_t2
+        /\ inputs.selector = "T2" => obs_t2 \in 1..(T2ConfirmTimeoutCycles + 1)
 
 \* RSM-07/RSM-03: a drive fault read while powered removes power (Cat 0)
 \* and shows a fault (or the E-stop removed power in the same cycle).

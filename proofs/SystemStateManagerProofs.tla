@@ -74,7 +74,8 @@ Strengthen_OBSERVERS ==
     /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
     /\ obs_arming > 0 => state = "ARMING" /\ obs_arming <= state_cycles + 1
     /\ obs_panic <=> enable_release_required
-    /\ t2_confirmed => obs_t2
+    /\ t2_confirmed => obs_t2 = state_cycles + 1
+    /\ state = "IDLE" => state_cycles <= T2ConfirmTimeoutCycles
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
 \* changes while a jog is kept: Enter keeps session_mode in powered states).

@@ -79,6 +79,10 @@ bool stopped_cat2(const StepContext& c) noexcept {
 bool stop_timer_expired(const StepContext& c) noexcept { return state_cycles(c.state) == c.config.max_stop_cycles; }
 
 bool selector_not_t2(const StepContext& c) noexcept { return c.in.selector != SelectorReading::T2; }
+// C22: the T2 confirmation is cleared when the selector leaves T2 and ages while it holds.
+bool selector_not_t2_or_t2_confirmed(const StepContext& c) noexcept {
+  return c.in.selector != SelectorReading::T2 || t2_confirmed(c.state);
+}
 bool selector_invalid(const StepContext& c) noexcept { return c.in.selector == SelectorReading::Invalid; }
 
 bool selector_auto_and_gate_open(const StepContext& c) noexcept {
@@ -233,8 +237,16 @@ void count_state_cycle(StepContext& c) noexcept {
   }
 }
 
-void clear_t2_confirmation(StepContext& c) noexcept {
-  if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = false;
+// C22: selector off T2, or the confirmation t2_confirm_timeout_cycles old: cleared; else one
+// cycle older. A Servo-on is accepted for t2_confirm_timeout_cycles cycles after K35's.
+void age_t2_confirmation(StepContext& c) noexcept {
+  if (auto* idle = std::get_if<states::Idle>(&c.state)) {
+    if (c.in.selector != SelectorReading::T2 || idle->state_cycles == c.config.t2_confirm_timeout_cycles) {
+      *idle = states::Idle{false, 0};
+    } else {
+      ++idle->state_cycles;
+    }
+  }
 }
 
 // K12: session_mode := selector (stop_category := NONE is the row's StopUpdate::Clear).
@@ -268,8 +280,9 @@ void enter_stopping_cat2_jog_stop(StepContext& c) noexcept {
 // C28: the jog stop reached standstill.
 void enter_manual_idle(StepContext& c) noexcept { c.state = states::ManualIdle{session_mode(c.state)}; }
 
+// K35: a (new) confirmation, valid from now for t2_confirm_timeout_cycles cycles (C22).
 void confirm_t2(StepContext& c) noexcept {
-  if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = true;
+  if (auto* idle = std::get_if<states::Idle>(&c.state)) *idle = states::Idle{true, 0};
 }
 
 }  // namespace actions

@@ -410,6 +410,8 @@ PYBIND11_MODULE(_core, m) {
                      "EtherCAT working counter of a complete frame (default 18: 3 per drive).")
       .def_readwrite("fieldbus_lost_cycles_limit", &Config::fieldbus_lost_cycles_limit,
                      "Missed bus cycles in a row tolerated before C24, at most 100 (default 0).")
+      .def_readwrite("t2_confirm_timeout_cycles", &Config::t2_confirm_timeout_cycles,
+                     "Cycles a T2 confirmation stays valid for a Servo-on (default 30000).")
       .def_readwrite("t2_speed_limit_mm_s", &Config::t2_speed_limit_mm_s,
                      "T2 TCP speed limit, mm/s, above the T1 limit and at most 3000 (default 1000).")
       .def_readwrite("standstill_speed_window_mm_s", &Config::standstill_speed_window_mm_s,

@@ -28,9 +28,11 @@ struct Config {
   std::uint32_t discrepancy_cycles{50};      ///< D: tolerated cycles of channel disagreement (§3)
   std::uint32_t arming_timeout_cycles{500};  ///< cycles ARMING waits for servo_ready (C16)
   std::uint32_t max_stop_cycles{1000};       ///< cycles STOPPING waits for zero speed (C20)
-  std::int32_t t1_speed_limit_mm_s{250};     ///< T1 TCP speed limit, integer mm/s, 1..250 (C10, K29)
-  std::int32_t t2_speed_limit_mm_s{1000};    ///< T2 TCP speed limit, integer mm/s (K26)
-  double zero_velocity_rad_s{0.001};         ///< |qd[i]| at or below this is standstill (§2)
+  /// Cycles a T2 confirmation (K35) stays valid for a Servo-on, 1..kMaxTimerCycles (C22).
+  std::uint32_t t2_confirm_timeout_cycles{30000};
+  std::int32_t t1_speed_limit_mm_s{250};   ///< T1 TCP speed limit, integer mm/s, 1..250 (C10, K29)
+  std::int32_t t2_speed_limit_mm_s{1000};  ///< T2 TCP speed limit, integer mm/s (K26)
+  double zero_velocity_rad_s{0.001};       ///< |qd[i]| at or below this is standstill (§2)
   /// The TCP speed (mm/s) the standstill class may admit: zero_velocity_rad_s seen at the
   /// tool (zero_class_tcp_bound_mm_s) must not exceed it, and it stays below the T1 limit.
   double standstill_speed_window_mm_s{10.0};
@@ -69,6 +71,9 @@ inline constexpr std::array<double, 3> kFlangeTcp{0.0, 0.0, 0.0};
   }
   if (c.max_stop_cycles > kMaxTimerCycles) {
     return ConfigError::MaxStopTooLarge;
+  }
+  if (c.t2_confirm_timeout_cycles == 0U || c.t2_confirm_timeout_cycles > kMaxTimerCycles) {
+    return ConfigError::T2ConfirmTimeoutOutOfRange;
   }
   if (c.t1_speed_limit_mm_s <= 0) {
     return ConfigError::T1LimitNotPositive;

@@ -42,6 +42,7 @@ bool stopped_cat1(const StepContext&) noexcept;
 bool stopped_cat2(const StepContext&) noexcept;
 bool stop_timer_expired(const StepContext&) noexcept;
 bool selector_not_t2(const StepContext&) noexcept;
+bool selector_not_t2_or_t2_confirmed(const StepContext&) noexcept;
 bool selector_invalid(const StepContext&) noexcept;
 bool selector_auto_and_gate_open(const StepContext&) noexcept;
 bool selector_manual_and_enable_not_middle(const StepContext&) noexcept;
@@ -83,7 +84,7 @@ void enter_stopping_cat2_pause(StepContext&) noexcept;
 void enter_operational_idle(StepContext&) noexcept;
 void enter_hold(StepContext&) noexcept;
 void count_state_cycle(StepContext&) noexcept;
-void clear_t2_confirmation(StepContext&) noexcept;
+void age_t2_confirmation(StepContext&) noexcept;
 void enter_arming(StepContext&) noexcept;
 void enter_auto_running(StepContext&) noexcept;
 void resume_motion(StepContext&) noexcept;
@@ -176,7 +177,7 @@ inline constexpr std::array<TransitionRow, 67> kRows{{
   row("C19", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stopped_cat2),                                    enter({St::Hold}, SAFESTATE_ACTION(enter_hold)),                             Stop::Keep, "RSM-11"),
   row("C20", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stop_timer_expired),                              enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_stop_timeout)),           Stop::Cat0, "RSM-11"),
   row("C21", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(count_state_cycle)),                                   Stop::Keep, "RSM-11"),
-  row("C22", Ev::Cycle, {St::Idle},               SAFESTATE_GUARD(selector_not_t2),                                 stay(SAFESTATE_ACTION(clear_t2_confirmation)),                               Stop::Keep, "RSM-06"),
+  row("C22", Ev::Cycle, {St::Idle},               SAFESTATE_GUARD(selector_not_t2_or_t2_confirmed),                 stay(SAFESTATE_ACTION(age_t2_confirmation)),                               Stop::Keep, "RSM-06"),
   row("C23", Ev::Cycle, any(),                    SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "-"),
 
   // ---- §6: one command popped from the queue, after §5 ----------------------------------------

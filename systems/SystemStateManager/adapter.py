@@ -95,6 +95,7 @@ class SystemStateManagerAdapter(Adapter):
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
         "MaxStopCycles": "max_stop_cycles",
+        "T2ConfirmTimeoutCycles": "t2_confirm_timeout_cycles",
         "T1SpeedLimit": "t1_speed_limit_mm_s",
         "T2SpeedLimit": "t2_speed_limit_mm_s",
         "QueueCapacity": "command_queue_limit",
@@ -354,7 +355,8 @@ class SystemStateManagerAdapter(Adapter):
     # ------------------------------------------------------ Hypothesis rules
     def hypothesis_rules(self) -> type:
         return flagship_rules(int(self.constants["DiscrepancyCycles"]), self.queue_capacity,
-                              sorted({int(self.constants[k]) + d for k in ("ArmingTimeoutCycles", "MaxStopCycles")
+                              sorted({int(self.constants[k]) + d
+                                      for k in ("ArmingTimeoutCycles", "MaxStopCycles", "T2ConfirmTimeoutCycles")
                                       for d in (-1, 0, 1, 2)} - {0}))
 
 

@@ -163,7 +163,7 @@ TEST(RSM15_Config, EveryConfigErrorIsListedOnceInDeclarationOrder) {
                "T1_LIMIT_NOT_POSITIVE", "ZERO_VELOCITY_INVALID", "QUEUE_LIMIT_OUT_OF_RANGE", "DH_TABLE_NOT_FINITE",
                "T1_LIMIT_ABOVE_REDUCED_SPEED", "T2_LIMIT_OUT_OF_RANGE", "STANDSTILL_WINDOW_OUT_OF_RANGE",
                "TOOL_OFFSET_NOT_GIVEN", "ZERO_VELOCITY_ABOVE_WINDOW", "FIELDBUS_WORKING_COUNTER_ZERO",
-               "FIELDBUS_TOLERANCE_TOO_LARGE"}));
+               "FIELDBUS_TOLERANCE_TOO_LARGE", "T2_CONFIRM_TIMEOUT_OUT_OF_RANGE"}));
   for (std::size_t i = 0; i < kAllConfigErrors.size(); ++i) {
     EXPECT_EQ(static_cast<std::size_t>(kAllConfigErrors[i]), i) << to_string(kAllConfigErrors[i]);
   }

@@ -46,4 +46,57 @@ TEST(Issue29_Item5_T2Limits, InT1ARequestUpToTheT2LimitIsClampedAndAboveItReject
   EXPECT_EQ(r.out.commanded_speed_mm_s, r.m.config().t1_speed_limit_mm_s);  // K29's clamp
 }
 
+// The issue's reproduction was a Servo-on accepted ten minutes after the confirmation.
+// With a timeout of T cycles, the Servo-on of the T-th cycle after K35's is accepted and the
+// one of the (T+1)-th is refused.
+TEST(Issue29_Item5_T2Limits, TheT2ConfirmationExpiresAfterItsConfiguredTime) {
+  for (const std::uint32_t wait : {0U, 1U}) {
+    Config c = flange_config();
+    c.t2_confirm_timeout_cycles = 5;
+    Rig r(c);
+    r.boot(SelectorReading::T2);
+    ASSERT_EQ(r.command(Command::t2_confirm()), CommandResult::accepted());  // K35, cycle n
+    r.cycles(4 + wait);                                                      // n+1 .. n+4(+1)
+    EXPECT_EQ(r.st().state_cycles, 4U + wait);  // cleared by the next cycle's C22 once it reaches 5
+    const CommandResult got = r.command(Command::servo_on());  // popped in cycle n+5(+1)
+    if (wait == 0U) {
+      EXPECT_EQ(got, CommandResult::accepted());
+      EXPECT_EQ(r.state(), StateId::Arming);
+    } else {
+      EXPECT_EQ(got, CommandResult::rejected(RejectReason::T2NotConfirmed));
+      EXPECT_EQ(r.command_row(), "K11");
+      EXPECT_EQ(r.state(), StateId::Idle);
+    }
+  }
+}
+
+TEST(Issue29_Item5_T2Limits, ConfirmingAgainRestartsTheTimeAndLeavingT2ClearsIt) {
+  Config c = flange_config();
+  c.t2_confirm_timeout_cycles = 3;
+  Rig r(c);
+  r.boot(SelectorReading::T2);
+  ASSERT_EQ(r.command(Command::t2_confirm()), CommandResult::accepted());
+  r.cycles(2);
+  EXPECT_EQ(r.st().state_cycles, 2U);
+  ASSERT_EQ(r.command(Command::t2_confirm()), CommandResult::accepted());
+  EXPECT_EQ(r.st().state_cycles, 0U);
+  r.cycles(2);
+  EXPECT_EQ(r.command(Command::servo_on()), CommandResult::accepted());
+  Rig off(c);
+  off.boot(SelectorReading::T2);
+  ASSERT_EQ(off.command(Command::t2_confirm()), CommandResult::accepted());
+  off.in.selector = contacts(SelectorReading::T1);
+  off.cycle();
+  EXPECT_FALSE(off.st().t2_confirmed);
+  EXPECT_EQ(off.st().state_cycles, 0U);
+}
+
+TEST(Issue29_Item5_T2Limits, AZeroConfirmationTimeIsRefused) {
+  Config c = flange_config();
+  c.t2_confirm_timeout_cycles = 0;
+  EXPECT_EQ(validate(c), ConfigError::T2ConfirmTimeoutOutOfRange);
+  c.t2_confirm_timeout_cycles = kMaxTimerCycles + 1U;
+  EXPECT_EQ(validate(c), ConfigError::T2ConfirmTimeoutOutOfRange);
+}
+
 }  // namespace
