@@ -134,7 +134,9 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   }
   if (speed != SpeedLevel::Zero) {
     const double v = kin_.tcp_speed_mm_s(in.q, in.qd);
-    if (!std::isfinite(v) || v > static_cast<double>(config_.t1_speed_limit_mm_s)) {
+    if (!std::isfinite(v) || v > static_cast<double>(config_.t2_speed_limit_mm_s)) {
+      speed = SpeedLevel::OverT2;
+    } else if (v > static_cast<double>(config_.t1_speed_limit_mm_s)) {
       speed = SpeedLevel::OverT1;
     }
   }
@@ -190,8 +192,10 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     lockout(FaultCode::DriveFault);  // C09
   } else if (powered && state_ != StateId::Arming && !drives.servo_ready) {
     lockout(FaultCode::ServoReadyLost);  // C27
-  } else if (powered && session_ == OperatingMode::T1 && speed == SpeedLevel::OverT1) {
+  } else if (powered && session_ == OperatingMode::T1 && (speed == SpeedLevel::OverT1 || speed == SpeedLevel::OverT2)) {
     lockout(FaultCode::T1Overspeed);  // C10
+  } else if (powered && session_ == OperatingMode::T2 && speed == SpeedLevel::OverT2) {
+    lockout(FaultCode::T2Overspeed);  // C29
   } else if ((state_ == StateId::Arming || state_ == StateId::AutoIdle || state_ == StateId::ManualIdle ||
               state_ == StateId::Hold) &&
              speed != SpeedLevel::Zero) {

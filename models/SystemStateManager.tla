@@ -55,7 +55,8 @@ T1MaxSpeed == 250
 
 EnablePositions == {"RELEASED", "MIDDLE", "PANIC"}
 Selectors       == {"AUTO", "T1", "T2", "INVALID"}
-Speeds          == {"ZERO", "MOVING", "OVER_T1"}
+\* OVER_T2: the TCP speed above Config::t2_speed_limit_mm_s (so above T1's too).
+Speeds          == {"ZERO", "MOVING", "OVER_T1", "OVER_T2"}
 Modes           == {"AUTO", "T1", "T2"}
 
 CommandKinds == {"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME",
@@ -122,7 +123,8 @@ StopCategories == {"NONE", "CAT0", "CAT1", "CAT2"}
 FaultCodes == {"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP",
                "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING", "SELECTOR_INVALID",
                "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT",
-               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION", "SERVO_READY_LOST"}
+               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION", "SERVO_READY_LOST",
+               "T2_OVERSPEED"}
 Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
             "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
             "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
@@ -200,8 +202,10 @@ VARIABLES inputs, event
 (*   obs_unexpected_motion -- RSM-11 (standstill monitoring): the last    *)
 (*                    cycle read speed # ZERO with power on and no motion  *)
 (*                    commanded at its start.                              *)
-(*   t1_overspeed  -- RSM-10: the last cycle read OVER_T1 while the       *)
-(*                    session output (at its start) was T1.               *)
+(*   t1_overspeed  -- RSM-10: the last cycle read OVER_T1 or OVER_T2      *)
+(*                    while the session output (at its start) was T1.     *)
+(*   obs_t2_overspeed -- UCA-RSM-12: the last cycle read OVER_T2 while    *)
+(*                    the session output (at its start) was T2.           *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
 (*                    self_test_ok = FALSE.                               *)
 (*   obs_arming    -- RSM-07/RSM-15: consecutive cycles that read        *)
@@ -224,7 +228,7 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
           obs_booted, obs_self_test_failed,
           obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
-          obs_was_enabled, obs_ready_lost, obs_panic
+          obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
@@ -236,7 +240,7 @@ obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_r
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
               obs_booted, obs_self_test_failed,
               obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
-              obs_was_enabled, obs_ready_lost, obs_panic>>
+              obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -365,7 +369,10 @@ C07_Guard(m, in) == m.state = "ESTOP_ACTIVE" /\ ~EstopTripped(in) \* RSM-05
 C08_Guard(m, in) == m.state = "ESTOP_ACTIVE"                    \* RSM-05
 C09_Guard(m, in) == m.state \in Powered /\ in.drive_fault       \* RSM-07, RSM-03
 C10_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T1"  \* RSM-10
-                    /\ in.speed = "OVER_T1"
+                    /\ in.speed \in {"OVER_T1", "OVER_T2"}
+\* C29 (issue 29 item 5): measured TCP speed above the T2 limit in a T2 session.
+C29_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T2"  \* RSM-10, RSM-03
+                    /\ in.speed = "OVER_T2"
 \* C25: standstill monitoring where power is on and no motion is commanded
 \* (no exemption: every stop, a JOG_STOP's too, ends in these states only
 \* after a cycle that measured standstill, C18/C19/C28).
@@ -410,6 +417,7 @@ C07(m, in) == [Enter(m, "ESTOP_RESET_NEEDED") EXCEPT !.stale_commands = Len(m.qu
 C08(m, in) == m
 C09(m, in) == Lockout(m, "DRIVE_FAULT")
 C10(m, in) == Lockout(m, "T1_OVERSPEED")
+C29(m, in) == Lockout(m, "T2_OVERSPEED")
 C25(m, in) == Lockout(m, "STANDSTILL_VIOLATION")
 C27(m, in) == Lockout(m, "SERVO_READY_LOST")
 C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
@@ -444,7 +452,7 @@ C22(m, in) == IF in.selector # "T2" \/ m.state_cycles = T2ConfirmTimeoutCycles
 C23(m, in) == m                                        \* no change
 
 \* First matching row wins (§5). The chain is written once, here.  The
-\* latching rows C09, C27, C10, C25 precede the E-stop's C06 (issue 29
+\* latching rows C09, C27, C10, C29, C25 precede the E-stop's C06 (issue 29
 \* item 7): an E-stop in the same cycle must not make the fault forgotten.
 SafetyRow(m, in) ==
     IF      C01_Guard(m, in) THEN "C01"
@@ -456,6 +464,7 @@ SafetyRow(m, in) ==
     ELSE IF C09_Guard(m, in) THEN "C09"
     ELSE IF C27_Guard(m, in) THEN "C27"
     ELSE IF C10_Guard(m, in) THEN "C10"
+    ELSE IF C29_Guard(m, in) THEN "C29"
     ELSE IF C25_Guard(m, in) THEN "C25"
     ELSE IF C06_Guard(m, in) THEN "C06"
     ELSE IF C07_Guard(m, in) THEN "C07"
@@ -492,6 +501,7 @@ Safety(m, in) ==
       [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
       [] r = "C25" -> C25(m, in) [] r = "C26" -> C26(m, in)
       [] r = "C27" -> C27(m, in) [] r = "C28" -> C28(m, in)
+      [] r = "C29" -> C29(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
@@ -706,7 +716,8 @@ Cycle(in) ==
        /\ obs_fieldbus_lost' = (obs_fieldbus_lost \/ ~in.fieldbus_ok)
        /\ obs_unexpected_motion' =
             (PowerOut(Mgr) /\ NoMotionOut(Mgr) /\ in.speed # "ZERO")
-       /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
+       /\ t1_overspeed' = (session_mode = "T1" /\ in.speed \in {"OVER_T1", "OVER_T2"})
+       /\ obs_t2_overspeed' = (session_mode = "T2" /\ in.speed = "OVER_T2")
        /\ obs_booted' = TRUE
        /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
        /\ obs_arming' = IF DriveEnableOut(m) /\ ~in.servo_ready
@@ -734,7 +745,7 @@ Submit(c) ==
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
                    obs_booted, obs_self_test_failed, obs_arming, obs_link_lost,
-                   obs_was_enabled, obs_ready_lost, obs_panic>>
+                   obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -849,6 +860,7 @@ Init ==
     /\ obs_self_test_failed = FALSE /\ obs_link_lost = FALSE
     /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
     /\ obs_was_enabled = FALSE    /\ obs_ready_lost = FALSE /\ obs_panic = FALSE
+    /\ obs_t2_overspeed = FALSE
     /\ enable_release_required = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
@@ -910,6 +922,7 @@ TypeOK ==
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
     /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
     /\ obs_was_enabled \in BOOLEAN /\ obs_ready_lost \in BOOLEAN /\ obs_panic \in BOOLEAN
+    /\ obs_t2_overspeed \in BOOLEAN
     /\ enable_release_required \in BOOLEAN
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     /\ obs_link_lost \in BOOLEAN
@@ -1085,6 +1098,14 @@ UCA_BRAKE_ORDER ==
 \* off and a fault shown (bound: the same cycle).
 UCA_READY_LOST == obs_ready_lost => Unpowered /\ Locked
 
+\* UCA-RSM-12 (RSM-10, RSM-03, ISO 10218-1 5.7.4 / 5.4.3, issue 29 item 5): in a T2
+\* session no jog speed above the T2 limit is commanded, and a cycle that
+\* measures the TCP above the T2 limit ends with every power output off and a
+\* fault shown (bound: the same cycle; Cat 0, design page §13).
+UCA_T2_OVERSPEED ==
+    /\ session_mode = "T2" => commanded_speed_mm_s <= T2SpeedLimit
+    /\ obs_t2_overspeed => Unpowered /\ Locked
+
 \* UCA-RSM-05 (RSM-09, ISO 10218-1 5.8.3, issue 29 item 6): once the
 \* enabling device was read in PANIC (either channel), no drive is enabled
 \* in a manual session until both channels were read RELEASED.
@@ -1166,6 +1187,7 @@ Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
 Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
 Witness_UCA_BRAKE_ORDER      == ~brake_release
 Witness_UCA_READY_LOST       == ~obs_ready_lost
+Witness_UCA_T2_OVERSPEED     == ~obs_t2_overspeed
 \* (the panic observer set and the device back in MIDDLE, unpowered)
 Witness_UCA_PANIC_REARM      == ~(obs_panic /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE")
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")

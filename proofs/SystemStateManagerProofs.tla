@@ -80,7 +80,9 @@ Strengthen_OBSERVERS ==
 \* A jog kept for a T1 session was clamped by K29 (the session never
 \* changes while a jog is kept: Enter keeps session_mode in powered states).
 Strengthen_T1JOG ==
-    (session_mode = "T1" /\ jog # NoJog) => jog.speed_mm_s <= T1SpeedLimit
+    /\ (session_mode = "T1" /\ jog # NoJog) => jog.speed_mm_s <= T1SpeedLimit
+    \* and every kept jog was bounded by K26 (UCA_T2_OVERSPEED after K24)
+    /\ jog # NoJog => jog.speed_mm_s <= T2SpeedLimit
 
 \* Every property of the .cfg at once: each is proved assuming all of them
 \* (and the lemmas above) in the pre-state; it is their conjunction that is
@@ -93,5 +95,5 @@ Strengthen_ALL ==
     /\ RSM09_JOG_START /\ RSM08_START /\ INV_T1SPEED /\ RSM06_SERVO_ON
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
     /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
-    /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM
+    /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM /\ UCA_T2_OVERSPEED
 =============================================================================

@@ -35,9 +35,15 @@ bool estop_tripped(const StepContext& c) noexcept { return c.in.estop_tripped; }
 bool estop_released(const StepContext& c) noexcept { return !c.in.estop_tripped; }
 bool drive_fault(const StepContext& c) noexcept { return c.in.drive_fault; }
 
-// C10: session_mode = T1 ∧ speed = OVER_T1.
+// C10: session_mode = T1 ∧ speed ∈ {OVER_T1, OVER_T2}.
 bool t1_session_overspeed(const StepContext& c) noexcept {
-  return session_mode(c.state) == OperatingMode::T1 && c.in.speed == SpeedLevel::OverT1;
+  return session_mode(c.state) == OperatingMode::T1 &&
+         (c.in.speed == SpeedLevel::OverT1 || c.in.speed == SpeedLevel::OverT2);
+}
+
+// C29: session_mode = T2 ∧ speed = OVER_T2 (issue 29 item 5).
+bool t2_session_overspeed(const StepContext& c) noexcept {
+  return session_mode(c.state) == OperatingMode::T2 && c.in.speed == SpeedLevel::OverT2;
 }
 
 // C11: manual ∧ enable_panic.
@@ -166,6 +172,7 @@ void lockout_self_test_failed(StepContext& c) noexcept { c.state = states::Error
 void lockout_discrepancy(StepContext& c) noexcept { c.state = states::ErrorLockout{c.in.discrepancy}; }
 void lockout_drive_fault(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::DriveFault}; }
 void lockout_t1_overspeed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::T1Overspeed}; }
+void lockout_t2_overspeed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::T2Overspeed}; }
 void lockout_arming_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::ArmingTimeout}; }
 void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
 void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::FieldbusLoss}; }

@@ -25,9 +25,10 @@ enum class FaultCode : std::uint8_t {
   FieldbusLoss,
   StandstillViolation,
   ServoReadyLost,  ///< C27: the drives stopped reporting ready with the brakes released
+  T2Overspeed,     ///< C29: measured TCP speed above the T2 limit in a T2 session
 };
 
-inline constexpr std::size_t kFaultCodeCount = 13;
+inline constexpr std::size_t kFaultCodeCount = 14;
 
 inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::None,
@@ -43,6 +44,7 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::FieldbusLoss,
     FaultCode::StandstillViolation,
     FaultCode::ServoReadyLost,
+    FaultCode::T2Overspeed,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.
@@ -61,6 +63,7 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     case FaultCode::FieldbusLoss: return "FIELDBUS_LOSS";
     case FaultCode::StandstillViolation: return "STANDSTILL_VIOLATION";
     case FaultCode::ServoReadyLost: return "SERVO_READY_LOST";
+    case FaultCode::T2Overspeed: return "T2_OVERSPEED";
   }
   return "?";
 }

@@ -32,6 +32,7 @@ bool estop_tripped(const StepContext&) noexcept;
 bool estop_released(const StepContext&) noexcept;
 bool drive_fault(const StepContext&) noexcept;
 bool t1_session_overspeed(const StepContext&) noexcept;
+bool t2_session_overspeed(const StepContext&) noexcept;
 bool manual_session_panic(const StepContext&) noexcept;
 bool selector_differs_from_session_unless_cat1_stopping(const StepContext&) noexcept;
 bool auto_session_gate_open_unless_cat1_stopping(const StepContext&) noexcept;
@@ -71,6 +72,7 @@ void lockout_self_test_failed(StepContext&) noexcept;
 void lockout_discrepancy(StepContext&) noexcept;
 void lockout_drive_fault(StepContext&) noexcept;
 void lockout_t1_overspeed(StepContext&) noexcept;
+void lockout_t2_overspeed(StepContext&) noexcept;
 void lockout_arming_timeout(StepContext&) noexcept;
 void lockout_stop_timeout(StepContext&) noexcept;
 void lockout_fieldbus_loss(StepContext&) noexcept;
@@ -146,7 +148,7 @@ struct Effect {
 #define SAFESTATE_ACTION(fn) &::safestate::actions::fn, #fn
 
 // clang-format off
-inline constexpr std::array<TransitionRow, 67> kRows{{
+inline constexpr std::array<TransitionRow, 68> kRows{{
   // ---- §5: one scan cycle, after channel monitoring (§3) ---------------------------------------
   // id     event      source                    guard                                                              effect                                                                       stop        requirements
   row("C01", Ev::Cycle, {St::ErrorLockout},       SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-04, INV-DISCREPANCY"),
@@ -160,6 +162,7 @@ inline constexpr std::array<TransitionRow, 67> kRows{{
   row("C27", Ev::Cycle, {St::AutoIdle, St::AutoRunning, St::ManualIdle, St::ManualJogging, St::Stopping, St::Hold},
                                                   SAFESTATE_GUARD(servo_not_ready),                                 enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_servo_ready_lost)),       Stop::Cat0, "RSM-07, RSM-03"),
   row("C10", Ev::Cycle, powered(),                SAFESTATE_GUARD(t1_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t1_overspeed)),           Stop::Cat0, "RSM-10, INV-T1SPEED"),
+  row("C29", Ev::Cycle, powered(),                SAFESTATE_GUARD(t2_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t2_overspeed)),           Stop::Cat0, "RSM-10, RSM-03, UCA-RSM-12"),
   row("C25", Ev::Cycle, {St::Arming, St::AutoIdle, St::ManualIdle, St::Hold}, SAFESTATE_GUARD(moving_at_standstill), enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_standstill_violation)), Stop::Cat0, "RSM-11, RSM-03"),
   row("C06", Ev::Cycle, any_but({St::EstopActive}), SAFESTATE_GUARD(estop_tripped),                                 enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-05, INV-1OO2"),
   row("C07", Ev::Cycle, {St::EstopActive},        SAFESTATE_GUARD(estop_released),                                  enter({St::EstopResetNeeded}, SAFESTATE_ACTION(enter_estop_reset_needed)),   Stop::Keep, "RSM-05"),
@@ -230,8 +233,8 @@ inline constexpr std::array<TransitionRow, 67> kRows{{
 }  // namespace table_dsl
 
 /// The table, §5 rows then §6 rows.
-inline constexpr const std::array<TransitionRow, 67>& kTransitionTable = table_dsl::kRows;
-inline constexpr std::size_t kCycleRowCount = 28;    // C01..C28
+inline constexpr const std::array<TransitionRow, 68>& kTransitionTable = table_dsl::kRows;
+inline constexpr std::size_t kCycleRowCount = 29;    // C01..C29
 inline constexpr std::size_t kCommandRowCount = 39;  // K01..K39
 
 // ---- Compile-time audit of the table ---------------------------------------------------------
@@ -244,7 +247,7 @@ namespace table_check {
 }
 
 /// C rows then K rows, each id Cnn / Knn within its section's count (rows added by a later
-/// change take the next free number and sit where first-match needs them: C24-C28, K36-K39).
+/// change take the next free number and sit where first-match needs them: C24-C29, K36-K39).
 [[nodiscard]] constexpr bool ids_in_order() noexcept {
   for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
     const bool cycle = i < kCycleRowCount;
@@ -321,8 +324,8 @@ namespace table_check {
 
 }  // namespace table_check
 
-static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "67 rows: C01-C28, K01-K39");
-static_assert(table_check::ids_in_order(), "row ids must be C01..C28 then K01..K39");
+static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "68 rows: C01-C29, K01-K39");
+static_assert(table_check::ids_in_order(), "row ids must be C01..C29 then K01..K39");
 static_assert(table_check::ids_unique(), "row ids must be unique");
 static_assert(table_check::events_match_sections(), "C rows are cycle rows, K rows command rows");
 static_assert(table_check::effects_well_formed(), "every reject row needs a reason; effects must be well formed");

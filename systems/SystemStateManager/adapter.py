@@ -7,9 +7,9 @@ interface, docs/adding-a-system.md walks through writing one).
 
 * Cycle(in): the model's abstract input record becomes raw channels (design §2): each
   channel level as is; selector AUTO/T1/T2 closes exactly that contact, INVALID none;
-  speed ZERO / MOVING / OVER_T1 becomes joint velocities at a fixed pose, chosen with an
-  independent reference kinematics (`tcp_speed_per_rad_s`: the DH product in Python)
-  and checked against the C++ classification once.
+  speed ZERO / MOVING / OVER_T1 / OVER_T2 becomes joint velocities at a fixed pose,
+  chosen with an independent reference kinematics (`tcp_speed_per_rad_s`: the DH product
+  in Python) and checked against the C++ classification once.
 * Submit(c): `manager.submit(kind, axis, direction, speed_mm_s)`; the C++ must answer
   QUEUE_FULL exactly when the model's queue is full.
 * Projection: the §7 status variables as they are, `jog` split into jog_axis /
@@ -90,7 +90,7 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
                         "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
-                        "obs_panic")
+                        "obs_panic", "obs_t2_overspeed")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
@@ -261,6 +261,9 @@ class SystemStateManagerAdapter(Adapter):
             seq("UCA-RSM-06 E-stop channel B and a T1 overspeed in one cycle",
                 [cyc({"estop_b": False, "speed": "OVER_T1"},
                      {"estop_closed_b": False, "qd": self.speeds["OVER_T1"][0]})]),
+            seq("UCA-RSM-12 E-stop channel B and a T2 overspeed in one cycle",
+                [cyc({"estop_b": False, "speed": "OVER_T2"},
+                     {"estop_closed_b": False, "qd": self.speeds["OVER_T2"][0]})]),
             seq("UCA-RSM-03 servo_ready lost, held 3 cycles", [cyc(*unready)] * 3),
             seq("UCA-RSM-05 enabling PANIC, back to MIDDLE, then Servo-on",
                 [cyc(*panic), cyc(*middle), sub("SERVO_ON"), cyc(*middle)]),
@@ -404,16 +407,22 @@ def speed_vectors(core: ModuleType, config: Any) -> dict[str, Any]:
     per_rad = tcp_speed_per_rad_s(dh, POSE, 0)  # mm/s per rad/s of joint 1
     limit = float(config.t1_speed_limit_mm_s)
     zero = float(config.zero_velocity_rad_s)
-    at_limit = limit / per_rad
-    # The C++ rounds differently in the last bits: nudge so that its own TCP speed is the
-    # limit exactly (the reference and the C++ agree to 1e-9 relative, checked here).
     cpp_per_rad = core.tcp_speed_mm_s(POSE, [1.0, 0, 0, 0, 0, 0], config)
-    if abs(cpp_per_rad - per_rad) <= 1e-9 * per_rad:
-        for _ in range(64):
-            got = core.tcp_speed_mm_s(POSE, [at_limit, 0, 0, 0, 0, 0], config)
-            if got == limit:
-                break
-            at_limit = math.nextafter(at_limit, math.inf if got < limit else -math.inf)
+
+    def exactly(bound: float) -> float:
+        """Joint 1's rate whose TCP speed is `bound`. The C++ rounds differently in the
+        last bits: nudge so that its own TCP speed is the bound exactly (the reference and
+        the C++ agree to 1e-9 relative, checked here)."""
+        w = bound / per_rad
+        if abs(cpp_per_rad - per_rad) <= 1e-9 * per_rad:
+            for _ in range(64):
+                got = core.tcp_speed_mm_s(POSE, [w, 0, 0, 0, 0, 0], config)
+                if got == bound:
+                    break
+                w = math.nextafter(w, math.inf if got < bound else -math.inf)
+        return w
+    at_limit = exactly(limit)
+    at_t2 = exactly(float(config.t2_speed_limit_mm_s))
 
     def j1(v: float) -> list[float]:
         return [v, 0.0, 0.0, 0.0, 0.0, 0.0]
@@ -430,10 +439,16 @@ def speed_vectors(core: ModuleType, config: Any) -> dict[str, Any]:
         ("TCP exactly at the T1 limit", "MOVING", j1(at_limit)),
         ("TCP just above the T1 limit", "OVER_T1", j1(at_limit * 1.001)),
         ("TCP above the T1 limit, joint 1 negative", "OVER_T1", j1(-at_limit * 1.001)),
-        ("NaN joint velocity", "OVER_T1", j1(math.nan)),
+        ("TCP exactly at the T2 limit", "OVER_T1", j1(at_t2)),
+        ("TCP just above the T2 limit", "OVER_T2", j1(at_t2 * 1.001)),
+        ("TCP above the T2 limit, joint 1 negative", "OVER_T2", j1(-at_t2 * 1.001)),
+        ("NaN joint velocity", "OVER_T2", j1(math.nan)),
     ]
+    if not at_limit < 0.5 * (at_limit + at_t2) < at_t2:
+        raise ValueError("the T2 limit must lie above the T1 limit for an OVER_T1 velocity below it")
     return {"ZERO": ([0.0] * 6, "zero"), "MOVING": (j1(moving), "half the T1 limit"),
-            "OVER_T1": (j1(2.0 * at_limit), "twice the T1 limit"), "probes": probes}
+            "OVER_T1": (j1(0.5 * (at_limit + at_t2)), "between the T1 and the T2 limit"),
+            "OVER_T2": (j1(2.0 * at_t2), "twice the T2 limit"), "probes": probes}
 
 
 # ---------------------------------------------------------------------------

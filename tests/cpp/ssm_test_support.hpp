@@ -25,6 +25,8 @@ inline constexpr JointVector kPose{0.0, -1.2, 1.1, -1.4, -1.57, 0.0};
 inline constexpr JointVector kSlow{0.05, 0.0, 0.0, 0.0, 0.0, 0.0};
 /// Joint 1 turning fast: OVER_T1 (well above 250 mm/s at this pose).
 inline constexpr JointVector kFast{2.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+/// Joint 1 at half kFast: ~640 mm/s at the flange, between the T1 and the T2 limit (OVER_T1).
+inline constexpr JointVector kMedium{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 inline constexpr JointVector kRest{};
 
 /// The design-page defaults with the tool stated as a tool-less flange: a Config states its

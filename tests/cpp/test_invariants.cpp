@@ -197,7 +197,8 @@ TEST(INV_T1SPEED, T1CommandedSpeedNeverExceedsTheLimitAndOverspeedEndsUnpowered)
       ASSERT_LE(s.after.jog_speed_mm_s, c.t1_speed_limit_mm_s);
       if (s.out.commanded_speed_mm_s == c.t1_speed_limit_mm_s) ++clamped;
     }
-    if (s.before.session_mode == OperatingMode::T1 && s.derived.speed == SpeedLevel::OverT1) {
+    if (s.before.session_mode == OperatingMode::T1 &&
+        (s.derived.speed == SpeedLevel::OverT1 || s.derived.speed == SpeedLevel::OverT2)) {
       ++overspeeds;
       ASSERT_FALSE(s.out.contactor_closed);
       ASSERT_FALSE(s.out.drive_enable);
