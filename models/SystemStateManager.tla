@@ -30,6 +30,7 @@ CONSTANTS
     T1SpeedLimit,         \* Config::t1_speed_limit_mm_s (RSM-10)
     T2SpeedLimit,         \* Config::t2_speed_limit_mm_s (K26: the largest jog speed accepted)
     QueueCapacity,        \* Config::command_queue_limit (RSM-14)
+    FeedbackCycles,       \* Config::feedback_allowed_cycles (C30: a feedback's switching time)
     JogCommands           \* the JOG_START commands the operator may submit
 
 (* The input values the environment may present (restricts the input      *)
@@ -44,6 +45,7 @@ CONSTANTS
     DriveFaultInputs,     \* subset of BOOLEAN
     SelfTestInputs,       \* subset of BOOLEAN
     FieldbusInputs,       \* subset of BOOLEAN (C24: FALSE = fieldbus/cycle watchdog lost)
+    FeedbackInputs,       \* TRUE: contactor / brake feedback may disagree with the command
     LockoutHoldsInputs,   \* TRUE: the held signals stop changing in ERROR_LOCKOUT
     CombineChanges        \* TRUE: a held change and free choices in one cycle
 
@@ -74,7 +76,8 @@ InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
                   enable_a |-> "RELEASED", enable_b |-> "RELEASED",
                   selector |-> "AUTO", self_test_ok |-> TRUE,
                   servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO",
-                  fieldbus_ok |-> TRUE, operator_link_ok |-> TRUE]
+                  fieldbus_ok |-> TRUE, operator_link_ok |-> TRUE,
+                  contactor_fb |-> FALSE, brake_fb |-> FALSE]
 
 ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
@@ -88,6 +91,8 @@ ASSUME MaxStopCycles       <= 2147483647
 ASSUME T2ConfirmTimeoutCycles \in Nat \ {0} /\ T2ConfirmTimeoutCycles <= 2147483647
 ASSUME T2SpeedLimit \in Nat /\ T1SpeedLimit < T2SpeedLimit /\ T2SpeedLimit <= 3000
 ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
+ASSUME FeedbackCycles      \in 0..1000    \* kMaxFeedbackCycles (Config::validate)
+ASSUME FeedbackInputs      \in BOOLEAN
 ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
                               speed_mm_s: Int]
 ASSUME EstopInputs      \subseteq BOOLEAN \X BOOLEAN
@@ -124,7 +129,7 @@ FaultCodes == {"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP",
                "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING", "SELECTOR_INVALID",
                "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT",
                "FIELDBUS_LOSS", "STANDSTILL_VIOLATION", "SERVO_READY_LOST",
-               "T2_OVERSPEED"}
+               "T2_OVERSPEED", "CONTACTOR_FEEDBACK", "BRAKE_FEEDBACK"}
 Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
             "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
             "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
@@ -141,7 +146,9 @@ Inputs == [estop_a: BOOLEAN, estop_b: BOOLEAN, gate_a: BOOLEAN, gate_b: BOOLEAN,
            enable_a: EnablePositions, enable_b: EnablePositions,
            selector: Selectors, self_test_ok: BOOLEAN, servo_ready: BOOLEAN,
            drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN,
-           operator_link_ok: BOOLEAN]
+           operator_link_ok: BOOLEAN,
+           contactor_fb: BOOLEAN,   \* the safety relay's auxiliary contact: closed
+           brake_fb: BOOLEAN]       \* the brakes' feedback: released
 
 Min(a, b) == IF a <= b THEN a ELSE b
 Max2(a, b) == IF a >= b THEN a ELSE b
@@ -157,7 +164,11 @@ VARIABLES
     stale_commands,       \* K36: queued commands submitted before the last E-stop release
     estop_tested_a,       \* K37: E-stop channel A seen open since the last accepted Reset
     estop_tested_b,       \* K37: likewise channel B
-    enable_release_required \* K39: PANIC seen since the enabling device was last RELEASED
+    enable_release_required, \* K39: PANIC seen since the enabling device was last RELEASED
+    contactor_fb_cycles,  \* C30: consecutive cycles the contactor feedback disagreed
+    brake_fb_cycles,      \* C30: likewise the brake feedback
+    contactor_fb_cmd,     \* the contactor command of the last disagreeing cycle
+    brake_fb_cmd          \* the brake command of the last disagreeing cycle
 
 (* Environment: `inputs` -- the inputs of the last cycle (before the     *)
 (* first cycle: InitialInputs); `event` -- the event that produced this  *)
@@ -206,6 +217,13 @@ VARIABLES inputs, event
 (*                    while the session output (at its start) was T1.     *)
 (*   obs_t2_overspeed -- UCA-RSM-12: the last cycle read OVER_T2 while    *)
 (*                    the session output (at its start) was T2.           *)
+(*   obs_fb_contactor, obs_fb_brake -- UCA-RSM-13: consecutive cycles     *)
+(*                    whose feedback read disagreed with the output at    *)
+(*                    the cycle's start (contactor, brake release), 1     *)
+(*                    again when that output changed since the previous  *)
+(*                    cycle (capped at FeedbackCycles + 1).               *)
+(*   obs_was_released -- the brake release output at the start of the    *)
+(*                    last cycle (obs_was_enabled is the contactor's).    *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
 (*                    self_test_ok = FALSE.                               *)
 (*   obs_arming    -- RSM-07/RSM-15: consecutive cycles that read        *)
@@ -228,19 +246,22 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
           obs_booted, obs_self_test_failed,
           obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
-          obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed
+          obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
+          obs_fb_contactor, obs_fb_brake, obs_was_released
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
               safeguard_mismatch, enabling_mismatch, selector_invalid,
               state_cycles, t2_confirmed, resume_to, jog, queue, axes,
-              stale_commands, estop_tested_a, estop_tested_b, enable_release_required>>
+              stale_commands, estop_tested_a, estop_tested_b, enable_release_required,
+              contactor_fb_cycles, brake_fb_cycles, contactor_fb_cmd, brake_fb_cmd>>
 obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
               last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
               obs_booted, obs_self_test_failed,
               obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
-              obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed>>
+              obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
+              obs_fb_contactor, obs_fb_brake, obs_was_released>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -259,7 +280,8 @@ View == <<state, selector, session_mode, stop_category, fault_code,
           command_result, estop_mismatch, safeguard_mismatch,
           enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
           resume_to, jog, queue, axes, stale_commands, estop_tested_a, estop_tested_b,
-          enable_release_required, Held(inputs), obsVars>>
+          enable_release_required, contactor_fb_cycles, brake_fb_cycles,
+          contactor_fb_cmd, brake_fb_cmd, Held(inputs), obsVars>>
 
 \* The manager state as one record, so that the sections can be composed.
 Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
@@ -271,7 +293,9 @@ Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
         resume_to |-> resume_to, jog |-> jog, queue |-> queue, axes |-> axes,
         stale_commands |-> stale_commands, estop_tested_a |-> estop_tested_a,
         estop_tested_b |-> estop_tested_b,
-        enable_release_required |-> enable_release_required]
+        enable_release_required |-> enable_release_required,
+        contactor_fb_cycles |-> contactor_fb_cycles, brake_fb_cycles |-> brake_fb_cycles,
+        contactor_fb_cmd |-> contactor_fb_cmd, brake_fb_cmd |-> brake_fb_cmd]
 
 SetMgr(m) ==
     /\ state' = m.state                 /\ selector' = m.selector
@@ -287,6 +311,8 @@ SetMgr(m) ==
     /\ stale_commands' = m.stale_commands
     /\ estop_tested_a' = m.estop_tested_a /\ estop_tested_b' = m.estop_tested_b
     /\ enable_release_required' = m.enable_release_required
+    /\ contactor_fb_cycles' = m.contactor_fb_cycles /\ brake_fb_cycles' = m.brake_fb_cycles
+    /\ contactor_fb_cmd' = m.contactor_fb_cmd /\ brake_fb_cmd' = m.brake_fb_cmd
     /\ queue' = m.queue                 /\ axes' = m.axes
 
 -----------------------------------------------------------------------------
@@ -362,6 +388,13 @@ C01_Guard(m, in) == m.state = "ERROR_LOCKOUT"                   \* RSM-04
 C02_Guard(m, in) == m.state = "BOOT" /\ ~in.self_test_ok        \* RSM-12
 C03_Guard(m, in) == DiscrepancyCode(m) # "NONE"                 \* RSM-04, RSM-02
 C24_Guard(m, in) == ~in.fieldbus_ok                             \* seed, RSM-03
+\* C30 (issue 29 item 10): a contactor or brake feedback that disagreed with
+\* its command for more than FeedbackCycles cycles (FeedbackMonitor below).
+FeedbackCode(m) ==
+    IF      m.contactor_fb_cycles > FeedbackCycles THEN "CONTACTOR_FEEDBACK"
+    ELSE IF m.brake_fb_cycles > FeedbackCycles     THEN "BRAKE_FEEDBACK"
+    ELSE "NONE"
+C30_Guard(m, in) == FeedbackCode(m) # "NONE"                    \* RSM-03, RSM-07
 C04_Guard(m, in) == m.state = "BOOT" /\ EstopTripped(in)        \* RSM-12
 C05_Guard(m, in) == m.state = "BOOT"                            \* RSM-12
 C06_Guard(m, in) == m.state # "ESTOP_ACTIVE" /\ EstopTripped(in) \* RSM-05
@@ -408,6 +441,7 @@ C01(m, in) == m                                        \* stay: only re-init lea
 C02(m, in) == Lockout(m, "SELF_TEST_FAILED")
 C03(m, in) == Lockout(m, DiscrepancyCode(m))
 C24(m, in) == Lockout(m, "FIELDBUS_LOSS")
+C30(m, in) == Lockout(m, FeedbackCode(m))
 C04(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
 C05(m, in) == Enter(m, "IDLE")
 C06(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
@@ -459,6 +493,7 @@ SafetyRow(m, in) ==
     ELSE IF C02_Guard(m, in) THEN "C02"
     ELSE IF C03_Guard(m, in) THEN "C03"
     ELSE IF C24_Guard(m, in) THEN "C24"
+    ELSE IF C30_Guard(m, in) THEN "C30"
     ELSE IF C04_Guard(m, in) THEN "C04"
     ELSE IF C05_Guard(m, in) THEN "C05"
     ELSE IF C09_Guard(m, in) THEN "C09"
@@ -501,7 +536,7 @@ Safety(m, in) ==
       [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
       [] r = "C25" -> C25(m, in) [] r = "C26" -> C26(m, in)
       [] r = "C27" -> C27(m, in) [] r = "C28" -> C28(m, in)
-      [] r = "C29" -> C29(m, in)
+      [] r = "C29" -> C29(m, in) [] r = "C30" -> C30(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
@@ -640,16 +675,6 @@ AxesStep(m, in) ==
                  PLCopen!AxisStep(m.axes[i], DesiredAxis(m, i), in.speed = "ZERO")]]
 
 -----------------------------------------------------------------------------
-(***************************** The two events (§1) *************************)
-\* One scan cycle: §3, §5, §6 (against the state after §5), §8.
-AfterSafety(in) == Safety(Monitor(Mgr, in), in)
-AfterCycle(in)  == AxesStep(CommandStep(AfterSafety(in), in), in)
-
-\* Submit: a full queue rejects at once with QUEUE_FULL (RSM-14).
-AfterSubmit(c) ==
-    IF Len(queue) < QueueCapacity THEN [Mgr EXCEPT !.queue = Append(@, c)]
-    ELSE [Mgr EXCEPT !.last_reject_reason = "QUEUE_FULL"]
-
 (************************ Outputs (§7, RSM-16) *****************************)
 \* Each output as a function of a manager record: the requirement observers
 \* read the outputs before and after a cycle.
@@ -674,8 +699,50 @@ NoMotionOut(m) ==
     /\ CommandedSpeedOut(m) = 0 /\ ~RampDownOut(m) /\ m.state \notin Motion
     /\ \A i \in Axes : m.axes[i] \notin PLCopen!MotionStates
 
+\* C30's monitoring (§3, every cycle, every state; C++ FeedbackMonitor): the
+\* command is the output at the cycle's start (written by the previous cycle),
+\* the feedback the input of this cycle. A disagreement counts; agreement
+\* restarts the count; a command change during a disagreement restarts it at
+\* 1 (the device gets its full switching time); above FeedbackCycles it latches.
+FbCount(n, last, cmd, fb) ==
+    IF n > FeedbackCycles THEN n
+    ELSE IF cmd = fb THEN 0
+    ELSE IF n > 0 /\ cmd # last THEN 1
+    ELSE n + 1
+FbLast(n, last, cmd, fb) ==
+    IF n > FeedbackCycles THEN last ELSE IF cmd = fb THEN FALSE ELSE cmd
+
+FeedbackMonitor(m, in) ==
+    LET c == ContactorOut(m)
+        b == BrakeReleaseOut(m)
+    IN [m EXCEPT
+          !.contactor_fb_cycles = FbCount(m.contactor_fb_cycles, m.contactor_fb_cmd, c, in.contactor_fb),
+          !.contactor_fb_cmd    = FbLast(m.contactor_fb_cycles, m.contactor_fb_cmd, c, in.contactor_fb),
+          !.brake_fb_cycles     = FbCount(m.brake_fb_cycles, m.brake_fb_cmd, b, in.brake_fb),
+          !.brake_fb_cmd        = FbLast(m.brake_fb_cycles, m.brake_fb_cmd, b, in.brake_fb)]
+
+\* §3 with the feedback monitoring: what the §5 rows read.
+Monitored(in) == FeedbackMonitor(Monitor(Mgr, in), in)
+
+(***************************** The two events (§1) *************************)
+\* One scan cycle: §3, §5, §6 (against the state after §5), §8.
+AfterSafety(in) == Safety(Monitored(in), in)
+AfterCycle(in)  == AxesStep(CommandStep(AfterSafety(in), in), in)
+
+\* Submit: a full queue rejects at once with QUEUE_FULL (RSM-14).
+AfterSubmit(c) ==
+    IF Len(queue) < QueueCapacity THEN [Mgr EXCEPT !.queue = Append(@, c)]
+    ELSE [Mgr EXCEPT !.last_reject_reason = "QUEUE_FULL"]
+
 \* The kind of the command the next cycle pops, "NONE" if the queue is empty.
 Popped == IF queue = << >> THEN "NONE" ELSE Head(queue).kind
+
+\* UCA-RSM-13's observer: consecutive cycles feedback # output at the start,
+\* 1 again when the output changed since the previous cycle's start.
+ObsFb(o, prev, cmd, fb) ==
+    IF fb = cmd THEN 0
+    ELSE IF o > 0 /\ cmd # prev THEN 1
+    ELSE Min(o + 1, FeedbackCycles + 1)
 
 Cycle(in) ==
     LET m2  == AfterSafety(in)
@@ -718,6 +785,9 @@ Cycle(in) ==
             (PowerOut(Mgr) /\ NoMotionOut(Mgr) /\ in.speed # "ZERO")
        /\ t1_overspeed' = (session_mode = "T1" /\ in.speed \in {"OVER_T1", "OVER_T2"})
        /\ obs_t2_overspeed' = (session_mode = "T2" /\ in.speed = "OVER_T2")
+       /\ obs_fb_contactor' = ObsFb(obs_fb_contactor, obs_was_enabled, ContactorOut(Mgr), in.contactor_fb)
+       /\ obs_fb_brake' = ObsFb(obs_fb_brake, obs_was_released, BrakeReleaseOut(Mgr), in.brake_fb)
+       /\ obs_was_released' = BrakeReleaseOut(Mgr)
        /\ obs_booted' = TRUE
        /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
        /\ obs_arming' = IF DriveEnableOut(m) /\ ~in.servo_ready
@@ -745,7 +815,8 @@ Submit(c) ==
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
                    obs_booted, obs_self_test_failed, obs_arming, obs_link_lost,
-                   obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed>>
+                   obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
+                   obs_fb_contactor, obs_fb_brake, obs_was_released>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -795,9 +866,13 @@ FreeChoices ==
 FreeDefault == [speed |-> "ZERO", servo_ready |-> state \in ReadyStates,
                 drive_fault |-> FALSE, self_test_ok |-> TRUE]
 
+\* The feedback follows its command (the output at the cycle's start) unless a
+\* FeedbackDisagree cycle says otherwise.
 WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
                             !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok,
-                            !.fieldbus_ok = TRUE, !.operator_link_ok = TRUE]
+                            !.fieldbus_ok = TRUE, !.operator_link_ok = TRUE,
+                            !.contactor_fb = ContactorOut(Mgr),
+                            !.brake_fb = BrakeReleaseOut(Mgr)]
 
 \* Fieldbus/cycle watchdog loss (C24) is a cycle of its own, the other free
 \* signals at their defaults: C24 precedes every row that reads them but
@@ -812,6 +887,16 @@ FieldbusLoss(cur) ==
 LinkLoss(cur) ==
     IF state # "MANUAL_JOGGING" THEN {}
     ELSE {[WithFree(cur, FreeDefault) EXCEPT !.operator_link_ok = FALSE]}
+
+\* A contactor or brake feedback that disagrees with its command (a welded or
+\* not pulling-in contactor, a brake that stays applied or released) is a cycle
+\* of its own, the other free signals at their defaults, in every state but
+\* lockout: the counters are read by C30 only, which precedes every row that
+\* reads a free signal but C02 (design page §13, the environment).
+FeedbackDisagree(cur) ==
+    IF state = "ERROR_LOCKOUT" \/ ~FeedbackInputs THEN {}
+    ELSE {[WithFree(cur, FreeDefault) EXCEPT !.contactor_fb = ~ContactorOut(Mgr)],
+          [WithFree(cur, FreeDefault) EXCEPT !.brake_fb = ~BrakeReleaseOut(Mgr)]}
 
 \* An E-stop change together with any free choice (issue 29 item 7: an
 \* E-stop pressed in the cycle that reads a drive fault, the drives not
@@ -830,9 +915,10 @@ EstopWithFree(cur) ==
 NextInputs(cur) ==
     IF CombineChanges
     THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
-         \cup FieldbusLoss(cur) \cup LinkLoss(cur)
+         \cup FieldbusLoss(cur) \cup LinkLoss(cur) \cup FeedbackDisagree(cur)
     ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)} \cup EstopWithFree(cur)
          \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur) \cup LinkLoss(cur)
+         \cup FeedbackDisagree(cur)
 
 \* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
 \* off, every axis Disabled.
@@ -861,6 +947,9 @@ Init ==
     /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
     /\ obs_was_enabled = FALSE    /\ obs_ready_lost = FALSE /\ obs_panic = FALSE
     /\ obs_t2_overspeed = FALSE
+    /\ contactor_fb_cycles = 0    /\ brake_fb_cycles = 0
+    /\ contactor_fb_cmd = FALSE   /\ brake_fb_cmd = FALSE
+    /\ obs_fb_contactor = 0       /\ obs_fb_brake = 0 /\ obs_was_released = FALSE
     /\ enable_release_required = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
@@ -923,6 +1012,10 @@ TypeOK ==
     /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
     /\ obs_was_enabled \in BOOLEAN /\ obs_ready_lost \in BOOLEAN /\ obs_panic \in BOOLEAN
     /\ obs_t2_overspeed \in BOOLEAN
+    /\ contactor_fb_cycles \in 0..(FeedbackCycles + 1) /\ brake_fb_cycles \in 0..(FeedbackCycles + 1)
+    /\ contactor_fb_cmd \in BOOLEAN /\ brake_fb_cmd \in BOOLEAN
+    /\ obs_fb_contactor \in 0..(FeedbackCycles + 1) /\ obs_fb_brake \in 0..(FeedbackCycles + 1)
+    /\ obs_was_released \in BOOLEAN
     /\ enable_release_required \in BOOLEAN
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     /\ obs_link_lost \in BOOLEAN
@@ -1106,6 +1199,16 @@ UCA_T2_OVERSPEED ==
     /\ session_mode = "T2" => commanded_speed_mm_s <= T2SpeedLimit
     /\ obs_t2_overspeed => Unpowered /\ Locked
 
+\* UCA-RSM-13 (RSM-03, RSM-07, issue 29 item 10): a contactor feedback (the
+\* safety relay's auxiliary contact) or a brake feedback that disagrees with
+\* its command for FeedbackCycles + 1 consecutive cycles with the command
+\* unchanged ends that cycle with every power output off and a fault shown
+\* (bound: FeedbackCycles + 1 cycles of disagreement; a welded contactor is
+\* seen while it is commanded open, a brake that does not release while
+\* commanded released).
+UCA_FEEDBACK ==
+    obs_fb_contactor > FeedbackCycles \/ obs_fb_brake > FeedbackCycles => Unpowered /\ Locked
+
 \* UCA-RSM-05 (RSM-09, ISO 10218-1 5.8.3, issue 29 item 6): once the
 \* enabling device was read in PANIC (either channel), no drive is enabled
 \* in a manual session until both channels were read RELEASED.
@@ -1188,6 +1291,8 @@ Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
 Witness_UCA_BRAKE_ORDER      == ~brake_release
 Witness_UCA_READY_LOST       == ~obs_ready_lost
 Witness_UCA_T2_OVERSPEED     == ~obs_t2_overspeed
+Witness_UCA_FEEDBACK         == ~(obs_fb_contactor > FeedbackCycles)
+Witness_UCA_FEEDBACK_BRAKE   == ~(obs_fb_brake > FeedbackCycles)
 \* (the panic observer set and the device back in MIDDLE, unpowered)
 Witness_UCA_PANIC_REARM      == ~(obs_panic /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE")
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
@@ -1236,7 +1341,7 @@ RowsFiredBy(in) ==
     LET m2 == AfterSafety(in)
         k  == IF queue = << >> THEN {}
               ELSE {CommandRow([m2 EXCEPT !.queue = Tail(@)], Head(queue), in)}
-    IN {SafetyRow(Monitor(Mgr, in), in)} \cup k
+    IN {SafetyRow(Monitored(in), in)} \cup k
 
 NextRows == UNION {RowsFiredBy(in) : in \in NextInputs(inputs)}
 

@@ -76,6 +76,13 @@ Strengthen_OBSERVERS ==
     /\ obs_panic <=> enable_release_required
     /\ t2_confirmed => obs_t2 = state_cycles + 1
     /\ state = "IDLE" => state_cycles <= T2ConfirmTimeoutCycles
+    \* C30: outside lockout the observers count what the feedback monitors count,
+    \* below the latch, and a running count remembers the previous cycle's command
+    /\ state # "ERROR_LOCKOUT" =>
+          /\ obs_fb_contactor = contactor_fb_cycles /\ obs_fb_brake = brake_fb_cycles
+          /\ contactor_fb_cycles <= FeedbackCycles /\ brake_fb_cycles <= FeedbackCycles
+          /\ contactor_fb_cycles > 0 => contactor_fb_cmd = obs_was_enabled
+          /\ brake_fb_cycles > 0 => brake_fb_cmd = obs_was_released
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
 \* changes while a jog is kept: Enter keeps session_mode in powered states).
@@ -96,4 +103,5 @@ Strengthen_ALL ==
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
     /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
     /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM /\ UCA_T2_OVERSPEED
+    /\ UCA_FEEDBACK
 =============================================================================

@@ -127,6 +127,9 @@ bool jog_arguments_invalid(const StepContext& c) noexcept {
 
 bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }
 
+// C30: a feedback monitor latched (the contactor or the brakes did not follow their command).
+bool feedback_fault(const StepContext& c) noexcept { return c.in.feedback != FaultCode::None; }
+
 // C24: the fieldbus (EtherCAT) or the cycle watchdog reports a loss.
 bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
 
@@ -176,6 +179,7 @@ void lockout_t2_overspeed(StepContext& c) noexcept { c.state = states::ErrorLock
 void lockout_arming_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::ArmingTimeout}; }
 void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
 void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::FieldbusLoss}; }
+void lockout_feedback(StepContext& c) noexcept { c.state = states::ErrorLockout{c.in.feedback}; }
 void lockout_standstill_violation(StepContext& c) noexcept {
   c.state = states::ErrorLockout{FaultCode::StandstillViolation};
 }

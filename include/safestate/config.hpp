@@ -23,6 +23,10 @@ inline constexpr std::size_t kMaxQueueCapacity = 16;
 /// parameter + 1) stays far from overflow. 2^31 - 1 cycles = 24 days at 1 ms.
 inline constexpr std::uint32_t kMaxTimerCycles = 0x7FFF'FFFFU;
 
+/// Upper bound of feedback_allowed_cycles: 1 s at 1 ms, beyond any contactor's or brake's
+/// switching time, so that a welded contactor is seen long before an operator can act on it.
+inline constexpr std::uint32_t kMaxFeedbackCycles = 1000;
+
 struct Config {
   std::uint32_t cycle_time_us{1000};         ///< scan cycle period (informative; timers count cycles)
   std::uint32_t discrepancy_cycles{50};      ///< D: tolerated cycles of channel disagreement (§3)
@@ -42,6 +46,9 @@ struct Config {
   std::uint16_t fieldbus_expected_working_counter{18};
   /// Missed bus cycles in a row tolerated before C24 (0 = none), at most kMaxFieldbusLostCycles.
   std::uint32_t fieldbus_lost_cycles_limit{0};
+  /// Cycles the contactor and brake feedback may disagree with their command (the devices'
+  /// switching time, C30), at most kMaxFeedbackCycles.
+  std::uint32_t feedback_allowed_cycles{100};
   DhTable dh{kUr5DhTable};  ///< arm kinematics (UR5 standard DH)
   /// Tool centre point in the flange (last DH) frame, metres: the T1 speed (RSM-10) is
   /// measured at the tool tip, not at the flange. No default: the integrator states the
@@ -101,6 +108,9 @@ inline constexpr std::array<double, 3> kFlangeTcp{0.0, 0.0, 0.0};
   }
   if (c.fieldbus_lost_cycles_limit > kMaxFieldbusLostCycles) {
     return ConfigError::FieldbusToleranceTooLarge;
+  }
+  if (c.feedback_allowed_cycles > kMaxFeedbackCycles) {
+    return ConfigError::FeedbackTimeTooLarge;
   }
   if (!c.tool_offset_m.has_value()) {
     return ConfigError::ToolOffsetNotGiven;

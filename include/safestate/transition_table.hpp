@@ -55,6 +55,7 @@ bool in_auto(const StepContext&) noexcept;
 bool jog_arguments_invalid(const StepContext&) noexcept;
 bool enable_not_middle(const StepContext&) noexcept;
 bool fieldbus_lost(const StepContext&) noexcept;
+bool feedback_fault(const StepContext&) noexcept;
 bool operator_link_lost(const StepContext&) noexcept;
 bool moving_at_standstill(const StepContext&) noexcept;
 bool reset_submitted_before_release(const StepContext&) noexcept;
@@ -76,6 +77,7 @@ void lockout_t2_overspeed(StepContext&) noexcept;
 void lockout_arming_timeout(StepContext&) noexcept;
 void lockout_stop_timeout(StepContext&) noexcept;
 void lockout_fieldbus_loss(StepContext&) noexcept;
+void lockout_feedback(StepContext&) noexcept;
 void lockout_standstill_violation(StepContext&) noexcept;
 void reset_to_idle(StepContext&) noexcept;
 void enter_estop_active(StepContext&) noexcept;
@@ -148,13 +150,14 @@ struct Effect {
 #define SAFESTATE_ACTION(fn) &::safestate::actions::fn, #fn
 
 // clang-format off
-inline constexpr std::array<TransitionRow, 68> kRows{{
+inline constexpr std::array<TransitionRow, 69> kRows{{
   // ---- §5: one scan cycle, after channel monitoring (§3) ---------------------------------------
   // id     event      source                    guard                                                              effect                                                                       stop        requirements
   row("C01", Ev::Cycle, {St::ErrorLockout},       SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-04, INV-DISCREPANCY"),
   row("C02", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(self_test_failed_or_config_invalid),              enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_self_test_failed)),       Stop::Cat0, "RSM-12"),
   row("C03", Ev::Cycle, any(),                    SAFESTATE_GUARD(discrepancy_fault),                               enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_discrepancy)),            Stop::Cat0, "RSM-04, RSM-02"),
   row("C24", Ev::Cycle, any(),                    SAFESTATE_GUARD(fieldbus_lost),                                   enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_fieldbus_loss)),          Stop::Cat0, "RSM-03, seed"),
+  row("C30", Ev::Cycle, any(),                    SAFESTATE_GUARD(feedback_fault),                                  enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_feedback)),               Stop::Cat0, "RSM-03, RSM-07, UCA-RSM-13"),
   row("C04", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(estop_tripped),                                   enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-12"),
   row("C05", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(always),                                          enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Keep, "RSM-12"),
   // The latching rows before C06: an E-stop in the same cycle keeps the lockout (issue 29 item 7).
@@ -233,8 +236,8 @@ inline constexpr std::array<TransitionRow, 68> kRows{{
 }  // namespace table_dsl
 
 /// The table, §5 rows then §6 rows.
-inline constexpr const std::array<TransitionRow, 68>& kTransitionTable = table_dsl::kRows;
-inline constexpr std::size_t kCycleRowCount = 29;    // C01..C29
+inline constexpr const std::array<TransitionRow, 69>& kTransitionTable = table_dsl::kRows;
+inline constexpr std::size_t kCycleRowCount = 30;    // C01..C30
 inline constexpr std::size_t kCommandRowCount = 39;  // K01..K39
 
 // ---- Compile-time audit of the table ---------------------------------------------------------
@@ -247,7 +250,7 @@ namespace table_check {
 }
 
 /// C rows then K rows, each id Cnn / Knn within its section's count (rows added by a later
-/// change take the next free number and sit where first-match needs them: C24-C29, K36-K39).
+/// change take the next free number and sit where first-match needs them: C24-C30, K36-K39).
 [[nodiscard]] constexpr bool ids_in_order() noexcept {
   for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
     const bool cycle = i < kCycleRowCount;
@@ -324,8 +327,8 @@ namespace table_check {
 
 }  // namespace table_check
 
-static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "68 rows: C01-C29, K01-K39");
-static_assert(table_check::ids_in_order(), "row ids must be C01..C29 then K01..K39");
+static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "69 rows: C01-C30, K01-K39");
+static_assert(table_check::ids_in_order(), "row ids must be C01..C30 then K01..K39");
 static_assert(table_check::ids_unique(), "row ids must be unique");
 static_assert(table_check::events_match_sections(), "C rows are cycle rows, K rows command rows");
 static_assert(table_check::effects_well_formed(), "every reject row needs a reason; effects must be well formed");

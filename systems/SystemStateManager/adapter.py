@@ -76,7 +76,9 @@ class SystemStateManagerAdapter(Adapter):
                           # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
                           "stale_commands", "estop_tested_a", "estop_tested_b",
                           # issue 29 item 6: K39's memory of a PANIC since the last RELEASED.
-                          "enable_release_required")
+                          "enable_release_required",
+                          # issue 29 item 10: C30's feedback monitors (FeedbackMonitor's counts).
+                          "contactor_fb_cycles", "brake_fb_cycles")
     split_records = {"jog": (("jog_axis", "axis"), ("jog_direction", "direction"),
                              ("jog_speed_mm_s", "speed_mm_s"))}
     observed_operators = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request",
@@ -90,7 +92,11 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
                         "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
-                        "obs_panic", "obs_t2_overspeed")
+                        "obs_panic", "obs_t2_overspeed", "obs_fb_contactor", "obs_fb_brake",
+                        "obs_was_released",
+                        # FeedbackMonitor's last command: read only while a disagreement
+                        # counts, and then the command of the previous cycle (not in status).
+                        "contactor_fb_cmd", "brake_fb_cmd")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
@@ -99,6 +105,7 @@ class SystemStateManagerAdapter(Adapter):
         "T1SpeedLimit": "t1_speed_limit_mm_s",
         "T2SpeedLimit": "t2_speed_limit_mm_s",
         "QueueCapacity": "command_queue_limit",
+        "FeedbackCycles": "feedback_allowed_cycles",
     }
     rows_operator = "RowsFiredBy"
     # Design page §6: "K17 after C13; K22 after C13; K23 and K28 after C11/C14".
@@ -142,6 +149,9 @@ class SystemStateManagerAdapter(Adapter):
             "fieldbus_ok": rec["fieldbus_ok"],
             # issue 16 (C26): the operator link's heartbeat monitor.
             "operator_link_ok": rec["operator_link_ok"],
+            # issue 29 item 10 (C30): the contactor's auxiliary contact, the brakes' feedback.
+            "contactor_feedback_closed": rec["contactor_fb"],
+            "brake_feedback_released": rec["brake_fb"],
             "q": POSE, "qd": self.speeds[rec["speed"]][0],  # type: ignore[index]
         }
         if key is not None:
@@ -193,6 +203,9 @@ class SystemStateManagerAdapter(Adapter):
         for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok", "operator_link_ok"):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
+        for name, raw_name in (("contactor_fb", "contactor_feedback_closed"), ("brake_fb", "brake_feedback_released")):
+            for v in BOOLS:
+                add(f"{name} {v}", {name: v}, {raw_name: v})
         probes += self._combined_disagreement_probes(state, cur, base)
         probes += self._hazard_probes(state, cur, base)
         if not state[self.index["queue"]]:
@@ -253,6 +266,12 @@ class SystemStateManagerAdapter(Adapter):
         unready = ({"servo_ready": False}, {"servo_ready": False})
         stop_cycles = int(self.constants["MaxStopCycles"]) + 2
         arming_cycles = int(self.constants["ArmingTimeoutCycles"]) + 2
+        feedback_cycles = int(self.constants["FeedbackCycles"]) + 2
+        # a stuck feedback: the opposite of what the outputs of this state command
+        powered = state[self.index["state"]] in ("ARMING", "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE",
+                                                 "MANUAL_JOGGING", "STOPPING", "HOLD")
+        stuck_contactor = not powered
+        stuck_brake = not (powered and state[self.index["state"]] != "ARMING")
         return [
             seq("UCA-RSM-06 E-stop and a drive fault in one cycle",
                 [cyc(dict(estop[0], drive_fault=True), dict(estop[1], drive_fault=True))]),
@@ -265,6 +284,12 @@ class SystemStateManagerAdapter(Adapter):
                 [cyc({"estop_b": False, "speed": "OVER_T2"},
                      {"estop_closed_b": False, "qd": self.speeds["OVER_T2"][0]})]),
             seq("UCA-RSM-03 servo_ready lost, held 3 cycles", [cyc(*unready)] * 3),
+            seq(f"UCA-RSM-13 contactor feedback stuck, {feedback_cycles} cycles",
+                [cyc({"contactor_fb": stuck_contactor}, {"contactor_feedback_closed": stuck_contactor})]
+                * feedback_cycles),
+            seq(f"UCA-RSM-13 E-stop with the brake feedback stuck, {feedback_cycles} cycles",
+                [cyc(dict(estop[0], brake_fb=stuck_brake), dict(estop[1], brake_feedback_released=stuck_brake))]
+                * feedback_cycles),
             seq("UCA-RSM-05 enabling PANIC, back to MIDDLE, then Servo-on",
                 [cyc(*panic), cyc(*middle), sub("SERVO_ON"), cyc(*middle)]),
             seq(f"UCA-RSM-07 JOG_STOP with the arm still moving, {stop_cycles} cycles",

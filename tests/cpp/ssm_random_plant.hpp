@@ -26,7 +26,11 @@ class RandomPlant {
   /// (power off, or every axis Disabled/StandStill): the robot then stays at rest but for
   /// a rare creep (a fault that the standstill monitor, C25, must catch).
   /// `bus`: the manager's watchdog, from which the simulated master numbers its frames.
-  const ScanInputs& next(const FieldbusWatchdog& bus, bool at_rest_commanded = false) {
+  /// `last`: the outputs the manager wrote last, which the contactor's and the brakes'
+  /// feedback follow but for a rare one-cycle glitch (C30 tolerates it).
+  const ScanInputs& next(const FieldbusWatchdog& bus, bool at_rest_commanded, const ScanOutputs& last) {
+    in_.contactor_feedback_closed = chance(0.0005) ? !last.contactor_closed : last.contactor_closed;
+    in_.brake_feedback_released = chance(0.0005) ? !last.brake_release : last.brake_release;
     follow(estop_demand_, in_.estop_closed, 0.004, 0.03);
     follow(gate_demand_, in_.safeguard_closed, 0.01, 0.03);
     // Enabling device: the operator moves it; the two channels follow with a lag.

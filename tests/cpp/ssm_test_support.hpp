@@ -92,9 +92,16 @@ class Rig {
   /// (status words, cycle counter, working counter) the manager decodes itself.
   sim::BusLevels plant{};
   ScanOutputs out{};
+  /// The contactor's and the brakes' feedback follow the last outputs (ideal devices, C30);
+  /// a test of the feedback monitoring sets it false and drives them itself.
+  bool ideal_feedback{true};
 
   void cycle() {
     in.bus = sim::bus_image(m.fieldbus_watchdog(), plant);
+    if (ideal_feedback) {
+      in.contactor_feedback_closed = out.contactor_closed;
+      in.brake_feedback_released = out.brake_release;
+    }
     out = m.cycle(in);
   }
   void cycles(std::uint32_t n) {

@@ -53,7 +53,7 @@ std::array<std::uint64_t, kStateCount> walk(const Config& config, std::uint32_t 
       Command c;
       if (plant.next_command(c)) (void)m->submit(c);
       const StatusRecord before = m->status();
-      const ScanInputs& in = plant.next(m->fieldbus_watchdog(), RandomPlant::at_rest(m->outputs()));
+      const ScanInputs& in = plant.next(m->fieldbus_watchdog(), RandomPlant::at_rest(m->outputs()), m->outputs());
       const ScanOutputs out = m->cycle(in);
       const StatusRecord after = m->status();
       check(Step{*m, in, before, after, out, m->derived_inputs()});

@@ -59,7 +59,7 @@ TEST(Issue29_Item5_T2Limits, TheT2ConfirmationExpiresAfterItsConfiguredTime) {
     r.boot(SelectorReading::T2);
     ASSERT_EQ(r.command(Command::t2_confirm()), CommandResult::accepted());  // K35, cycle n
     r.cycles(4 + wait);                                                      // n+1 .. n+4(+1)
-    EXPECT_EQ(r.st().state_cycles, 4U + wait);  // cleared by the next cycle's C22 once it reaches 5
+    EXPECT_EQ(r.st().state_cycles, 4U + wait);                 // cleared by the next cycle's C22 once it reaches 5
     const CommandResult got = r.command(Command::servo_on());  // popped in cycle n+5(+1)
     if (wait == 0U) {
       EXPECT_EQ(got, CommandResult::accepted());

@@ -10,7 +10,8 @@ from safestate import _core as core
 POSE = [0.0, -1.2, 1.1, -1.4, -1.57, 0.0]
 REST = [0.0] * 6
 SLOW = [0.05, 0, 0, 0, 0, 0]
-FAST = [2.0, 0, 0, 0, 0, 0]
+FAST = [2.0, 0, 0, 0, 0, 0]  # above the T2 limit (1000 mm/s) at POSE
+MEDIUM = [1.0, 0, 0, 0, 0, 0]  # between the T1 and the T2 limit
 
 STATUS_KEYS = {
     "state", "selector", "session_mode", "stop_category", "fault_code", "last_reject_reason",
@@ -137,7 +138,7 @@ def test_jog_speed_is_clamped_in_t1_and_overspeed_locks_out_rsm10():
     m.cycle(healthy("T1", qd=FAST))
     obs = m.observe()
     assert (obs["state"], obs["fault_code"], obs["contactor_closed"]) == ("ERROR_LOCKOUT", "T1_OVERSPEED", False)
-    assert m.derived_inputs()["speed"] == "OVER_T1"
+    assert m.derived_inputs()["speed"] == "OVER_T2"  # FAST is above the T2 limit too: C10's in T1
 
 
 @pytest.mark.req("RSM-08", "INV-NOJOG-AUTO")
@@ -202,7 +203,8 @@ def test_transition_table_lists_c01_to_c28_and_k01_to_k39_and_matches_json_and_d
 def test_speed_level_and_tcp_speed():
     assert core.speed_level(POSE, REST) == "ZERO"
     assert core.speed_level(POSE, SLOW) == "MOVING"
-    assert core.speed_level(POSE, FAST) == "OVER_T1"
+    assert core.speed_level(POSE, FAST) == "OVER_T2"
+    assert core.speed_level(POSE, MEDIUM) == "OVER_T1"
     assert core.tcp_speed_mm_s(POSE, REST) == 0.0
     assert 0.0 < core.tcp_speed_mm_s(POSE, SLOW) < 250.0 < core.tcp_speed_mm_s(POSE, FAST)
     slow_limit = core.Config(t1_speed_limit_mm_s=10)
@@ -255,4 +257,4 @@ def test_names_lists_every_enum():
     names = core.names()
     assert names["state"][0] == "BOOT" and len(names["state"]) == 12
     assert "QUEUE_FULL" in names["reject_reason"]
-    assert names["speed_level"] == ["ZERO", "MOVING", "OVER_T1"]
+    assert names["speed_level"] == ["ZERO", "MOVING", "OVER_T1", "OVER_T2"]
