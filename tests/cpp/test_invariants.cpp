@@ -34,6 +34,7 @@ Config walk_config() {
   c.arming_timeout_cycles = 25;
   c.max_stop_cycles = 120;
   c.command_queue_limit = 4;
+  c.feedback_allowed_cycles = 3;  // the plant's stuck feedback episodes last 1..6 cycles
   return c;
 }
 
