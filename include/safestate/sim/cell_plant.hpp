@@ -53,6 +53,9 @@ class CellPlant {
 
   /// Advance the plant by one cycle given the controller's last outputs.
   void react(const ScanOutputs& out, StateId state, const JogSetpoint& jog) noexcept {
+    // The contactor's auxiliary contact and the brakes' feedback follow their command (C30).
+    in_.contactor_feedback_closed = out.contactor_closed;
+    in_.brake_feedback_released = out.brake_release;
     // Drives become ready 3 cycles after power-on.
     powered_cycles_ = out.contactor_closed ? powered_cycles_ + 1 : 0;
     levels_.servo_ready = powered_cycles_ >= 3;
