@@ -691,7 +691,9 @@ class Translator:
         self.leaf_params.append(params)
         return self.action(e, env, self.node(Op.A_EMIT, e.loc, (leaf,)))
 
-    def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
+    def _bound_slots(self, e: A.Quant, env: TEnv) -> tuple[tuple, list, TEnv]:
+        """The bound sets of a quantifier over actions, a slot for each bound name, and
+        the environment of its body (each name read from its slot)."""
         pairs = self.names_of(e.bounds, e.loc)
         sets = tuple(self.expr(s, env) for _, s in pairs)
         locals_ = dict(env.locals)
@@ -699,7 +701,11 @@ class Translator:
         for n, _ in pairs:
             slots.append(self.alloc())
             locals_[n] = SlotArg(slots[-1], None)
-        return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(replace(env, locals=locals_)),))
+        return sets, slots, replace(env, locals=locals_)
+
+    def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
+        sets, slots, inner = self._bound_slots(e, env)
+        return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(inner),))
 
     def action(self, e: A.Expr, env: TEnv, k: Node) -> Node:
         method = getattr(self, "a_" + type(e).__name__, None)
@@ -756,14 +762,7 @@ class Translator:
         """A plain boolean \\A (its body never branches) is a guard (None); otherwise TLC
         takes it as a conjunction of actions, one per binding (`ActionCompiler._forall`):
         A_FORALL, its body and the same body as a guard both ending in A_FORALL_NEXT."""
-        pairs = self.names_of(e.bounds, e.loc)
-        sets = tuple(self.expr(s, env) for _, s in pairs)
-        locals_ = dict(env.locals)
-        slots = []
-        for n, _ in pairs:
-            slots.append(self.alloc())
-            locals_[n] = SlotArg(slots[-1], None)
-        env2 = replace(env, locals=locals_)
+        sets, slots, env2 = self._bound_slots(e, env)
         index = self.foralls
         self.foralls += 1
         after = self.node(Op.A_FORALL_NEXT, e.loc, (index,))
