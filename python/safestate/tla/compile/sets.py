@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from .. import ast as A
-from ..constfold import const_value
+from ..constfold import NO_VALUE, const_value
 from ..env import Code, Env
 from ..errors import EvalError, Loc
 from ..modules import BuiltinSym, DefSym
@@ -90,6 +90,13 @@ class SetsMixin(CompilerHost):
             except EvalError as err:
                 raise err.with_loc(loc) from None
             return False
+        # Constant elements of one simple type (`{Idle, Busy}`, names of constants): a value
+        # of that type is found by hashing, with the scan's answer; any other goes the scan.
+        values = [const_value(c) for c in codes] if self.fast_paths and self.folder.is_constant(e, env) else []
+        kinds = {type(x) for x in values}
+        if values and NO_VALUE not in values and len(kinds) == 1 and kinds <= {int, str, bool}:
+            S, T = frozenset(values), kinds.pop()
+            return lambda s, t, L, v: (v in S) if type(v) is T else in_enum(s, t, L, v)
         return in_enum
 
     def c_SetFilter(self, e: A.SetFilter, env: Env) -> Code:
@@ -137,8 +144,8 @@ class SetsMixin(CompilerHost):
     def membership(self, set_expr: A.Expr, env: Env) -> Callable[[Any, Any, list, Value], bool]:
         """Compile ``v \\in set_expr`` without building structured sets."""
         e = set_expr
-        if isinstance(e, A.SetEnum) and len({type(x) for x in e.elems}) > 1 or (
-                isinstance(e, A.SetEnum) and not all(isinstance(x, (A.Num, A.Str, A.Bool)) for x in e.elems)):
+        if isinstance(e, A.SetEnum) and e.elems and not (len({type(x) for x in e.elems}) == 1
+                                                         and isinstance(e.elems[0], (A.Num, A.Str, A.Bool))):
             return self._in_enumeration(e, env)
         if self.fast_paths and self.folder.is_constant(e, env):
             fast = membership_const(const_value(self.expr(e, env)), e.loc)
