@@ -4,48 +4,52 @@
 # (safestate check), unbounded proofs (safestate prove), conformance of the C++
 # against its model (safestate conform), model mutants and tests -- run by
 # `safestate evidence`, which ends the job with the evidence package (build/evidence)
-# and prints its path and gap count.  SAFESTATE_CPP_MUTATION=N first measures the
-# C++ mutation score on a stratified sample of N mutants (slow; SAFESTATE_CPP_MUTATION_BUDGET
+# and prints its path and gap count; then what each step cost.
+# SAFESTATE_CPP_MUTATION=N first measures the C++ mutation score on a stratified sample of N mutants (slow; SAFESTATE_CPP_MUTATION_BUDGET
 # seconds, SAFESTATE_CPP_MUTATION_STRIDE K: the input-complete pass on every K-th state).
 # Exits non-zero as soon as one step fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+
+# Every step is timed; what each cost is printed when the job ends (or stops).
+step_names=(); step_seconds=()
+costs() {
+  [ ${#step_names[@]} -gt 0 ] || return 0
+  echo "== what each step cost (wall seconds)"
+  local total=0 i
+  for i in "${!step_names[@]}"; do
+    printf '%8d  %s\n' "${step_seconds[$i]}" "${step_names[$i]}"
+    total=$(( total + step_seconds[i] ))
+  done
+  printf '%8d  %s\n' "$total" "total"
+}
+trap costs EXIT
+step() {
+  local name=$1 t0=$SECONDS; shift
+  echo "== $name"
+  "$@"
+  step_names+=("$name"); step_seconds+=($(( SECONDS - t0 )))
+}
+
+step "set-up (scripts/setup.sh)" bash scripts/setup.sh
 SAFESTATE=.venv/bin/safestate
 
-echo "== systems"
-"$SAFESTATE" systems
+step "systems" "$SAFESTATE" systems
+step "demo scenario (C++ SystemStateManager, one line per change)" build/cpp/safestate_demo
+step "demo scenario (C++ Safety service over UDP on the loopback, one line per change)" "$SAFESTATE" demo saf
+step "demo scenario (C++ fan controller closed around its thermal plant, one line per tick)" \
+  "$SAFESTATE" demo protection
+step "demo scenario (the hydraulic press accident: flat reference and chain press side by side)" \
+  "$SAFESTATE" demo press
 
-echo "== demo scenario (C++ SystemStateManager, one line per change)"
-build/cpp/safestate_demo
-
-echo "== demo scenario (C++ Safety service over UDP on the loopback, one line per change)"
-"$SAFESTATE" demo saf
-
-echo "== demo scenario (C++ fan controller closed around its thermal plant, one line per tick)"
-"$SAFESTATE" demo protection
-
-echo "== demo scenario (the hydraulic press accident: flat reference and chain press side by side)"
-"$SAFESTATE" demo press
-
-echo "== model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)"
-"$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
-
-echo "== model check: the flagship with the native engine (must give TLC's counts, models/expected.json)"
-.venv/bin/python - <<'PY'
-import json, subprocess, sys
-want = json.load(open("models/expected.json"))["SystemStateManager"]
-out = subprocess.run([".venv/bin/safestate", "check", "models/SystemStateManager.tla", "--engine", "native", "--json"],
-                     capture_output=True, text=True)
-got = json.loads(out.stdout)
-keys = ("result", "distinct_states", "states_generated", "depth")
-print({k: got[k] for k in keys}, f"{got['seconds']} s")
-sys.exit(0 if all(got[k] == want[k] for k in keys) else 1)
-PY
+peers() {
+  "$SAFESTATE" check models/SafetyServicePeers.tla --workers 2 | grep -E "states generated|depth of the|No error|Error:|Finished in"
+}
+step "model check: models/SafetyServicePeers.tla (the Safety service against its explicit peers)" peers
 
 if [ -n "${SAFESTATE_CPP_MUTATION:-}" ]; then
-  echo "== C++ mutation score (universalmutator, stratified sample of $SAFESTATE_CPP_MUTATION mutants; slow)"
-  .venv/bin/python conform/cpp_mutants/score.py build/cpp-mutation --sample "$SAFESTATE_CPP_MUTATION" \
+  step "C++ mutation score (universalmutator, stratified sample of $SAFESTATE_CPP_MUTATION mutants; slow)" \
+    .venv/bin/python conform/cpp_mutants/score.py build/cpp-mutation --sample "$SAFESTATE_CPP_MUTATION" \
     --budget "${SAFESTATE_CPP_MUTATION_BUDGET:-3600}" --stride "${SAFESTATE_CPP_MUTATION_STRIDE:-1}"
 fi
 
@@ -57,26 +61,30 @@ fi
 # (about 500, each a 730k-step check) take hours on 2 cores: every system is measured on a
 # stratified sample of SAFESTATE_MUTATE_SAMPLE mutants (default 60, seed 1; a system with
 # fewer is measured whole; 0: every whole set), said so in its result.
-echo "== model mutation score of every system (safestate mutate)"
-sample="${SAFESTATE_MUTATE_SAMPLE:-60}"
-for s in $("$SAFESTATE" systems --names); do
-  args=()
-  if [ "$sample" != 0 ]; then
-    args=(--sample "$sample" --seed 1)
-  fi
+mutate_all() {
+  local sample="${SAFESTATE_MUTATE_SAMPLE:-60}" s args
   mkdir -p build/mutate
-  "$SAFESTATE" mutate "$s" --workers 2 "${args[@]}" > "build/mutate/$s.txt" 2> "build/mutate/$s.log"
-  head -1 "build/mutate/$s.txt"
-done
+  for s in $("$SAFESTATE" systems --names); do
+    args=()
+    if [ "$sample" != 0 ]; then
+      args=(--sample "$sample" --seed 1)
+    fi
+    "$SAFESTATE" mutate "$s" --workers 2 "${args[@]}" > "build/mutate/$s.txt" 2> "build/mutate/$s.log"
+    head -1 "build/mutate/$s.txt"
+  done
+}
+step "model mutation score of every system (safestate mutate)" mutate_all
 
 # The evidence chain of every system of the registry, and the package that shows it:
-# model check, unbounded proofs (every constant symbolic where its ASSUME allows),
-# conformance of the C++ against the model (trace replay of every transition,
-# Hypothesis lockstep, input-complete pass) where the system has an adapter, every
-# model mutant, GoogleTest and the requirement-named pytest tests, the flagship's
-# branch coverage under conformance; then index.html, the traceability matrix, the
-# diagrams and manifest.json (verify: safestate evidence --verify build/evidence).
+# model check (its counts compared with TLC's recorded figures, models/expected.json),
+# unbounded proofs (every constant symbolic where its ASSUME allows), conformance of the
+# C++ against the model (trace replay of every transition, Hypothesis lockstep,
+# input-complete pass) where the system has an adapter, every model mutant, GoogleTest
+# and the requirement-named pytest tests, the flagship's branch coverage under
+# conformance; then index.html, the traceability matrix, the diagrams and manifest.json
+# (verify: safestate evidence --verify build/evidence).  Two steps run side by side;
+# --reuse takes a step's cached result (build/evidence-cache) while its inputs are unchanged.
 # The last C++ mutation score (build/cpp-mutation/score.json) goes into the package.
-echo "== evidence: check, prove, conform, mutants and tests of every system; the evidence package"
-"$SAFESTATE" evidence --out build/evidence --coverage
+step "evidence: check, prove, conform, mutants and tests of every system; the evidence package" \
+  "$SAFESTATE" evidence --out build/evidence --coverage --reuse
 echo "== main job: all steps passed"

@@ -11,6 +11,7 @@ import json
 import os
 import re
 import shutil
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 from urllib.parse import unquote, urlparse
@@ -20,6 +21,7 @@ import pytest
 from conftest import REPO, run_safestate
 from safestate import browser
 from safestate.evidence.build import CACHE_ENV, REQUIREMENTS_COPY, find_requirements, shared_requirements
+from safestate.evidence.collect import Runner
 from safestate.evidence.sources import read_requirements
 
 REQUIREMENTS = find_requirements(REPO)
@@ -306,3 +308,54 @@ def test_evidence_an_invariant_gap_carries_its_design_page_reason(tmp_path: Path
     page.write_text("- HydraulicPressFlat.INV_PRESS (no test): x\n")  # a requirement's kind, not an invariant's
     with pytest.raises(RequirementLinkError, match=r"p.md:1:33: no test: not a gap kind"):
         gap_reasons(page, tmp_path, _known(), REQUIREMENT_GAP_KINDS, INVARIANT_GAP_KINDS)
+
+
+def _waits_for(mine: Path, other: Path) -> list[str]:
+    """A step that announces itself and then waits (up to 60 s) for the other one."""
+    code = (f"import pathlib, time; pathlib.Path({str(mine)!r}).touch(); t = time.monotonic()\n"
+            f"while not pathlib.Path({str(other)!r}).exists() and time.monotonic() - t < 60: time.sleep(0.01)\n"
+            f"raise SystemExit(0 if pathlib.Path({str(other)!r}).exists() else 1)")
+    return [sys.executable, "-c", code]
+
+
+def test_evidence_steps_run_side_by_side_on_two_job_slots(tmp_path: Path) -> None:
+    # Each step succeeds only if the other is running at the same time: with one slot
+    # the first would wait out its minute and fail.
+    a, b = tmp_path / "a", tmp_path / "b"
+    runner = Runner(tmp_path, tmp_path / "cache", reuse=False, log=lambda _: None, jobs=2)
+    try:
+        first = runner.submit("first", _waits_for(a, b), [])
+        second = runner.submit("second", _waits_for(b, a), [])
+        assert (first.result().returncode, second.result().returncode) == (0, 0)
+    finally:
+        runner.close()
+
+
+def test_evidence_step_reused_only_while_its_inputs_are_unchanged(tmp_path: Path) -> None:
+    model = tmp_path / "M.tla"
+    model.write_text("one")
+    argv = [sys.executable, "-c", f"print(open({str(model)!r}).read())"]
+    runner = Runner(tmp_path, tmp_path / "cache", reuse=True, log=lambda _: None)
+    try:
+        fresh = runner.run("step", argv, [model])
+        again = runner.run("step", argv, [model])
+        model.write_text("two")
+        changed = runner.run("step", argv, [model])
+    finally:
+        runner.close()
+    assert (fresh.cached, again.cached, changed.cached) == (False, True, False)
+    assert (again.stdout.strip(), changed.stdout.strip()) == ("one", "two")
+
+
+def test_evidence_fails_a_check_whose_counts_differ_from_tlcs_recorded_figures() -> None:
+    from safestate.evidence.build import tlc_difference
+    table = {"M": {"distinct_states": 10, "states_generated": 30, "depth": 4},
+             "M_small": {"model": "M", "distinct_states": 5, "states_generated": 9, "depth": 2}}
+    ok = {"result": "success", "distinct_states": 10, "states_generated": 30, "depth": 4}
+    assert tlc_difference(table, Path("models/M.cfg"), Path("models/M.tla"), ok) is None
+    off = dict(ok, states_generated=31)
+    assert tlc_difference(table, Path("models/M.cfg"), Path("models/M.tla"), off) == \
+        "counts differ from TLC's in models/expected.json: states_generated 31 (TLC: 30)"
+    # a cfg with no figures, or figures of another model's cfg of that name: nothing to compare
+    assert tlc_difference(table, Path("models/Other.cfg"), Path("models/Other.tla"), off) is None
+    assert tlc_difference(table, Path("models/M_small.cfg"), Path("models/N.tla"), off) is None

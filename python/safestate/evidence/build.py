@@ -4,8 +4,11 @@ diagrams, raw artefacts and the manifest into one self-contained folder."""
 from __future__ import annotations
 
 import json
+import os
 import re
 import shutil
+import subprocess
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from html import escape
@@ -16,10 +19,11 @@ from ..errors import UsageError
 from ..systems.registry import System, load_all, scan
 from . import diagrams, junit, manifest, model_mutation, render, sources, traces
 from .collect import Runner, StepResult
-from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_ok,
+from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, check_ok,
                      check_verdict, conform_summary, proofs_by_invariant)
 from .render import SystemPage
-from .steps import SystemRuns, cpp_files, model_files, run_ctest, run_pytest, run_system, system_inputs
+from ..checker.cfg import parse_config
+from .steps import SystemRuns, cpp_files, model_files, submit_ctest, submit_pytest, submit_system, system_inputs
 
 REQUIREMENTS_ENV = "SAFESTATE_REQUIREMENTS"
 CACHE_ENV = "SAFESTATE_EVIDENCE_CACHE"
@@ -42,6 +46,7 @@ class Options:
     screenshots: bool = True
     coverage: bool = False
     log: Callable[[str], None] = print
+    jobs: int = field(default_factory=lambda: min(2, os.cpu_count() or 1))   # steps run side by side
 
 
 @dataclass
@@ -49,12 +54,12 @@ class Result:
     out: Path
     gaps: int
     failures: list[str]
+    steps: list[dict[str, Any]] = field(default_factory=list)   # name, returncode, seconds, cached, key
 
 
 def cache_dir(root: Path) -> Path:
     """Where step results are cached: $SAFESTATE_EVIDENCE_CACHE, else build/evidence-cache
     (the tests use their own, so that a main job beside them never rewrites their steps)."""
-    import os
     return Path(os.environ.get(CACHE_ENV) or root / "build" / "evidence-cache")
 
 
@@ -77,7 +82,6 @@ def shared_requirements(root: Path) -> Path | None:
 def find_requirements(root: Path) -> Path | None:
     """REQUIREMENTS.md: $SAFESTATE_REQUIREMENTS, else ../shared/REQUIREMENTS.md, else the
     repository's copy (docs/requirements/)."""
-    import os
     env = os.environ.get(REQUIREMENTS_ENV)
     if env:
         return Path(env)
@@ -126,26 +130,12 @@ def build(opts: Options) -> Result:
         raise UsageError(str(e)) from None
     corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)], tests,
                             [u for p in pages for u in sources.unreachable_rows(p, root)], reasons)
-    runner = Runner(root, cache_dir(root), opts.reuse, opts.log)
-
-    facts: list[SystemFacts] = []
-    for s in systems:
-        runs = run_system(runner, s, opts.conform_args)
-        defs = [d for f in model_files(s.model) for d in sources.model_defs(f, root, known)]
-        facts.append(SystemFacts(runs, defs, cfg_invariants(runs),
-                                 sources.cpp_row_locations(cpp_files(s), root)))
-        opts.log(_one_line(runs))
-
-    owned = {rid for f in facts for rid in f.runs.system.requirements} | {
-        rid for f in facts for d in f.defs if d.name in f.invariants for rid in d.requirements}
+    runner = Runner(root, cache_dir(root), opts.reuse, opts.log, opts.jobs)
+    try:
+        facts, selected, ctest, pyt, coverage = _run_steps(runner, root, systems, corpus, opts)
+    finally:
+        runner.close()
     elsewhere = _elsewhere(root, systems)
-    # Tests of this package's requirements and of those no registered system covers
-    # (listed in every package); not those of the systems left out.
-    wanted = owned | (known - set(elsewhere))
-    selected = [t for t in corpus.tests if set(t.requirements) & wanted]
-    ctest = run_ctest(runner, root, None if not opts.systems else
-                      "^([^/ ]*/)?(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")(/.*)?$")
-    pyt = run_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
     results = {**junit.results(ctest.files.get("ctest.xml"), "gtest"),
                **(junit.results(pyt.files.get("pytest.xml"), "pytest") if pyt else {})}
     m = build_matrix(corpus, facts, results, elsewhere)
@@ -156,8 +146,8 @@ def build(opts: Options) -> Result:
                                                       if set(t.requirements) & set(_ids_of(f))})
                    for f in facts}
     sys_pages = [_system_page(out, f, corpus) for f in facts]
-    if opts.coverage:
-        _coverage(out, root, runner, extras, opts.log)
+    if coverage is not None:
+        _write_coverage(out, root, coverage, extras)
     _mutation_score(out, root, extras)
     mutation_gaps = model_mutation.write(out, systems, sys_pages, extras)
     header = {"date": manifest.now(), "tools": manifest.tool_versions(root), "machine": manifest.machine()}
@@ -177,7 +167,41 @@ def build(opts: Options) -> Result:
                                        "gaps": len(m.gaps), "gap_kinds": _kinds(m.gaps), "failures": failures,
                                        "unreachable_rows": [f"{u.why.page} {u.why.id}" for u in m.unreachable],
                                        "checks": checks, "steps": steps, "model_mutation_gaps": mutation_gaps})
-    return Result(out, len(m.gaps), failures)
+    return Result(out, len(m.gaps), failures, steps)
+
+
+def _run_steps(runner: Runner, root: Path, systems: list[System], corpus: sources.Corpus,
+               opts: Options) -> tuple[list[SystemFacts], list[sources.TestCase], StepResult, StepResult | None,
+                                       subprocess.CompletedProcess[str] | None]:
+    """Every step of the package queued at once (opts.jobs run side by side), then
+    waited for: the systems' checks, proofs, conformance and mutants, the tests, and the
+    flagship's coverage."""
+    known = {r.id for r in corpus.requirements}
+    pending = [submit_system(runner, s, opts.conform_args) for s in systems]
+    defs = {s.name: [d for f in model_files(s.model) for d in sources.model_defs(f, root, known)] for s in systems}
+    invariants = {s.name: [e.name for e in parse_config(str(s.ci_config)).invariants] for s in systems}
+    elsewhere = _elsewhere(root, systems)
+    owned = {rid for s in systems for rid in s.requirements} | {
+        rid for s in systems for d in defs[s.name] if d.name in invariants[s.name] for rid in d.requirements}
+    selected = _tests_of(corpus, owned, known, elsewhere)
+    ctest = submit_ctest(runner, root, None if not opts.systems else
+                         "^([^/ ]*/)?(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")(/.*)?$")
+    pyt = submit_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
+    coverage = runner.pool.submit(_coverage, root, opts.log) if opts.coverage else None
+    facts: list[SystemFacts] = []
+    for s, p in zip(systems, pending):
+        runs = p.result()
+        facts.append(SystemFacts(runs, defs[s.name], invariants[s.name], sources.cpp_row_locations(cpp_files(s), root)))
+        opts.log(_one_line(runs))
+    return facts, selected, ctest.result(), pyt.result() if pyt else None, coverage.result() if coverage else None
+
+
+def _tests_of(corpus: sources.Corpus, owned: set[str], known: set[str],
+              elsewhere: dict[str, list[str]]) -> list[sources.TestCase]:
+    """The tests of this package's requirements and of those no registered system
+    covers (listed in every package); not those of the systems left out."""
+    wanted = owned | (known - set(elsewhere))
+    return [t for t in corpus.tests if set(t.requirements) & wanted]
 
 
 def _one_line(r: SystemRuns) -> str:
@@ -243,6 +267,8 @@ def _failures(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | Non
         r, n = f.runs, f.runs.system.name
         if not check_ok(r):
             out.append(f"{n}: model check {check_verdict(r)}")
+        elif (differ := _differs_from_tlc(r)):
+            out.append(f"{n}: model check {differ}")
         if r.prove and r.prove.returncode != (12 if r.system.expected_violation else 0):
             out.append(f"{n}: prove exit {r.prove.returncode}")
         if r.conform and r.conform.returncode != 0:
@@ -255,6 +281,28 @@ def _failures(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | Non
     if pyt and pyt.returncode != 0:
         out.append(f"pytest exit {pyt.returncode}")
     return out
+
+
+# TLC's figures for the CI cfgs, recorded with TLC 1.8.0 (tests/python/test_models.py pins them too).
+TLC_FIGURES = Path("models") / "expected.json"
+_COUNTS = ("distinct_states", "states_generated", "depth")
+
+
+def _differs_from_tlc(r: SystemRuns) -> str | None:
+    path = r.system.root / TLC_FIGURES
+    table = json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
+    return tlc_difference(table, r.system.ci_config, r.system.model, r.check.json())
+
+
+def tlc_difference(table: dict[str, Any], cfg: Path, model: Path, got: object) -> str | None:
+    """How a check's counts differ from TLC's figures recorded for `cfg` in `table`
+    (models/expected.json: keyed by the cfg's stem, with "model" when it is not the
+    model's own cfg), or None: equal, or nothing recorded for that cfg of that model."""
+    want = table.get(cfg.stem)
+    if not isinstance(want, dict) or want.get("model", cfg.stem) != model.stem or not isinstance(got, dict):
+        return None
+    bad = [f"{k} {got.get(k)} (TLC: {want[k]})" for k in _COUNTS if k in want and got.get(k) != want[k]]
+    return f"counts differ from TLC's in {TLC_FIGURES}: {', '.join(bad)}" if bad else None
 
 
 def _check_record(r: SystemRuns, root: Path) -> dict[str, Any]:
@@ -374,15 +422,16 @@ def _mutation_score(out: Path, root: Path, extras: list[tuple[str, str]]) -> Non
     extras.append(("C++ mutation survivors", "mutation/index.html"))
 
 
-def _coverage(out: Path, root: Path, runner: Runner, extras: list[tuple[str, str]], log: Callable[[str], None]) -> None:
+def _coverage(root: Path, log: Callable[[str], None]) -> subprocess.CompletedProcess[str]:
     """gcovr branch coverage of the flagship's C++ under its conformance replay
     (conform/coverage.sh builds the coverage variant in build/coverage)."""
-    import subprocess
-    import sys
-    build_dir = root / COVERAGE_DIR
     log("evidence: coverage: conform/coverage.sh (flagship only: the coverage build and a full replay)")
-    p = subprocess.run(["bash", str(root / "conform" / "coverage.sh"), str(build_dir)], cwd=root,
-                       capture_output=True, text=True)
+    return subprocess.run(["bash", str(root / "conform" / "coverage.sh"), str(root / COVERAGE_DIR)], cwd=root,
+                          capture_output=True, text=True)
+
+
+def _write_coverage(out: Path, root: Path, p: subprocess.CompletedProcess[str], extras: list[tuple[str, str]]) -> None:
+    build_dir = root / COVERAGE_DIR
     _write(out, "coverage/summary.txt", p.stdout + p.stderr)
     extras.append((f"gcovr branch coverage of src/ under the flagship's conformance (exit {p.returncode})",
                    "coverage/summary.txt"))

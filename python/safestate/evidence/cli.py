@@ -25,6 +25,7 @@ import argparse
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 from ..errors import run_guarded
 from ..systems.registry import registry_dir
@@ -42,6 +43,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--requirements", metavar="FILE", help="REQUIREMENTS.md (default ../shared/, else docs/requirements/)")
     p.add_argument("--conform-args", default="--input-complete --seed 0",
                    help="arguments of each `safestate conform` run (default: %(default)s)")
+    p.add_argument("--jobs", type=_jobs, default=None, metavar="N",
+                   help="steps run side by side (default: 2, or 1 on a one-core machine)")
     p.add_argument("--no-pytest", action="store_true", help="leave the pytest tests out (GoogleTest still runs)")
     p.add_argument("--no-screenshots", action="store_true", help="no headless-Chromium screenshots")
     p.add_argument("--coverage", action="store_true",
@@ -52,6 +55,26 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    f"(exit 124; default {CHECK_TIMEOUT_SECONDS:g})")
     p.add_argument("--root", metavar="DIR", help="with --verify: the repository whose inputs to re-hash "
                    "(default: the one recorded in the manifest)")
+
+
+def step_costs(steps: list[dict[str, Any]], top: int = 8) -> list[str]:
+    """The slowest steps run (not reused) and what all of them took together: where
+    the package's time goes."""
+    ran = sorted((s for s in steps if not s["cached"]), key=lambda s: -s["seconds"])
+    reused = len(steps) - len(ran)
+    out = [f"evidence: {len(ran)} steps run ({sum(s['seconds'] for s in ran):.0f} s of step time), {reused} reused"]
+    out += [f"  {s['seconds']:8.1f} s  {s['name']}" for s in ran[:top]]
+    return out
+
+
+def _jobs(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of jobs, not {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, not {n}")
+    return n
 
 
 def _seconds(text: str) -> float:
@@ -97,7 +120,10 @@ def _run(args: argparse.Namespace) -> int:
     t0 = time.monotonic()
     res = build(Options(out=Path(args.out).resolve(), root=root, requirements=req.resolve(), systems=args.system,
                         reuse=args.reuse, conform_args=args.conform_args.split(), pytest=not args.no_pytest,
-                        screenshots=not args.no_screenshots, coverage=args.coverage, log=_log))
+                        screenshots=not args.no_screenshots, coverage=args.coverage, log=_log,
+                        **({"jobs": args.jobs} if args.jobs else {})))
+    for line in step_costs(res.steps):
+        print(line)
     for f in res.failures:
         print(f"FAILED: {f}")
     print(f"evidence package: {res.out}/index.html ({res.gaps} gaps; built in {time.monotonic() - t0:.0f} s)")

@@ -13,6 +13,7 @@ import subprocess
 import sys
 import time
 from collections.abc import Callable, Iterable
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -73,16 +74,32 @@ def input_key(argv: list[str], inputs: Iterable[Path], root: Path) -> str:
 
 
 class Runner:
-    """Runs steps in `root`, caching each under `cache/<name>-<key>/`."""
+    """Runs steps in `root`, caching each under `cache/<name>-<key>/`, up to `jobs` at
+    once: the steps are independent subprocesses, each single-threaded, so on a machine
+    with two cores two of them run side by side."""
 
-    def __init__(self, root: Path, cache: Path, reuse: bool, log: Callable[[str], None]) -> None:
+    def __init__(self, root: Path, cache: Path, reuse: bool, log: Callable[[str], None], jobs: int = 1) -> None:
         self.root, self.cache, self.reuse, self.log = root, cache, reuse, log
+        self.pool = ThreadPoolExecutor(max_workers=max(1, jobs), thread_name_prefix="evidence-step")
+
+    def close(self) -> None:
+        self.pool.shutdown(wait=True, cancel_futures=True)
+
+    def submit(self, name: str, argv: list[str], inputs: Iterable[Path], outputs: Iterable[str] = (),
+               env: dict[str, str] | None = None, timeout: float | None = None) -> Future[StepResult]:
+        """The step, queued to run when a job slot is free.  Its input key is taken now,
+        so a file changed while the step waits is not silently taken as the input."""
+        key = input_key(argv, inputs, self.root)
+        return self.pool.submit(self._run, name, argv, key, list(outputs), env, timeout)
 
     def run(self, name: str, argv: list[str], inputs: Iterable[Path], outputs: Iterable[str] = (),
             env: dict[str, str] | None = None, timeout: float | None = None) -> StepResult:
         """`argv` may contain `{out}`: the step's output folder; `outputs` are the file names
         the step writes there (kept in the cache with the result)."""
-        key = input_key(argv, inputs, self.root)
+        return self.submit(name, argv, inputs, outputs, env, timeout).result()
+
+    def _run(self, name: str, argv: list[str], key: str, outputs: list[str], env: dict[str, str] | None,
+             timeout: float | None) -> StepResult:
         folder = self.cache / f"{name}-{key}"
         meta = folder / "result.json"
         if self.reuse and meta.is_file():

@@ -7,7 +7,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..checker.cfg import parse_config
 from .sources import Corpus, DesignRow, GapReason, Loc, ModelDef, Requirement, TestCase, Unreachable
 
 from .steps import SystemRuns
@@ -120,10 +119,6 @@ def proofs_by_invariant(runs: SystemRuns) -> dict[str, dict[str, Any]]:
 def conform_summary(runs: SystemRuns) -> dict[str, Any] | None:
     j = runs.conform.json() if runs.conform else None
     return j if isinstance(j, dict) else None
-
-
-def cfg_invariants(runs: SystemRuns) -> list[str]:
-    return [e.name for e in parse_config(str(runs.system.ci_config)).invariants]
 
 
 def build(corpus: Corpus, facts: list[SystemFacts], test_results: dict[str, str],

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import re
+from concurrent.futures import Future
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -92,63 +93,86 @@ class SystemRuns:
     mutant_error: str | None = None
 
 
-def run_system(runner: Runner, system: System, conform_args: list[str]) -> SystemRuns:
+@dataclass
+class PendingRuns:
+    """A system's steps, submitted to the runner; `result()` waits for them."""
+    system: System
+    check: Future[StepResult]
+    prove: Future[StepResult] | None
+    conform: Future[StepResult] | None
+    mutants: list[tuple[mutants_mod.Mutant, Future[StepResult]]] = field(default_factory=list)
+    mutant_error: str | None = None
+
+    def result(self) -> SystemRuns:
+        runs = SystemRuns(self.system, self.check.result(), self.prove.result() if self.prove else None,
+                          self.conform.result() if self.conform else None, mutant_error=self.mutant_error)
+        for m, fut in self.mutants:
+            step = fut.result()
+            killed = step.returncode == 12 if m.expect == "violated" else step.returncode == 0
+            runs.mutants.append(MutantRun(m, step, killed))
+        return runs
+
+
+def submit_system(runner: Runner, system: System, conform_args: list[str]) -> PendingRuns:
+    """Queues the system's check, proofs, conformance and model mutants, longest first
+    (the conformance), so that two job slots finish together rather than one waiting
+    on the other's last long step."""
     model, cfg = system.model, system.ci_config
     mfiles = [*model_files(model), cfg]
-    check = runner.run(f"{system.name}-check", safestate_argv("check", str(model), "--config", str(cfg), "--json"),
-                       [*mfiles, *tool_files("check")])
-    prove = None
-    if system.expected_violation:  # a defective reference: BMC must refute its invariant (exit 12)
-        prove = runner.run(f"{system.name}-prove",
-                           safestate_argv("prove", str(model), "--config", str(cfg), "--engine", "bmc", "--depth", "6",
-                                          "--invariant", system.expected_violation, "--json"),
-                           [*mfiles, *tool_files("prove")])
-    elif system.proofs:
-        prove = runner.run(f"{system.name}-prove",
-                           safestate_argv("prove", str(model), "--config", str(cfg), "--proofs", str(system.proofs),
-                                          "--json"),
-                           [*mfiles, *proof_files(system), *tool_files("prove")])
     conform = None
     if system.conformance:
-        conform = runner.run(f"{system.name}-conform",
-                             safestate_argv("conform", system.name, "--json", *conform_args),
-                             [*mfiles, system.manifest, system.conformance.adapter, *cpp_files(system),
-                              *tool_files("conform")])
-    runs = SystemRuns(system, check, prove, conform)
-    _run_mutants(runner, runs)
-    return runs
+        conform = runner.submit(f"{system.name}-conform",
+                                safestate_argv("conform", system.name, "--json", *conform_args),
+                                [*mfiles, system.manifest, system.conformance.adapter, *cpp_files(system),
+                                 *tool_files("conform")])
+    check = runner.submit(f"{system.name}-check", safestate_argv("check", str(model), "--config", str(cfg), "--json"),
+                          [*mfiles, *tool_files("check")])
+    prove = None
+    if system.expected_violation:  # a defective reference: BMC must refute its invariant (exit 12)
+        prove = runner.submit(f"{system.name}-prove",
+                              safestate_argv("prove", str(model), "--config", str(cfg), "--engine", "bmc", "--depth",
+                                             "6", "--invariant", system.expected_violation, "--json"),
+                              [*mfiles, *tool_files("prove")])
+    elif system.proofs:
+        prove = runner.submit(f"{system.name}-prove",
+                              safestate_argv("prove", str(model), "--config", str(cfg), "--proofs", str(system.proofs),
+                                             "--json"),
+                              [*mfiles, *proof_files(system), *tool_files("prove")])
+    pending = PendingRuns(system, check, prove, conform)
+    _submit_mutants(runner, pending)
+    return pending
 
 
-def _run_mutants(runner: Runner, runs: SystemRuns) -> None:
+def _submit_mutants(runner: Runner, pending: PendingRuns) -> None:
     """Each model mutant checked on its own (materialised by safestate.mutants), with
     its counterexample written as ITF."""
-    system = runs.system
+    system = pending.system
     mf = mutants_file(system)
     if mf is None:
         return
     try:
         muts = mutants_mod.load(mf)
     except mutants_mod.MutationError as e:
-        runs.mutant_error = str(e)
+        pending.mutant_error = str(e)
         return
     for m in muts:
         dest = runner.cache / "mutant-models" / system.name / m.name
         try:
             tla = mutants_mod.materialise(m, system.model.parent, dest)
         except mutants_mod.MutationError as e:
-            runs.mutant_error = str(e)
+            pending.mutant_error = str(e)
             continue
         # --engine auto: the native core where it accepts the model (the same verdict, counts
         # and trace as the Python engine: test_checker_native_engine.py), Python elsewhere.
-        step = runner.run(f"{system.name}-mutant-{m.name}",
-                          safestate_argv("check", str(tla), "--json", "--engine", "auto",
-                                         "--itf", "{out}/trace.itf.json"),
-                          [*files_under([dest], (".tla", ".cfg")), *tool_files("check")], outputs=["trace.itf.json"])
-        killed = step.returncode == 12 if m.expect == "violated" else step.returncode == 0
-        runs.mutants.append(MutantRun(m, step, killed))
+        step = runner.submit(f"{system.name}-mutant-{m.name}",
+                             safestate_argv("check", str(tla), "--json", "--engine", "auto",
+                                            "--itf", "{out}/trace.itf.json"),
+                             [*files_under([dest], (".tla", ".cfg")), *tool_files("check")],
+                             outputs=["trace.itf.json"])
+        pending.mutants.append((m, step))
 
 
-def run_ctest(runner: Runner, root: Path, regex: str | None) -> StepResult:
+def submit_ctest(runner: Runner, root: Path, regex: str | None) -> Future[StepResult]:
     build = root / "build" / "cpp"
     argv = ["ctest", "--test-dir", str(build), "--output-junit", "{out}/ctest.xml", "-j1"]
     if regex:
@@ -156,10 +180,10 @@ def run_ctest(runner: Runner, root: Path, regex: str | None) -> StepResult:
     inputs = files_under([root / "include", root / "src", root / "tests" / "cpp"], (".hpp", ".cpp", ".h", ".txt"))
     # The built test executables too: a cached result of an older build is not reused.
     inputs += sorted(f for f in build.rglob("test_*") if f.is_file() and os.access(f, os.X_OK))
-    return runner.run("ctest", argv, inputs, outputs=["ctest.xml"])
+    return runner.submit("ctest", argv, inputs, outputs=["ctest.xml"])
 
 
-def run_pytest(runner: Runner, root: Path, node_ids: list[str]) -> StepResult | None:
+def submit_pytest(runner: Runner, root: Path, node_ids: list[str]) -> Future[StepResult] | None:
     if not node_ids:
         return None
     argv = [*safestate_argv()[:2], "pytest", "-q", "-p", "no:cacheprovider", "--junitxml", "{out}/pytest.xml",
@@ -167,7 +191,7 @@ def run_pytest(runner: Runner, root: Path, node_ids: list[str]) -> StepResult | 
     inputs = [*files_under([root / "tests" / "python"], (".py",)), *files_under([PKG], (".py",))]
     inputs = [f for f in inputs if "evidence" not in f.parts]
     # the long proofs too (the press's: ~2 min CPU, left out of the default test run)
-    return runner.run("pytest", argv, inputs, outputs=["pytest.xml"], env={SLOW_PROOFS: "1"}, timeout=3600)
+    return runner.submit("pytest", argv, inputs, outputs=["pytest.xml"], env={SLOW_PROOFS: "1"}, timeout=3600)
 
 
 SLOW_PROOFS = "SAFESTATE_SLOW_PROOFS"  # set: tests/python/test_prove_press.py runs
