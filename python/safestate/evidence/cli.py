@@ -68,23 +68,22 @@ def step_costs(steps: list[dict[str, Any]], top: int = 8) -> list[str]:
 
 
 def _jobs(text: str) -> int:
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number of jobs, not {text!r}") from None
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, not {n}")
-    return n
+    return int(_number(text, int, "a whole number of jobs", 1))
 
 
 def _seconds(text: str) -> float:
+    return _number(text, float, "a number of seconds", 0, strict=True)
+
+
+def _number(text: str, kind: type[int] | type[float], what: str, low: float, strict: bool = False) -> float:
+    """`text` as `kind`, at least `low` (more than `low` when strict), or argparse's error."""
     try:
-        t = float(text)
+        n = kind(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number of seconds, not {text!r}") from None
-    if not t > 0:
-        raise argparse.ArgumentTypeError(f"must be more than 0, not {text}")
-    return t
+        raise argparse.ArgumentTypeError(f"expected {what}, not {text!r}") from None
+    if n < low or (strict and n == low) or n != n:
+        raise argparse.ArgumentTypeError(f"must be {'more than' if strict else 'at least'} {low}, not {text}")
+    return n
 
 
 def _log(msg: str) -> None:
