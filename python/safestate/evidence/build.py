@@ -23,7 +23,8 @@ from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, bu
                      check_verdict, conform_summary, proofs_by_invariant)
 from .render import SystemPage
 from ..checker.cfg import parse_config
-from .steps import SystemRuns, cpp_files, model_files, submit_ctest, submit_pytest, submit_system, system_inputs
+from .steps import (SystemRuns, cpp_files, model_files, submit_conform, submit_ctest, submit_pytest, submit_system,
+                    system_inputs)
 
 REQUIREMENTS_ENV = "SAFESTATE_REQUIREMENTS"
 CACHE_ENV = "SAFESTATE_EVIDENCE_CACHE"
@@ -177,17 +178,21 @@ def _run_steps(runner: Runner, root: Path, systems: list[System], corpus: source
     waited for: the systems' checks, proofs, conformance and mutants, the tests, and the
     flagship's coverage."""
     known = {r.id for r in corpus.requirements}
-    pending = [submit_system(runner, s, opts.conform_args) for s in systems]
+    # Longest first, so that the two job slots end together: the conformance runs (the
+    # largest state space first), the pytest run and the coverage replay, then the rest.
+    by_size = sorted(systems, key=lambda s: -_states_generated(s))
+    conform = {s.name: submit_conform(runner, s, opts.conform_args) for s in by_size}
     defs = {s.name: [d for f in model_files(s.model) for d in sources.model_defs(f, root, known)] for s in systems}
     invariants = {s.name: [e.name for e in parse_config(str(s.ci_config)).invariants] for s in systems}
     elsewhere = _elsewhere(root, systems)
     owned = {rid for s in systems for rid in s.requirements} | {
         rid for s in systems for d in defs[s.name] if d.name in invariants[s.name] for rid in d.requirements}
     selected = _tests_of(corpus, owned, known, elsewhere)
-    ctest = submit_ctest(runner, root, None if not opts.systems else
-                         "^([^/ ]*/)?(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")(/.*)?$")
     pyt = submit_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
     coverage = runner.pool.submit(_coverage, root, opts.log) if opts.coverage else None
+    pending = [submit_system(runner, s, conform[s.name]) for s in systems]
+    ctest = submit_ctest(runner, root, None if not opts.systems else
+                         "^([^/ ]*/)?(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")(/.*)?$")
     facts: list[SystemFacts] = []
     for s, p in zip(systems, pending):
         runs = p.result()
@@ -288,10 +293,20 @@ TLC_FIGURES = Path("models") / "expected.json"
 _COUNTS = ("distinct_states", "states_generated", "depth")
 
 
+def _tlc_figures(system: System) -> dict[str, Any]:
+    path = system.root / TLC_FIGURES
+    return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
+
+
+def _states_generated(system: System) -> int:
+    """TLC's states generated for the system's CI cfg (0: not recorded): the size of
+    the search its check and conformance run make."""
+    want = _tlc_figures(system).get(system.ci_config.stem)
+    return int(want.get("states_generated", 0)) if isinstance(want, dict) else 0
+
+
 def _differs_from_tlc(r: SystemRuns) -> str | None:
-    path = r.system.root / TLC_FIGURES
-    table = json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
-    return tlc_difference(table, r.system.ci_config, r.system.model, r.check.json())
+    return tlc_difference(_tlc_figures(r.system), r.system.ci_config, r.system.model, r.check.json())
 
 
 def tlc_difference(table: dict[str, Any], cfg: Path, model: Path, got: object) -> str | None:

@@ -113,18 +113,21 @@ class PendingRuns:
         return runs
 
 
-def submit_system(runner: Runner, system: System, conform_args: list[str]) -> PendingRuns:
-    """Queues the system's check, proofs, conformance and model mutants, longest first
-    (the conformance), so that two job slots finish together rather than one waiting
-    on the other's last long step."""
+def submit_conform(runner: Runner, system: System, conform_args: list[str]) -> Future[StepResult] | None:
+    """The system's conformance run (None: it has no C++ adapter)."""
+    if not system.conformance:
+        return None
+    mfiles = [*model_files(system.model), system.ci_config]
+    return runner.submit(f"{system.name}-conform", safestate_argv("conform", system.name, "--json", *conform_args),
+                         [*mfiles, system.manifest, system.conformance.adapter, *cpp_files(system),
+                          *tool_files("conform")])
+
+
+def submit_system(runner: Runner, system: System, conform: Future[StepResult] | None) -> PendingRuns:
+    """Queues the system's check, proofs and model mutants beside its (already queued)
+    conformance run."""
     model, cfg = system.model, system.ci_config
     mfiles = [*model_files(model), cfg]
-    conform = None
-    if system.conformance:
-        conform = runner.submit(f"{system.name}-conform",
-                                safestate_argv("conform", system.name, "--json", *conform_args),
-                                [*mfiles, system.manifest, system.conformance.adapter, *cpp_files(system),
-                                 *tool_files("conform")])
     check = runner.submit(f"{system.name}-check", safestate_argv("check", str(model), "--config", str(cfg), "--json"),
                           [*mfiles, *tool_files("check")])
     prove = None
