@@ -171,5 +171,39 @@ TEST(SAF_Issue30_Alternating, SetClearEveryCycleStillSendsEmergency) {
   EXPECT_GE(emergencies, 10);
 }
 
+/// Cycles (with the E-stop held pressed and nothing else received) until the service
+/// sends Request Control: how many it took, or `limit + 1` when none came within `limit`.
+std::uint32_t cycles_to_request(SafetyService& s, std::uint32_t limit) {
+  for (std::uint32_t n = 1; n <= limit; ++n) {
+    if (find(run(s, {pressed()}).outbox, MessageId::RequestControl) != nullptr) return n;
+  }
+  return limit + 1;
+}
+
+// req: SAF-02
+// UCA-6 (INV_SAF_ASKS_AGAIN): the service that raises EMERGENCY without holding control
+// asks again within MESSAGEINTERVAL + 1 cycles of a genuine refusal and within
+// REPORTDATATIMEOUT + 1 cycles of a request nobody answered, round after round, at the
+// CI timers and the defaults.
+TEST(SAF_Issue30_AsksAgain, RefusedOrUnansweredRequestIsRepeatedWithinItsBound) {
+  for (const Timing& t : {kSmall, Timing{}}) {
+    SafetyService s = emergency_held(t);
+    (void)run(s, {pressed(), taken_by_other()});  // K06: control lost to a higher authority
+    ASSERT_NE(s.observe().control, ControlStatus::Held);
+    // The first request after the loss, then rounds of refusal and of silence.
+    ASSERT_LE(cycles_to_request(s, t.report_data_timeout + 1), t.report_data_timeout + 1);
+    for (int round = 0; round < 4; ++round) {
+      // The refusal answers the request just sent; counted from the cycle after it.
+      const bool asked_at_once = find(run(s, {pressed(), refused()}).outbox, MessageId::RequestControl) != nullptr;
+      EXPECT_TRUE(asked_at_once || cycles_to_request(s, t.message_interval + 1) <= t.message_interval + 1)
+          << "after a refusal, round " << round << ", message_interval " << t.message_interval;
+      ASSERT_EQ(s.observe().state, SafState::Emergency);
+      EXPECT_LE(cycles_to_request(s, t.report_data_timeout + 1), t.report_data_timeout + 1)
+          << "after an unanswered request, round " << round << ", report_data_timeout " << t.report_data_timeout;
+      ASSERT_NE(s.observe().control, ControlStatus::Held);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace safestate::saf::test
