@@ -1,7 +1,9 @@
-"""The outcome cache: one JSON file per (mutant text, cfg, projection, checker version).
+"""The outcome cache: one JSON file per (mutant text, cfgs, projection, checker version).
 
 The key hashes the mutated model's files (every .tla and .cfg of its folder, the mutant
-applied), the cfg as used (invariants the original violates left out), the inputs and
+applied), the cfg as used (invariants the original violates left out) and the screening
+cfg as used (or that there is none: an outcome decided without screening is not one
+decided with it, and the other way round -- the `cfg` it names differs), the inputs and
 observables, the budgets, and the sources of the checker and of the classifier (their
 "version": any change to the checker gives new keys).  Timeouts and errors of the worker
 itself are not cached, so a later run with a larger budget retries them.
@@ -65,6 +67,11 @@ def key(subject: Subject, mutant: Mutant) -> str:
             h.update(f.name.encode() + b"\0" + data + b"\0")
     cfg = without_invariants(subject.cfg.read_text(encoding="utf-8"), subject.dropped)
     h.update(b"cfg\0" + subject.model.name.encode() + b"\0" + cfg.encode())
+    if subject.screen is None:
+        h.update(b"no screen\0")
+    else:
+        screen = without_invariants(subject.screen.read_text(encoding="utf-8"), subject.dropped)
+        h.update(b"screen\0" + subject.screen.name.encode() + b"\0" + screen.encode())
     p = subject.projection
     h.update(json.dumps([p.inputs, p.observables, subject.engine, subject.timeout, subject.max_pairs]).encode())
     h.update(checker_version().encode())

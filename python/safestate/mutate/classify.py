@@ -1,7 +1,8 @@
 """Classification of a mutant with the model's CI cfg, and the pool that classifies many.
 
 * killed: `safestate check` (the native core where it accepts the model, else the Python
-  engine) reports a violated invariant or property, a deadlock or an Assert failure --
+  engine) -- on the system's screening cfg first where it declares one, then on the CI
+  cfg (`screen`, below) -- reports a violated invariant or property, a deadlock or an Assert failure --
   named, with the trace length (`by` = "property"); or every property holds but the
   mutant no longer reaches one of the model's reachability witnesses (`witness.py`;
   `by` = "witness", the witnesses named);
@@ -10,6 +11,16 @@
 * equivalent: every property holds and the product is exhausted without a difference;
 * timeout: the check or the product search ran out of its budget;
 * error: the mutant does not load, or its evaluation fails (`check` exit 75/150...).
+
+**Screening.**  A system may declare a screening cfg (system.toml `[mutate]
+screen_config`): the same model and properties (a subset of the CI cfg's) with other,
+smaller constants.  Every mutant is checked there first; a violated property there is a
+real kill -- the mutant violates a property of the model for a valid choice of its
+constants -- and is reported with that cfg (`cfg`), at the cost of the small state space
+instead of the CI cfg's.  So is an evaluation error there that the Python engine
+reproduces (the mutant is not a well-formed model for those constants; an error is
+never counted).  Every other mutant is classified on the CI cfg as without screening:
+the check, the witnesses and the difference search decide survived and equivalent there.
 
 Only killed and survived count in the score.  Each mutant is classified in a forked
 child process (the original model is loaded once, before the fork), at most `workers` at
@@ -62,6 +73,7 @@ class Outcome:
     itf: dict[str, Any] | None = None                           # the same as ITF JSON
     cached: bool = False
     by: str = ""                 # killed: "property" (the check) or "witness" (a witness lost)
+    cfg: str = ""                # the cfg (file name) whose check decided: the screening or the CI cfg
     witnesses: list[str] = field(default_factory=list)  # killed by witness: every witness lost
 
     def to_json(self) -> dict[str, Any]:
@@ -79,6 +91,7 @@ class Subject:
     model: Path                  # the original .tla
     cfg: Path                    # the CI cfg
     projection: Projection
+    screen: Path | None = None   # the screening cfg, checked first (module docstring)
     dropped: tuple[str, ...] = ()  # invariants the original itself violates (not used)
     engine: str = "auto"
     timeout: float = 300.0
@@ -109,16 +122,18 @@ def without_invariants(cfg_text: str, names: tuple[str, ...]) -> str:
     return "\n".join(out) + "\n"
 
 
-def materialise(subject: Subject, mutant: Mutant | None, dest: Path) -> tuple[Path, Path]:
-    """The model's folder copied into `dest` with the mutant applied; (model, cfg) there."""
+def materialise(subject: Subject, mutant: Mutant | None, dest: Path, screen: bool = False) -> tuple[Path, Path]:
+    """The model's folder copied into `dest` with the mutant applied; (model, cfg) there:
+    the CI cfg, or with `screen` the screening cfg (the same invariants left out)."""
     for f in subject.model.parent.iterdir():
         if f.is_file() and f.suffix in (".tla", ".cfg"):
             shutil.copyfile(f, dest / f.name)
     if mutant is not None:
         target = dest / mutant.file
         target.write_bytes(mutant.apply(target.read_bytes()))
-    cfg = dest / ("__mutate__" + subject.cfg.name)
-    cfg.write_text(without_invariants(subject.cfg.read_text(encoding="utf-8"), subject.dropped), encoding="utf-8")
+    source = subject.screen if screen and subject.screen is not None else subject.cfg
+    cfg = dest / ("__mutate__" + source.name)
+    cfg.write_text(without_invariants(source.read_text(encoding="utf-8"), subject.dropped), encoding="utf-8")
     return dest / subject.model.name, cfg
 
 
@@ -132,8 +147,20 @@ def check_model(model: Model, engine: str, max_memory_mb: int, states: bool = Fa
 
 
 def classify(subject: Subject, mutant: Mutant) -> Outcome:
-    """The mutant's outcome (in this process)."""
+    """The mutant's outcome (in this process): on the screening cfg where it decides,
+    else on the CI cfg."""
     start = time.monotonic()
+    if subject.screen is not None:
+        with tempfile.TemporaryDirectory(prefix="safestate-mutant-") as tmp:
+            screened = _screen(subject, mutant, tmp, start)
+        if screened is not None:
+            return screened
+    out = _classify_ci(subject, mutant, start)
+    out.cfg = subject.cfg.name
+    return out
+
+
+def _classify_ci(subject: Subject, mutant: Mutant, start: float) -> Outcome:
     original = subject.load_original()
     with tempfile.TemporaryDirectory(prefix="safestate-mutant-") as tmp:
         graph: LabelledGraph | None = None
@@ -177,6 +204,27 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
         out.itf = difference_itf(subject.projection, pr.steps, mutant)
         out.reason = f"observables differ after {len(pr.steps) - 1} step(s)"
     return out
+
+
+def _screen(subject: Subject, mutant: Mutant, tmp: str, start: float) -> Outcome | None:
+    """The mutant's check on the screening cfg: its outcome when that check decides it
+    (a violated property, or an evaluation error the Python engine reproduces), else
+    None (the CI cfg decides)."""
+    assert subject.screen is not None
+    try:
+        tla, cfg = materialise(subject, mutant, Path(tmp), screen=True)
+        # auto: an evaluation error of the core is checked again by the Python engine
+        result = check_model(load_model(str(tla), str(cfg)), subject.engine, subject.max_memory_mb)
+    except UnsupportedError:
+        return None
+    except TlaError as e:
+        return Outcome(mutant.id, "error", reason=_where(e, tmp), seconds=time.monotonic() - start,
+                       cfg=subject.screen.name)
+    verdict = _verdict(mutant, result, tmp, start)
+    if verdict is None or verdict.status == "timeout":
+        return None
+    verdict.cfg = subject.screen.name
+    return verdict
 
 
 def _lost_witnesses(subject: Subject, original: Model, model: Model, mutant: Mutant, result: Any,

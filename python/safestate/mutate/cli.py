@@ -44,6 +44,10 @@ class InputError(SafestateError):
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("target", help="a registered system (safestate systems) or its model .tla")
     p.add_argument("--config", help="the .cfg (default: the system's ci_config, or MODEL.cfg)")
+    p.add_argument("--screen-config", metavar="CFG",
+                   help="check every mutant on this cfg first, a kill there is final (default: the system's "
+                   "[mutate] screen_config, when --config is its ci_config)")
+    p.add_argument("--no-screen", action="store_true", help="no screening cfg: every mutant on the CI cfg only")
     p.add_argument("--inputs", help="comma-separated input variables (default: system.toml [mutate] inputs)")
     p.add_argument("--observables", help="comma-separated observable variables (default: system.toml "
                    "[mutate] observables)")
@@ -90,7 +94,7 @@ def run(args: argparse.Namespace) -> int:
         return INTERNAL
 
 
-def _resolve(args: argparse.Namespace) -> tuple[Any, str, Path, Path, Projection]:
+def _resolve(args: argparse.Namespace) -> tuple[Any, str, Path, Path, Projection, Path | None]:
     from ..systems.registry import find, for_model
     system = None
     if args.target.endswith(".tla"):
@@ -114,7 +118,39 @@ def _resolve(args: argparse.Namespace) -> tuple[Any, str, Path, Path, Projection
         raise InputError(f"{where}: inputs and observables must be declared (lists of model variables; "
                          f"docs/adding-a-system.md)")
     name = system.name if system else model.stem
-    return system, name, model, cfg, Projection(tuple(x.strip() for x in inputs), tuple(x.strip() for x in observables))
+    proj = Projection(tuple(x.strip() for x in inputs), tuple(x.strip() for x in observables))
+    return system, name, model, cfg, proj, _screen_config(args, system, cfg, decl, where)
+
+
+def _screen_config(args: argparse.Namespace, system: Any, cfg: Path, decl: dict[str, Any],
+                   where: str) -> Path | None:
+    """The screening cfg: --screen-config, else the system's `[mutate] screen_config`
+    when the cfg is its CI cfg (a screening cfg goes with the cfg it screens for);
+    None with --no-screen.  Its properties must be the CI cfg's (or some of them), so
+    that a kill there names a property the score is about."""
+    if args.no_screen:
+        return None
+    if args.screen_config:
+        screen, origin = Path(args.screen_config), "--screen-config"
+    elif system is not None and "screen_config" in decl and cfg.resolve() == system.ci_config.resolve():
+        if not isinstance(decl["screen_config"], str):
+            raise InputError(f"{where}: screen_config must be a cfg path (a string), "
+                             f"got {type(decl['screen_config']).__name__}")
+        screen, origin = system.root / decl["screen_config"], f"{where} screen_config"
+    else:
+        return None
+    if not screen.is_file():
+        raise InputError(f"{origin}: {screen}: no such cfg file")
+    from ..checker.cfg import parse_config
+    ci, sc = parse_config(str(cfg)), parse_config(str(screen))
+    checked = {e.name for e in ci.invariants + ci.properties}
+    extra = [e.name for e in sc.invariants + sc.properties if e.name not in checked]
+    if extra:
+        raise InputError(f"{screen}: the screening cfg checks {', '.join(extra)}, which {cfg} does not: a "
+                         f"screening cfg checks the CI cfg's properties (or some of them) with other constants")
+    if sc.check_deadlock and not ci.check_deadlock:
+        raise InputError(f"{screen}: the screening cfg checks for deadlock, {cfg} does not")
+    return screen
 
 
 def _original(subject: Subject, name: str) -> tuple[str, ...]:
@@ -136,13 +172,23 @@ def _original(subject: Subject, name: str) -> tuple[str, ...]:
             tla, cfg = materialise(subject, None, Path(tmp))
             r = check_model(load_model(str(tla), str(cfg)), subject.engine, subject.max_memory_mb)
         if r.result == "success":
-            return dropped
+            break
         if r.result == "safety failure" and r.violated:
             dropped = dropped + (r.violated,)
             continue
         raise InputError(f"{subject.model} with {subject.cfg}: the original does not check ({r.result}"
                          f"{' ' + r.violated if r.violated else ''}); fix it before measuring its mutants")
-    raise InputError(f"{subject.model}: the original violates every invariant")
+    else:
+        raise InputError(f"{subject.model}: the original violates every invariant")
+    if subject.screen is not None:
+        with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
+            tla, cfg = materialise(subject, None, Path(tmp), screen=True)
+            r = check_model(load_model(str(tla), str(cfg)), subject.engine, subject.max_memory_mb)
+        if r.result != "success":
+            raise InputError(f"{subject.model} with the screening cfg {subject.screen}: the original does not "
+                             f"check ({r.result}{' ' + r.violated if r.violated else ''}): a kill there would "
+                             f"not be the mutant's")
+    return dropped
 
 
 def stratified(mutants: list[Mutant], n: int, seed: int) -> list[Mutant]:
@@ -177,7 +223,7 @@ def _run(args: argparse.Namespace) -> int:
         raise InputError("--workers must be at least 1")
     if args.min_score is not None and not 0 <= args.min_score <= 1:
         raise InputError("--min-score is a fraction between 0 and 1")
-    system, name, model, cfg, proj = _resolve(args)
+    system, name, model, cfg, proj, screen = _resolve(args)
     justs = results.justifications(system) if system is not None else []
     from ..checker.cfg import parse_config
     conf = parse_config(str(cfg))
@@ -197,7 +243,7 @@ def _run(args: argparse.Namespace) -> int:
         for m in chosen:
             print(f"# {m.id}: {m.what}\n{m.toml(_folder(model))}")
         return 0
-    subject = Subject(model, cfg, proj, engine=args.engine, timeout=args.timeout)
+    subject = Subject(model, cfg, proj, screen=screen, engine=args.engine, timeout=args.timeout)
     subject.dropped = _original(subject, name)
     cache = Cache(None, enabled=not args.no_cache)
     outcomes: dict[str, Outcome] = {}
@@ -222,7 +268,7 @@ def _run(args: argparse.Namespace) -> int:
         classify_all(subject, todo, args.workers, done)
     ordered = [outcomes[m.id] for m in chosen]
     s = summary(name, generated, chosen, ordered, time.monotonic() - start, subject.dropped,
-                sampled=len(chosen) < len(mutants), duplicates=len(duplicates))
+                sampled=len(chosen) < len(mutants), duplicates=len(duplicates), screen=screen.name if screen else None)
     ws = subject.witnesses
     s.update(sample=args.sample, seed=args.seed if args.sample else None, selected_operators=args.operator,
              only=args.only, when=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), cfg=str(cfg),

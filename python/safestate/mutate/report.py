@@ -20,7 +20,10 @@ def score(outcomes: list[Outcome]) -> float | None:
 
 
 def summary(system: str, generated: int, mutants: list[Mutant], outcomes: list[Outcome], seconds: float,
-            dropped: tuple[str, ...], sampled: bool, duplicates: int = 0) -> dict[str, Any]:
+            dropped: tuple[str, ...], sampled: bool, duplicates: int = 0, screen: str | None = None
+            ) -> dict[str, Any]:
+    """The JSON summary; `screen`: the screening cfg's file name (its decisions counted
+    apart in `counts.decided_on_screen`)."""
     by_id = {m.id: m for m in mutants}
     c = Counter(o.status for o in outcomes)
     per_op: dict[str, dict[str, int]] = {}
@@ -32,7 +35,9 @@ def summary(system: str, generated: int, mutants: list[Mutant], outcomes: list[O
     return {
         "system": system, "generated": generated, "duplicates": duplicates, "classified": len(outcomes),
         "sampled": sampled,
-        "counts": dict({k: c[k] for k in STATUSES}, killed_by_witness=sum(map(_by_witness, outcomes))),
+        "counts": dict({k: c[k] for k in STATUSES}, killed_by_witness=sum(map(_by_witness, outcomes)),
+                       decided_on_screen=sum(1 for o in outcomes if screen is not None and o.cfg == screen)),
+        "screen_config": screen,
         "score": None if s is None else round(s, 4),
         "seconds": round(seconds, 1), "cached": sum(1 for o in outcomes if o.cached),
         "not_used_invariants": list(dropped), "operators": per_op,
@@ -68,6 +73,9 @@ def write_text(out: TextIO, s: dict[str, Any], mutants: list[Mutant], outcomes: 
     if s.get("witnesses_not_reached"):
         out.write(f"  witnesses the original does not reach (not used): {', '.join(s['witnesses_not_reached'])}\n")
     out.write(f"  {len(s.get('witnesses', []))} reachability witness(es) of the model used\n")
+    if s.get("screen_config"):
+        out.write(f"  screened on {s['screen_config']} first: {c.get('decided_on_screen', 0)} mutant(s) decided "
+                  f"there (a kill or an error for those constants), the others on {s.get('cfg', 'the CI cfg')}\n")
     out.write("\n  operator             killed (by witness) survived equivalent timeout error\n")
     for op, k in sorted(s["operators"].items()):
         out.write(f"  {op:<20} {k['killed']:>6} {k.get('killed_by_witness', 0):>12} {k['survived']:>8} "
@@ -87,11 +95,14 @@ def write_text(out: TextIO, s: dict[str, Any], mutants: list[Mutant], outcomes: 
             m = by_id[o.mutant]
             extra = ""
             if status == "killed":
-                extra = f" -> {o.violated} (trace {o.trace_length})"
+                on = f", on {o.cfg}" if o.cfg and o.cfg == s.get("screen_config") else ""
+                extra = f" -> {o.violated} (trace {o.trace_length}{on})"
             elif status == "witness":
                 extra = f" -> {', '.join(o.witnesses)} no longer reached"
             elif status in ("timeout", "error", "equivalent"):
                 extra = f" -- {o.reason}" if o.reason else f" -- {o.pairs} pairs"
+                if status == "error" and o.cfg and o.cfg == s.get("screen_config"):
+                    extra += f" (on {o.cfg})"
             out.write(f"  {m.file}:{m.line}:{m.column} [{m.operator}] {m.definition}: {m.what}{extra}\n")
             if status == "survived":
                 out.write(f"    - {_one_line(m.original)}\n    + {_one_line(m.patched)}\n")
