@@ -9,7 +9,9 @@
 * survived: every property holds, and the product search (`product.py`) finds an input
   trace after which the mutant's observables differ from the original's;
 * equivalent: every property holds and the product is exhausted without a difference;
-* timeout: the check or the product search ran out of its budget;
+* timeout: the check or the product search ran out of its budget -- CPU seconds of the
+  worker (`--timeout`), not wall seconds, so that a loaded machine gives the verdicts an
+  idle one does;
 * error: the mutant does not load, or its evaluation fails (`check` exit 75/150...).
 
 **Screening.**  A system may declare a screening cfg (system.toml `[mutate]
@@ -24,8 +26,8 @@ the check, the witnesses and the difference search decide survived and equivalen
 
 Only killed and survived count in the score.  Each mutant is classified in a forked
 child process (the original model is loaded once, before the fork), at most `workers` at
-a time; a child past its time budget is ended by its process id and the mutant listed as
-a timeout.
+a time; a child past its CPU budget (read from /proc; wall seconds where there is none) is ended
+by its process id and the mutant listed as a timeout.
 """
 
 from __future__ import annotations
@@ -66,7 +68,8 @@ class Outcome:
     violated: str | None = None  # killed: the property (or "deadlock"), or the first witness lost
     trace_length: int | None = None
     reason: str = ""             # timeout / error: why; survived/equivalent: search figures
-    seconds: float = 0.0
+    seconds: float = 0.0         # wall seconds of its classification
+    cpu: float = 0.0             # CPU seconds of the worker (what the budget counts)
     pairs: int = 0
     nondeterministic: bool = False
     table: list[dict[str, Any]] = field(default_factory=list)   # the difference trace, printed values
@@ -94,7 +97,7 @@ class Subject:
     screen: Path | None = None   # the screening cfg, checked first (module docstring)
     dropped: tuple[str, ...] = ()  # invariants the original itself violates (not used)
     engine: str = "auto"
-    timeout: float = 300.0
+    timeout: float = 300.0       # CPU seconds per mutant: check and search together
     max_pairs: int = 2_000_000
     max_memory_mb: int = 3000
     original: Model | None = None  # loaded once, before the workers fork
@@ -149,18 +152,20 @@ def check_model(model: Model, engine: str, max_memory_mb: int, states: bool = Fa
 def classify(subject: Subject, mutant: Mutant) -> Outcome:
     """The mutant's outcome (in this process): on the screening cfg where it decides,
     else on the CI cfg."""
-    start = time.monotonic()
+    start, cpu = time.monotonic(), time.process_time()
+    out = None
     if subject.screen is not None:
         with tempfile.TemporaryDirectory(prefix="safestate-mutant-") as tmp:
-            screened = _screen(subject, mutant, tmp, start)
-        if screened is not None:
-            return screened
-    out = _classify_ci(subject, mutant, start)
-    out.cfg = subject.cfg.name
+            out = _screen(subject, mutant, tmp, start)
+    if out is None:
+        out = _classify_ci(subject, mutant, start, cpu + subject.timeout)
+        out.cfg = subject.cfg.name
+    out.cpu = round(time.process_time() - cpu, 2)
     return out
 
 
-def _classify_ci(subject: Subject, mutant: Mutant, start: float) -> Outcome:
+def _classify_ci(subject: Subject, mutant: Mutant, start: float, deadline: float) -> Outcome:
+    """The classification on the CI cfg; `deadline`: of `time.process_time()`."""
     original = subject.load_original()
     with tempfile.TemporaryDirectory(prefix="safestate-mutant-") as tmp:
         graph: LabelledGraph | None = None
@@ -180,7 +185,6 @@ def _classify_ci(subject: Subject, mutant: Mutant, start: float) -> Outcome:
         if lost:
             return Outcome(mutant.id, "killed", violated=lost[0], by="witness", witnesses=lost,
                            reason=f"no longer reached: {', '.join(lost)}", seconds=time.monotonic() - start)
-        deadline = start + subject.timeout
         try:
             pr = None
             if graph is not None and subject.graph is not None:
@@ -346,7 +350,7 @@ def prepare(subject: Subject, search: bool = True) -> None:
         subject.witnesses = _python_witnesses(subject, original)
     if search:
         subject.side = OriginalSide(original)
-        subject.side.explore(time.monotonic() + subject.timeout)
+        subject.side.explore(time.process_time() + subject.timeout)
 
 
 def _python_witnesses(subject: Subject, original: Model) -> WitnessSet:
@@ -384,17 +388,31 @@ def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                 on_done(m, _receive(r, pid, m, t0))
             now = time.monotonic()
             for conn, (m, pid, t0) in list(running.items()):
-                if now - t0 > subject.timeout + 30:  # the product search stops itself at the budget
+                used = _cpu_seconds(pid)
+                # The searches stop themselves at the budget; the check is ended from here.
+                # A worker that uses no CPU (never expected) is ended at ten times the
+                # budget in wall seconds.
+                if (now - t0 if used is None else used) > subject.timeout + 30 or now - t0 > 10 * subject.timeout:
                     _end(pid)
                     conn.close()
                     del running[conn]
-                    on_done(m, Outcome(m.id, "timeout", reason=f"check exceeded {subject.timeout:.0f} s",
-                                       seconds=now - t0))
+                    on_done(m, Outcome(m.id, "timeout", reason=f"check exceeded {subject.timeout:.0f} CPU s",
+                                       seconds=now - t0, cpu=used or 0.0))
     finally:
         gc.unfreeze()
         for conn, (_m, pid, _t) in running.items():
             _end(pid)
             conn.close()
+
+
+def _cpu_seconds(pid: int) -> float | None:
+    """The CPU seconds (user + system) process `pid` used so far (Linux /proc); None
+    where it cannot be read."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return None
 
 
 def _fork(subject: Subject, m: Mutant) -> tuple[Connection, int]:

@@ -58,7 +58,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--sample", type=int, metavar="N", help="classify a sample of N mutants, stratified by operator")
     p.add_argument("--seed", type=int, default=0, help="the sample's seed (default 0)")
     p.add_argument("--workers", type=int, default=2, help="mutants classified at once (default 2)")
-    p.add_argument("--timeout", type=float, default=300.0, metavar="S", help="seconds per mutant (default 300)")
+    p.add_argument("--timeout", type=float, default=300.0, metavar="S", help="CPU seconds per mutant, check and search (default 300)")
     p.add_argument("--engine", choices=("auto", "native", "python"), default="auto",
                    help="the check's engine (default auto: the native core where it accepts the model)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
@@ -327,5 +327,5 @@ class _Progress:
         self.fresh += 1
         el = time.monotonic() - self.start
         eta = el / self.fresh * (self.todo - self.fresh)
-        print(f"mutate: [{self.done}/{self.total}] {o.status:<10} {m.id} ({o.seconds:.1f} s) "
+        print(f"mutate: [{self.done}/{self.total}] {o.status:<10} {m.id} ({o.seconds:.1f} s, {o.cpu:.1f} CPU s) "
               f"ETA {int(eta // 60)}:{int(eta % 60):02d}", file=sys.stderr, flush=True)

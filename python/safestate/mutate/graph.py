@@ -230,7 +230,8 @@ def graph_search(orig: LabelledGraph, mut: LabelledGraph, proj: Projection, max_
     """`product.search` over two labelled graphs (see the module docstring).  The sets of
     observations per input agree at a pair exactly when the sets of its steps' labels
     (input, observation) agree, so a pair is compared by the labels' structural numbers;
-    only a difference is grouped by input, in Python values, for its trace."""
+    only a difference is grouped by input, in Python values, for its trace.  `deadline`:
+    a value of `time.process_time()` (the budget is CPU seconds)."""
     mut.share(orig)
     nondet = False
     parents: list[int] = []
@@ -289,7 +290,7 @@ def graph_search(orig: LabelledGraph, mut: LabelledGraph, proj: Projection, max_
         return ProductResult("difference", 0, diff, nondet)
     k = 0
     while k < len(pairs):
-        if k >= max_pairs or (deadline is not None and k % 256 == 0 and time.monotonic() > deadline):
+        if k >= max_pairs or (deadline is not None and k % 256 == 0 and time.process_time() > deadline):
             why = f"{k} pairs expanded, {len(pairs) - k} left" + (
                 " (pair budget)" if k >= max_pairs else " (time budget)")
             return ProductResult("timeout", k, nondeterministic=nondet, reason=why)

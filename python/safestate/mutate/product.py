@@ -87,7 +87,7 @@ class OriginalSide:
         todo = list(self.init)
         seen = {self.model.key(s) for s in todo}
         while todo:
-            if deadline is not None and time.monotonic() > deadline:
+            if deadline is not None and time.process_time() > deadline:
                 return
             for t in self.successors(todo.pop()):
                 k = self.model.key(t)
@@ -98,6 +98,8 @@ class OriginalSide:
 
 def search(original: Model | OriginalSide, mutant: Model, proj: Projection, max_pairs: int = 2_000_000,
            deadline: float | None = None, progress: Callable[[int], None] | None = None) -> ProductResult:
+    """The search of the module docstring; `deadline`: a value of `time.process_time()`
+    (the budget is CPU seconds)."""
     side = original if isinstance(original, OriginalSide) else OriginalSide(original)
     original = side.model
     ii, oi = proj.indices(original)
@@ -158,7 +160,7 @@ def search(original: Model | OriginalSide, mutant: Model, proj: Projection, max_
         return ProductResult("difference", 0, diff, nondet)
     k = 0
     while k < len(states):
-        if k >= max_pairs or (deadline is not None and time.monotonic() > deadline):
+        if k >= max_pairs or (deadline is not None and time.process_time() > deadline):
             why = f"{k} pairs expanded, {len(states) - k} left" + (
                 " (pair budget)" if k >= max_pairs else " (time budget)")
             return ProductResult("timeout", k, nondeterministic=nondet, reason=why)
