@@ -132,20 +132,6 @@ bool Store::member_slow(uint32_t s, uint32_t x, int loc) const {
   return false;
 }
 
-bool Store::is_record(uint32_t f) const {
-  if (kind(f) != K_FUN || len(f) == 0) return false;
-  const uint32_t* k = items(f);
-  for (uint32_t i = 0; i < len(f); ++i)
-    if (kind(k[i]) != K_STR) return false;
-  return true;
-}
-
-bool Store::record_against_non_record(uint32_t a, uint32_t b) const {
-  if (!is_record(a)) return false;
-  Kind kb = kind(b);
-  return (kb == K_SEQ && len(b) > 0) || (kb == K_FUN && !is_record(b));
-}
-
 // a = b as TLC's equals for different ids (so unequal values: every value is interned
 // in its canonical form): its walk in its order (a set's size, then its elements in
 // TLC's order; a tuple's length, then its items; a record's field names, then its

@@ -152,10 +152,21 @@ class Store {
   bool member(uint32_t s, uint32_t x, int loc) const { return set_has(s, x) || member_slow(s, x, loc); }
   bool member_slow(uint32_t s, uint32_t x, int loc) const;
 
-  // a = b as TLC's equals for different ids (values.tlc_equals): see values.cpp.
-  bool is_record(uint32_t f) const;
+  // A function of strings (inline: cmp asks it of every pair of functions it compares).
+  bool is_record(uint32_t f) const {
+    if (kind(f) != K_FUN || len(f) == 0) return false;
+    const uint32_t* k = items(f);
+    for (uint32_t i = 0; i < len(f); ++i)
+      if (kind(k[i]) != K_STR) return false;
+    return true;
+  }
   // a a record, b a function or sequence that does not convert to one (<<>> does).
-  bool record_against_non_record(uint32_t a, uint32_t b) const;
+  bool record_against_non_record(uint32_t a, uint32_t b) const {
+    if (!is_record(a)) return false;
+    Kind kb = kind(b);
+    return (kb == K_SEQ && len(b) > 0) || (kb == K_FUN && !is_record(b));
+  }
+  // a = b as TLC's equals for different ids (values.tlc_equals): see values.cpp.
   bool equal_walk(uint32_t a, uint32_t b, int loc) const;
   size_t bytes() const { return vals.size() * sizeof(Val) + pooled_ * 4 + table_.size() * 4; }
 
