@@ -1,5 +1,5 @@
 """`safestate check --engine native`: the C++ core (checker/native/, bindings/python/
-tla_native_module.cpp) against the Python engine, the reference.  Wherever the core
+tla_native/) against the Python engine, the reference.  Wherever the core
 accepts a spec — the corpus, the real-world specs, the registered models' CI cfgs —
 both engines must give the same verdict, distinct/generated counts, depth, states
 left on the queue, violated invariant and counterexample trace (states, actions and

@@ -14,7 +14,7 @@ def native_core_sources() -> list[Path]:
     """The core's C++ sources, where they are at hand (a source checkout; else none): part
     of the checker's "version" in cache keys (state graphs, evidence steps), so a change
     to the core alone never reuses an old result.  Every file of the core, however it is
-    split (`tla_native*` files and a `tla_native/` folder)."""
+    split (`tla_native*` files and the `tla_native/` folder, its op table ops.def included)."""
     if not _BINDINGS.is_dir():
         return []
     files = [*_BINDINGS.glob("tla_native*.cpp"), *_BINDINGS.glob("tla_native*.hpp"), *_BINDINGS.glob("tla_native/**/*")]
