@@ -174,5 +174,5 @@ UCA6_MOTOR_ONLY_AFTER_MOTOR_START == motor => motorCmd
 Witness_RestartAfterStroke == ~(restarted /\ mode = 2)  \* INV_PRESS (restart conjunct), UCA-5 across a restart
 Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE, UCA-4
 Witness_Cooling == ~("cool_pump" \in outputs /\ step = "Eject")
-Witness_ModeChangeMidCycle == ~(event = "mode3" /\ restarted = FALSE /\ cycleMode = 0 /\ clamped = FALSE /\ mode = 3 /\ ~motor /\ motorCmd = FALSE /\ selector = 3 /\ Len(log) = 8)  \* UCA-5: a mode change from a running cycle exits motor-on (6 exits, 2 entries)
+Witness_ModeChangeMidCycle == ~(event = "mode3" /\ Len(log) = 8)  \* UCA-5: a mode change in a running cycle exits the motor-on subtree (6 exits, 2 entries)
 ===============================================================================
