@@ -34,10 +34,16 @@ ModeBlock(m) == <<ModeOf[m], OffOf[m], OnOf[m], StrokeOf[m]>> \o StrokeSeq[m] \o
 PressOrder == <<"Press">> \o ModeBlock(1) \o ModeBlock(2) \o ModeBlock(3)
 PressStates == {PressOrder[i] : i \in 1..Len(PressOrder)}
 ModeStates == {ModeOf[m] : m \in 1..3}
-StrokeStates == UNION {{StrokeSeq[m][k] : k \in 1..Len(StrokeSeq[m])} : m \in 1..3}
+StrokeStates == {StrokeSeq[m][k] : m \in 1..3, k \in 1..7} \cup {StrokeSeq[m][k] : m \in 1..2, k \in 8..9}
 StepState(m, k) == StrokeSeq[m][k]
-ModeNum(s) == CHOOSE m \in 1..3 : \E i \in 1..Len(ModeBlock(m)) : ModeBlock(m)[i] = s
-StepNameOf(s) == LET m == ModeNum(s) IN StepSeq[m][CHOOSE k \in 1..Len(StrokeSeq[m]) : StrokeSeq[m][k] = s]
+\* Bounded ranges (1..16, 1..9) with a length guard rather than 1..Len(...): the prover
+\* enumerates a CHOOSE or \E only over a range of constant bounds.
+ModeNum(s) == CHOOSE m \in 1..3 : \E i \in 1..16 : i <= Len(ModeBlock(m)) /\ ModeBlock(m)[i] = s
+StepNames == {"Ready", "Feed", "Locate", "Clamp", "FastAdvance", "Pressing", "Blow", "Eject", "ClearScrap"}
+StepNameOf ==
+    [s \in StrokeStates |->
+        CHOOSE n \in StepNames : \E m \in 1..3 : \E k \in 1..9 :
+            k <= Len(StrokeSeq[m]) /\ StrokeSeq[m][k] = s /\ StepSeq[m][k] = n]
 PressParent ==
     [s \in PressStates |->
         CASE s = "Press" -> "none"
@@ -66,7 +72,7 @@ Out(s) ==
     CASE s \in {OnOf[m] : m \in 1..3} -> "motor"
       [] s \in {AuxOf[m] : m \in 1..3} -> "lamp"
       [] s \in {CoolingOf[m] : m \in 1..3} -> "cool_pump"
-      [] s \in StrokeStates -> ValveOf(StepNameOf(s))
+      [] s \in StrokeStates -> ValveOf(StepNameOf[s])
       [] OTHER -> "none"
 
 Inputs == {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2", "mode3",
@@ -86,7 +92,7 @@ vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode,
 motor == "motor" \in outputs
 mode == CHOOSE m \in 1..3 : ModeOf[m] \in active
 ActiveStep == {s \in StrokeStates : s \in active}
-step == IF ActiveStep = {} THEN "none" ELSE StepNameOf(CHOOSE s \in ActiveStep : TRUE)
+step == IF ActiveStep = {} THEN "none" ELSE StepNameOf[CHOOSE s \in ActiveStep : TRUE]
 \* The analog outputs set by the mode's Pressing / FastAdvance entry, 0 otherwise.
 pressure == IF "press_valve" \in outputs THEN Pressure[mode] ELSE 0
 speed == IF "fast_valve" \in outputs THEN Speed[mode] ELSE 0
@@ -94,7 +100,7 @@ StrokeOn(outs) == outs \cap StrokeOutputs # {}
 
 \* §4: the request the run functions make for input e (none: <<>>).
 InputMode(e) == CASE e = "mode1" -> 1 [] e = "mode2" -> 2 [] e = "mode3" -> 3 [] OTHER -> 0
-StepPos == CHOOSE k \in 1..Len(StrokeSeq[mode]) : StrokeSeq[mode][k] \in active
+StepPos == CHOOSE k \in 1..9 : k <= Len(StrokeSeq[mode]) /\ StrokeSeq[mode][k] \in active
 NextStep(k) == IF k < Len(StrokeSeq[mode]) THEN k + 1 ELSE IF continuous THEN 2 ELSE 1
 Reaction(e) ==
     CASE e = "motor_on" /\ OffOf[mode] \in active -> <<OffOf[mode], OnOf[mode]>>
