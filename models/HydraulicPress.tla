@@ -137,7 +137,8 @@ Scan(e) ==
     /\ continuous' = CASE e = "continuous_on" -> TRUE [] e = "continuous_off" -> FALSE [] OTHER -> continuous
     /\ restarted' = (e = "motor_on" /\ ~motor)
     /\ event' = e
-    /\ selector' = IF InputMode(e) # 0 THEN InputMode(e) ELSE selector
+    \* Spelt out, not through InputMode: the property must not share the reaction's decoding.
+    /\ selector' = CASE e = "mode1" -> 1 [] e = "mode2" -> 2 [] e = "mode3" -> 3 [] OTHER -> selector
     /\ cycleMode' = IF e = "start" THEN selector' ELSE IF StrokeOn(outputs') THEN cycleMode ELSE 0
     /\ clamped' = IF ~StrokeOn(outputs') \/ "feed_valve" \in outputs' THEN FALSE
                   ELSE clamped \/ "clamp_valve" \in outputs'
