@@ -35,6 +35,7 @@
 #include <string>
 #include <string_view>
 
+#include "safestate/sim/bus_master.hpp"
 #include "safestate/system_state_manager.hpp"
 #include "switch_case_ssm.hpp"
 
@@ -113,6 +114,13 @@ using safestate::SelectorReading;
 using safestate::StateId;
 using safestate::StatusRecord;
 using safestate::SubmitResult;
+
+// The design-page defaults with the tool stated (a tool-less flange), as a Config must.
+Config bench_config() noexcept {
+  Config c;
+  c.tool_offset_m = safestate::kFlangeTcp;
+  return c;
+}
 
 // ---------------------------------------------------------------------------------------
 // Deterministic RNG (splitmix64): same seed, same scenario, on every platform.
@@ -226,9 +234,12 @@ class Scenario {
       in_.selector.t1 = true;
     }
     in_.self_test_ok = self_test_ok_;
-    in_.servo_ready = st.state == StateId::Arming && arming_cycles_ >= ready_delay_;
-    in_.drive_fault = drive_fault_;
-    in_.fieldbus_ok = fieldbus_ok_;
+    // Drives and bus through a simulated EtherCAT master: both implementations decode the
+    // same status words and supervise the same frame counter. Ready after the drives' delay
+    // in ARMING, and kept while powered but for a rare loss (C27).
+    const bool ready_kept = safestate::is_powered(st.state) && st.state != StateId::Arming && !rng_.one_in(20'000);
+    in_.bus = master_.next(safestate::sim::BusLevels{
+        fieldbus_ok_, (st.state == StateId::Arming && arming_cycles_ >= ready_delay_) || ready_kept, drive_fault_});
     in_.operator_link_ok = link_lost_cycles_ == 0;
     in_.q = q_;
     in_.qd = qd_;
@@ -410,6 +421,7 @@ class Scenario {
   bool self_test_ok_{true};
   bool drive_fault_{false};
   bool fieldbus_ok_{true};
+  safestate::sim::BusMaster master_{bench_config().fieldbus_expected_working_counter};
   std::int32_t link_lost_cycles_{0};
   std::int32_t arming_cycles_{0};
   std::int32_t ready_delay_{0};
@@ -519,7 +531,7 @@ class Runner {
   }
 
   Options opt_;
-  Config config_{};
+  Config config_{bench_config()};
   Scenario scenario_;
   std::optional<Impl> impl_;
   ScanOutputs last_out_{};
@@ -562,10 +574,11 @@ void print_status(const char* who, const StatusRecord& s, const ScanOutputs& o) 
 void print_inputs(const ScanInputs& in) {
   std::printf(
       "  inputs: estop=(%d,%d) guard=(%d,%d) enabling=(%d,%d) selector(auto,t1,t2)=(%d,%d,%d) "
-      "self_test=%d ready=%d fault=%d\n          qd=[",
+      "self_test=%d status_word[0]=0x%04x wkc=%u counter=%u\n          qd=[",
       in.estop_closed.a, in.estop_closed.b, in.safeguard_closed.a, in.safeguard_closed.b,
       static_cast<int>(in.enabling.a), static_cast<int>(in.enabling.b), in.selector.auto_, in.selector.t1,
-      in.selector.t2, in.self_test_ok, in.servo_ready, in.drive_fault);
+      in.selector.t2, in.self_test_ok, static_cast<unsigned>(in.bus.status_words[0]),
+      static_cast<unsigned>(in.bus.working_counter), static_cast<unsigned>(in.bus.cycle_counter));
   for (const double v : in.qd) std::printf(" %.5f", v);
   std::printf(" ]\n");
 }
@@ -576,7 +589,7 @@ void print_command(const Command& c) {
 }
 
 int crosscheck(const Options& opt, bool describe) {
-  const Config config{};
+  const Config config = bench_config();
   std::optional<safestate::SystemStateManager> a;
   std::optional<safestate_bench::SwitchCaseSsm> b;
   a.emplace(config);

@@ -7,8 +7,12 @@
 # Prints the execution count, the crash count and the time. Needs clang with libFuzzer
 # (Debian: apt-get install clang; not installed by scripts/setup.sh): without it the script
 # says so in one line and exits 3 before step 1. Usage: bash bench/saf_fuzz.sh [RUNS]
+# `bash bench/saf_fuzz.sh --sanitize-only` runs step 1 alone (g++ only, no clang needed);
+# its exit code is the number of sanitized runs that failed (0: all passed).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+SANITIZE_ONLY=0
+if [ "${1:-}" = "--sanitize-only" ]; then SANITIZE_ONLY=1; shift; fi
 RUNS=${1:-1000000}
 OUT=build/saf-fuzz
 mkdir -p "$OUT/corpus" "$OUT/crashes"
@@ -16,8 +20,8 @@ mkdir -p "$OUT/corpus" "$OUT/crashes"
 # Step 2 needs clang with libFuzzer, which scripts/setup.sh does not install (the test command
 # does not need it): check first, so a missing compiler is one line, not a failure after step 1.
 CLANG=${CLANG:-$(command -v clang++ || true)}
-if [ -z "$CLANG" ] || ! echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
-    "$CLANG" -x c++ -fsanitize=fuzzer - -o "$OUT/probe" >/dev/null 2>&1; then
+if [ "$SANITIZE_ONLY" -eq 0 ] && { [ -z "$CLANG" ] || ! echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
+    "$CLANG" -x c++ -fsanitize=fuzzer - -o "$OUT/probe" >/dev/null 2>&1; }; then
   echo "saf_fuzz.sh: clang++ with libFuzzer not found (${CLANG:-no clang++ on PATH}); install it with: apt-get install clang libclang-rt-14-dev (or set CLANG=/path/to/clang++)" >&2
   exit 3
 fi
@@ -40,10 +44,12 @@ if ! build/saf-asan/src/saf/saf_demo >"$OUT/saf_demo.log" 2>&1; then
   echo "FAILED under sanitizers: saf_demo (log: $OUT/saf_demo.log)"; asan_failures=$((asan_failures + 1))
 fi
 echo "sanitized runs failed: $asan_failures (tests: $(echo $TESTS | wc -w), plus saf_demo)"
+[ "$SANITIZE_ONLY" -eq 1 ] && exit "$asan_failures"
 
 echo "== 2. libFuzzer on the codec and intake ($RUNS executions)"
 "$CLANG" -std=c++17 -O1 -g -Iinclude -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
   src/saf/codec.cpp src/saf/config.cpp src/saf/inbound_batch.cpp src/saf/safety_service.cpp \
+  src/saf/intake.cpp src/saf/estop_extension.cpp src/saf/sha256.cpp src/saf/source.cpp \
   src/saf/fuzz_codec.cpp -o "$OUT/saf_fuzz_codec"
 # Seeds: one valid datagram of each of the nine types (design §10).
 printf '\x3c\x01\x00\x00\x01\x00\x00\x00\x01\x00\x01' >"$OUT/corpus/set_estop"

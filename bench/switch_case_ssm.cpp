@@ -52,7 +52,10 @@ OperatingMode flat_mode_of(SelectorReading sel) noexcept {
 }  // namespace
 
 SwitchCaseSsm::SwitchCaseSsm(const safestate::Config& config) noexcept
-    : config_(config), kin_(config.dh), config_ok_(safestate::validate(config) == safestate::ConfigError::None) {}
+    : config_(config),
+      kin_(config.dh),
+      config_ok_(safestate::validate(config) == safestate::ConfigError::None),
+      bus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit) {}
 
 safestate::SubmitResult SwitchCaseSsm::submit(const safestate::Command& command) noexcept {
   if (queue_.size() >= config_.command_queue_limit || !queue_.try_push(command)) {
@@ -118,6 +121,9 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   const bool enable_middle = in.enabling.a == EnablePosition::Middle && in.enabling.b == EnablePosition::Middle;
   const bool enable_panic = in.enabling.a == EnablePosition::Panic || in.enabling.b == EnablePosition::Panic;
   const SelectorReading sel = in.selector.reading();
+  // The drives' status words and the bus watchdog: the product's decoders (not under test here).
+  const safestate::DriveStatusSummary drives = safestate::summarize_drives(in.bus.status_words);
+  const bool fieldbus_ok = bus_.update(in.bus.cycle_counter, in.bus.working_counter);
 
   SpeedLevel speed = SpeedLevel::Zero;
   for (std::size_t i = 0; i < safestate::kAxisCount; ++i) {
@@ -139,13 +145,11 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   guard_mm_ = flat_count_mismatch(in.safeguard_closed.a != in.safeguard_closed.b, guard_mm_, d);
   enable_mm_ = flat_count_mismatch(in.enabling.a != in.enabling.b, enable_mm_, d);
   sel_inv_ = flat_count_mismatch(sel == SelectorReading::Invalid, sel_inv_, d);
-  // K37: each E-stop channel seen open; C25: every axis at rest at the start of the cycle.
+  // K37: each E-stop channel seen open; K39: PANIC seen since both channels were RELEASED.
   estop_tested_a_ = estop_tested_a_ || !in.estop_closed.a;
   estop_tested_b_ = estop_tested_b_ || !in.estop_closed.b;
-  bool axes_at_rest = true;
-  for (const auto& axis : axes_) {
-    axes_at_rest = axes_at_rest && (axis.state() == AxisState::Disabled || axis.state() == AxisState::StandStill);
-  }
+  enable_release_required_ = enable_panic || (enable_release_required_ && !(in.enabling.a == EnablePosition::Released &&
+                                                                            in.enabling.b == EnablePosition::Released));
   FaultCode discrepancy = FaultCode::None;
   if (estop_mm_ > d) {
     discrepancy = FaultCode::DiscrepancyEstop;
@@ -173,7 +177,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     lockout(FaultCode::SelfTestFailed);  // C02
   } else if (discrepancy != FaultCode::None) {
     lockout(discrepancy);  // C03
-  } else if (!in.fieldbus_ok) {
+  } else if (!fieldbus_ok) {
     lockout(FaultCode::FieldbusLoss);  // C24
   } else if (state_ == StateId::Boot) {
     if (estop_tripped) {
@@ -182,6 +186,16 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     } else {
       enter(StateId::Idle);  // C05
     }
+  } else if (powered && drives.drive_fault) {
+    lockout(FaultCode::DriveFault);  // C09
+  } else if (powered && state_ != StateId::Arming && !drives.servo_ready) {
+    lockout(FaultCode::ServoReadyLost);  // C27
+  } else if (powered && session_ == OperatingMode::T1 && speed == SpeedLevel::OverT1) {
+    lockout(FaultCode::T1Overspeed);  // C10
+  } else if ((state_ == StateId::Arming || state_ == StateId::AutoIdle || state_ == StateId::ManualIdle ||
+              state_ == StateId::Hold) &&
+             speed != SpeedLevel::Zero) {
+    lockout(FaultCode::StandstillViolation);  // C25
   } else if (state_ != StateId::EstopActive && estop_tripped) {
     enter(StateId::EstopActive);  // C06
     status_.stop_category = StopCategory::Cat0;
@@ -190,14 +204,6 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
       enter(StateId::EstopResetNeeded);  // C07, else C08
       stale_commands_ = queued_at_start;
     }
-  } else if (powered && in.drive_fault) {
-    lockout(FaultCode::DriveFault);  // C09
-  } else if (powered && session_ == OperatingMode::T1 && speed == SpeedLevel::OverT1) {
-    lockout(FaultCode::T1Overspeed);  // C10
-  } else if ((state_ == StateId::Arming || state_ == StateId::AutoIdle || state_ == StateId::ManualIdle ||
-              state_ == StateId::Hold) &&
-             axes_at_rest && speed != SpeedLevel::Zero) {
-    lockout(FaultCode::StandstillViolation);  // C25
   } else if (powered && manual && enable_panic) {
     enter(StateId::Idle);  // C11
     status_.stop_category = StopCategory::Cat0;
@@ -205,16 +211,22 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
              (!flat_same_mode(sel, session_) ||                  // C12
               (session_ == OperatingMode::Auto && gate_open) ||  // C13
               (manual && !enable_middle))) {                     // C14
-    // Escalating a Cat 2 stop in progress keeps its timer and counts the cycle.
+    // Escalating a Cat 2 stop in progress keeps its timer and counts the cycle; from ARMING
+    // (nothing moves, brakes engaged) power is removed at once.
     const std::uint32_t kept = state_ == StateId::Stopping ? std::min(state_cycles_ + 1U, config_.max_stop_cycles) : 0U;
-    stop(StopCategory::Cat1);
-    state_cycles_ = kept;
+    if (state_ == StateId::Arming) {
+      enter(StateId::Idle);
+      status_.stop_category = StopCategory::Cat1;
+    } else {
+      stop(StopCategory::Cat1);
+      state_cycles_ = kept;
+    }
   } else if (state_ == StateId::ManualJogging && !in.operator_link_ok) {
     pause();  // C26: as a Pause (K20), the jog kept
   } else {
     switch (state_) {
       case StateId::Arming:
-        if (in.servo_ready) {
+        if (drives.servo_ready) {
           enter(session_ == OperatingMode::Auto ? StateId::AutoIdle : StateId::ManualIdle);  // C15
         } else if (state_cycles_ == config_.arming_timeout_cycles) {
           lockout(FaultCode::ArmingTimeout);  // C16
@@ -225,6 +237,9 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
       case StateId::Stopping:
         if (speed == SpeedLevel::Zero && stopping_cat_ == StopCategory::Cat1) {
           enter(StateId::Idle);  // C18
+        } else if (speed == SpeedLevel::Zero && stopping_cat_ == StopCategory::Cat2 &&
+                   resume_to_ == ResumeTarget::None) {
+          enter(StateId::ManualIdle);  // C28: the JOG_STOP's stop is done
         } else if (speed == SpeedLevel::Zero && stopping_cat_ == StopCategory::Cat2) {
           const ResumeTarget r = resume_to_;  // C19: HOLD keeps resume_to and jog
           const std::int32_t ja = jog_axis_;
@@ -251,7 +266,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   // ---- §6 at most one command ----------------------------------------------------------
   safestate::Command c;
   if (queue_.try_pop(c)) {
-    handle_command(c, sel, gate_open, enable_middle, in.drive_fault, state_at_start);
+    handle_command(c, sel, gate_open, enable_middle, drives.drive_fault, state_at_start);
     if (stale_commands_ > 0) --stale_commands_;  // K36: one fewer command from before the release
   } else {
     status_.command_result = CommandResult::none();
@@ -261,7 +276,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   const bool pw = safestate::is_powered(state_);
   out_.contactor_closed = pw;
   out_.drive_enable = pw;
-  out_.brake_release = pw;
+  out_.brake_release = pw && state_ != StateId::Arming;
   out_.ramp_down_request = state_ == StateId::Stopping;
   out_.reset_lamp = state_ == StateId::EstopResetNeeded;
   out_.commanded_speed_mm_s = state_ == StateId::ManualJogging ? jog_speed_ : 0;
@@ -310,6 +325,7 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   status_.stale_commands = stale_commands_;
   status_.estop_tested_a = estop_tested_a_;
   status_.estop_tested_b = estop_tested_b_;
+  status_.enable_release_required = enable_release_required_;
   return out_;
 }
 
@@ -352,6 +368,8 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
         reject(RejectReason::SafeguardOpen);  // K09
       } else if ((sel == SelectorReading::T1 || sel == SelectorReading::T2) && !enable_middle) {
         reject(RejectReason::EnableNotMiddle);  // K10
+      } else if ((sel == SelectorReading::T1 || sel == SelectorReading::T2) && enable_release_required_) {
+        reject(RejectReason::EnableNotMiddle);  // K39: MIDDLE reached from PANIC
       } else if (sel == SelectorReading::T2 && !t2_confirmed_) {
         reject(RejectReason::T2NotConfirmed);  // K11
       } else {
@@ -369,7 +387,12 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
         case StateId::ManualIdle:
         case StateId::ManualJogging:
         case StateId::Hold:
-          stop(StopCategory::Cat1);  // K14
+          if (state_ == StateId::Arming) {
+            enter(StateId::Idle);  // K14 from ARMING: nothing moves, power removed at once
+            status_.stop_category = StopCategory::Cat1;
+          } else {
+            stop(StopCategory::Cat1);  // K14
+          }
           status_.command_result = CommandResult::accepted();
           break;
         default:
@@ -443,7 +466,7 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
       } else if (state_ != StateId::ManualJogging) {
         reject(RejectReason::WrongState);  // K31
       } else {
-        enter(StateId::ManualIdle);  // K32
+        stop(StopCategory::Cat2);  // K32: a Cat 2 stop without resume target (C28)
         status_.command_result = CommandResult::accepted();
       }
       return;

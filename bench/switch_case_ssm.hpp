@@ -17,6 +17,8 @@
 #include "safestate/arm_kinematics.hpp"
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
+#include "safestate/drive_status_summary.hpp"
+#include "safestate/fieldbus_watchdog.hpp"
 #include "safestate/plcopen_axis.hpp"
 #include "safestate/scan_inputs.hpp"
 #include "safestate/scan_outputs.hpp"
@@ -49,6 +51,7 @@ class SwitchCaseSsm {
   safestate::ArmKinematics kin_;
   bool config_ok_;
   safestate::SpscQueue<safestate::Command, safestate::kMaxQueueCapacity> queue_;
+  safestate::FieldbusWatchdog bus_;
 
   // Machine state (flat, all fields always present).
   safestate::StateId state_{safestate::StateId::Boot};
@@ -68,6 +71,7 @@ class SwitchCaseSsm {
   std::uint32_t stale_commands_{0};  // K36: commands queued at the E-stop release (C07)
   bool estop_tested_a_{false};       // K37: channel A seen open since the last accepted Reset
   bool estop_tested_b_{false};
+  bool enable_release_required_{false};  // K39: PANIC seen since the last RELEASED
   std::array<safestate::PlcopenAxis, safestate::kAxisCount> axes_{};
 
   safestate::StatusRecord status_{};

@@ -38,9 +38,22 @@ Events == {[kind |-> k, unit |-> u] : k \in {"READY", "FAIL"}, u \in Units}
 VARIABLES status, fatal_fault, watchdog_ok
 \* ... the supervisor and its outputs ...
 VARIABLES sup_state, init_ticks, stop_step, outputs_safe, dispatched
+\* ... what the safety unit evaluated in the tick ("NONE": not dispatched;
+\* "FRESH": the snapshot monitoring took in this tick; "EMPTY": the mailbox,
+\* emptied at the start of every dispatch cycle, had no snapshot, which
+\* ao_safety evaluates as an invalid sensor) and the output stage ("GATED":
+\* it carries what safety's gate chose in this tick; "SAFE": held safe) ...
+VARIABLES safety_input, outputs
+\* ... and an observer: ticks spent in INIT, counted from the supervisor's
+\* state alone (not its timer), for the init-timeout hazard.
+VARIABLES init_age
+\* ... and two of the input: a shutdown has been requested (latched), and the
+\* stop reports taken since (saturating at the length of the stop order).
+VARIABLES shutdown_requested, stop_reports
 
 vars == <<status, fatal_fault, watchdog_ok, sup_state, init_ticks, stop_step,
-          outputs_safe, dispatched>>
+          outputs_safe, dispatched, safety_input, outputs, init_age, shutdown_requested,
+          stop_reports>>
 
 -----------------------------------------------------------------------------
 (*************************** Environment of a tick **************************)
@@ -88,7 +101,10 @@ StateAfter(row) ==
       [] OTHER -> sup_state
 
 (*************************** Dispatch (page 8) ******************************)
+\* The dispatcher itself is a unit: while it is not READY nothing is dispatched
+\* (the runtime's dispatch_gate, dispatcher.hpp).
 Dispatchable(s, st, a) ==
+    /\ st["dispatcher"] = "READY"
     /\ st[a] = "READY"
     /\ \/ s = "RUN"
        \/ s \in {"DEGRADED", "SHUTTING_DOWN"} /\ a \in Critical
@@ -115,12 +131,21 @@ WatchdogAfter(ev) == IF ev.kind = "WD_BAD" THEN FALSE
 \* conformance harness compares them).
 RowsFiredBy(ev) == {Row(ev, StatusAfter(ev), FatalAfter(ev), WatchdogAfter(ev))}
 
+\* What safety evaluates in a dispatch cycle d (slots of Dispatch): the
+\* snapshot monitoring took before it in the same cycle, or the emptied mailbox.
+InSlots(d, a) == \E i \in 1..5 : d[i] = a
+SafetyInput(d) ==
+    IF ~InSlots(d, "safety") THEN "NONE"
+    ELSE IF InSlots(d, "monitoring") THEN "FRESH" ELSE "EMPTY"
+
 Tick(ev) ==
     LET st == StatusAfter(ev)
         fatal == FatalAfter(ev)
         wd == WatchdogAfter(ev)
         row == Row(ev, st, fatal, wd)
-        s == StateAfter(row) IN
+        s == StateAfter(row)
+        d == Dispatch(s, st)
+        safe == outputs_safe \/ (ev.kind = "STOPPED" /\ StopOrder[stop_step] = "outputs") IN
     /\ Enabled(ev)
     /\ status' = st /\ fatal_fault' = fatal /\ watchdog_ok' = wd
     /\ sup_state' = s
@@ -128,11 +153,20 @@ Tick(ev) ==
     /\ init_ticks' = IF row = "I04" THEN init_ticks + 1 ELSE 0
     \* A stop step is done when its unit reports (the outputs step: control
     \* acknowledges the safe outputs); then the next one is requested.
-    /\ outputs_safe' = (outputs_safe \/ (ev.kind = "STOPPED" /\ StopOrder[stop_step] = "outputs"))
+    /\ outputs_safe' = safe
     /\ stop_step' = IF row = "X01" THEN 1
                     ELSE IF ev.kind = "STOPPED" /\ stop_step < Len(StopOrder)
                          THEN stop_step + 1 ELSE stop_step
-    /\ dispatched' = Dispatch(s, st)
+    /\ dispatched' = d
+    /\ safety_input' = SafetyInput(d)
+    \* The output gate is closed at the start of every dispatch cycle; only
+    \* safety, on this tick's snapshot, opens it (and after shutdown step 1
+    \* control's command is the safe value whatever the gate does).
+    /\ outputs' = IF safe \/ SafetyInput(d) # "FRESH" THEN "SAFE" ELSE "GATED"
+    /\ init_age' = IF s = "INIT" THEN init_age + 1 ELSE 0
+    /\ shutdown_requested' = (shutdown_requested \/ (Live /\ ev.kind = "SHUTDOWN"))
+    /\ stop_reports' = IF ev.kind = "STOPPED" /\ stop_reports < Len(StopOrder)
+                      THEN stop_reports + 1 ELSE stop_reports
 
 \* Construction: every unit initialising, watchdog fine, nothing dispatched.
 Init ==
@@ -141,6 +175,8 @@ Init ==
     /\ sup_state = "INIT" /\ init_ticks = 0
     /\ stop_step = 0 /\ outputs_safe = FALSE
     /\ dispatched = NoDispatch
+    /\ safety_input = "NONE" /\ outputs = "SAFE" /\ init_age = 0
+    /\ shutdown_requested = FALSE /\ stop_reports = 0
 
 Next == \E ev \in Events : Tick(ev)
 
@@ -156,6 +192,11 @@ TypeOK ==
     /\ stop_step \in 0..Len(StopOrder)
     /\ outputs_safe \in BOOLEAN
     /\ dispatched \in [1..5 -> AOs \cup {"none"}]
+    /\ safety_input \in {"NONE", "FRESH", "EMPTY"}
+    /\ outputs \in {"GATED", "SAFE"}
+    /\ init_age \in 0..InitTimeoutTicks
+    /\ shutdown_requested \in BOOLEAN
+    /\ stop_reports \in 0..Len(StopOrder)
 
 \* The order of PRO-05, spelled out here (not Order), so that a mutant of
 \* the dispatcher's table cannot change what the invariant demands.
@@ -173,10 +214,12 @@ INV_SUP_RUN_GATES ==
         /\ ~fatal_fault
         /\ watchdog_ok
 
-\* PRO-05: the init timeout - the supervisor never waits in INIT for the
-\* timeout's number of ticks.
+\* PRO-05 (UCA-S4): the init timeout - the supervisor never waits in INIT
+\* for the timeout's number of ticks, counted by the observer (a frozen init
+\* timer would keep init_ticks small for ever).
 INV_SUP_INIT_TIMEOUT ==
-    sup_state = "INIT" => init_ticks < InitTimeoutTicks
+    /\ sup_state = "INIT" => init_age < InitTimeoutTicks
+    /\ sup_state = "INIT" => init_ticks = init_age
 
 \* PRO-05: in Degraded (and while shutting down) no non-critical event is
 \* dispatched; in INIT and STOPPED nothing is.
@@ -184,6 +227,7 @@ INV_SUP_DEGRADED_RESTRICTED ==
     /\ sup_state \in {"DEGRADED", "SHUTTING_DOWN"} =>
            \A i \in 1..5 : dispatched[i] \in Critical \cup {"none"}
     /\ sup_state \in {"INIT", "STOPPED"} => dispatched = NoDispatch
+    /\ status["dispatcher"] # "READY" => dispatched = NoDispatch
     /\ \A i \in 1..5 : dispatched[i] # "none" => status[dispatched[i]] = "READY"
 
 \* PRO-05: the fixed dispatch order monitoring, control, safety,
@@ -193,11 +237,58 @@ INV_SUP_DISPATCH_ORDER ==
         i < j => IF dispatched[j] = "none" THEN TRUE
                  ELSE dispatched[i] # "none" /\ Rank(dispatched[i]) < Rank(dispatched[j])
 
-\* PRO-05: controlled shutdown - protection (the safety unit) stops only
-\* after the outputs are safe, and STOPPED means every unit has stopped.
+\* PRO-05 (UCA-S3): controlled shutdown - protection (the safety unit) stops
+\* only after the outputs are safe, never before the units it works with
+\* (its sensor input, the output path, the dispatcher and the tick), and
+\* STOPPED means every unit has stopped.
 INV_SUP_SHUTDOWN_SAFE ==
     /\ status["safety"] = "STOPPED" => outputs_safe
+    /\ status["safety"] # "STOPPED" =>
+           \A u \in {"monitoring", "control", "dispatcher", "timer"} : status[u] # "STOPPED"
     /\ sup_state = "STOPPED" => \A u \in Units : status[u] = "STOPPED"
+
+\* PRO-04/PRO-05 (UCA-S1, UCA-S2): every tick in RUN, DEGRADED and shutting
+\* down until safety's own stop step, while the dispatcher and the safety
+\* unit are READY, safety is dispatched, on the snapshot monitoring took in
+\* the same tick whenever monitoring is READY (a snapshot no older than the
+\* tick); it never evaluates an older one.
+INV_SUP_PROTECTION_RUNS ==
+    /\ (\/ sup_state \in {"RUN", "DEGRADED"}
+        \/ sup_state = "SHUTTING_DOWN" /\ status["safety"] # "STOPPED")
+       /\ status["dispatcher"] = "READY" /\ status["safety"] = "READY"
+       => /\ safety_input # "NONE"
+          /\ status["monitoring"] = "READY" => safety_input = "FRESH"
+    /\ safety_input = "FRESH" =>
+           \E i, j \in 1..5 : i < j /\ dispatched[i] = "monitoring" /\ dispatched[j] = "safety"
+
+\* PRO-05 (UCA-S7): the controlled shutdown happens exactly on request: in the
+\* tick of the request (from INIT, RUN or DEGRADED), and never without one.
+INV_SUP_SHUTDOWN_ON_REQUEST ==
+    sup_state \in {"SHUTTING_DOWN", "STOPPED"} <=> shutdown_requested
+
+\* PRO-05 (UCA-S9): the shutdown advances one step per stop report, in the
+\* tick of the report (a sequence stuck at a step leaves units running):
+\* while shutting down the supervisor waits for step 1 + reports so far.
+INV_SUP_SHUTDOWN_PROGRESS ==
+    /\ sup_state \in {"INIT", "RUN", "DEGRADED"} => stop_reports = 0
+    /\ sup_state = "SHUTTING_DOWN" => stop_step = 1 + stop_reports
+
+\* PRO-05 (UCA-S8): Degraded (or INIT) is not kept once every readiness gate
+\* passes, no fatal fault is present and the watchdog is fine: RUN in the
+\* same tick (a controller kept degraded refuses the operator's clear).
+INV_SUP_RUN_WHEN_READY ==
+    (/\ \A u \in Units : status[u] = "READY"
+     /\ ~fatal_fault /\ watchdog_ok /\ ~shutdown_requested) => sup_state = "RUN"
+
+\* PRO-03/PRO-05 (UCA-S5): fail-safe output stage - the outputs carry a
+\* regulated value only in a tick in which safety evaluated that tick's
+\* snapshot, and never after shutdown step 1; a tick without safety (INIT,
+\* a failed dispatcher or safety unit, STOPPED) holds them safe.
+INV_SUP_FAIL_SAFE ==
+    outputs = "GATED" =>
+        /\ safety_input = "FRESH"
+        /\ ~outputs_safe
+        /\ sup_state \in {"RUN", "DEGRADED", "SHUTTING_DOWN"}
 
 -----------------------------------------------------------------------------
 (* Reachability witnesses (non-vacuity), checked one by one and expected  *)
@@ -218,4 +309,19 @@ Witness_SafetyStopped ==    \* INV_SUP_SHUTDOWN_SAFE, protection ended in shutdo
     ~(sup_state = "SHUTTING_DOWN" /\ status["safety"] = "STOPPED")
 Witness_AllStopped ==       \* INV_SUP_SHUTDOWN_SAFE, shutdown complete
     ~(sup_state = "STOPPED")
+Witness_DegradedProtects == \* INV_SUP_PROTECTION_RUNS, Degraded, safety on a fresh snapshot
+    ~(sup_state = "DEGRADED" /\ safety_input = "FRESH" /\ outputs = "GATED")
+Witness_BlindSafety ==      \* INV_SUP_PROTECTION_RUNS, monitoring failed: the empty mailbox
+    ~(sup_state = "DEGRADED" /\ safety_input = "EMPTY")
+Witness_NoDispatcher ==     \* INV_SUP_FAIL_SAFE, dispatcher failed: nothing runs, outputs safe
+    ~(sup_state = "DEGRADED" /\ status["dispatcher"] = "FAILED" /\ status["safety"] = "READY"
+      /\ outputs = "SAFE")
+Witness_ShutdownFromInit == \* INV_SUP_SHUTDOWN_ON_REQUEST, a stop of a controller never ready
+    ~(sup_state = "SHUTTING_DOWN" /\ \E u \in Units : status[u] = "INIT")
+Witness_WatchdogHolds ==    \* INV_SUP_RUN_WHEN_READY, every gate passed, kept Degraded by the watchdog
+    ~(sup_state = "DEGRADED" /\ ~watchdog_ok /\ ~fatal_fault /\ \A u \in Units : status[u] = "READY")
+Witness_HalfwayDown ==      \* INV_SUP_SHUTDOWN_PROGRESS, four stop reports taken
+    ~(sup_state = "SHUTTING_DOWN" /\ stop_reports = 4)
+Witness_ShutdownProtects == \* INV_SUP_FAIL_SAFE, outputs safe, safety still running
+    ~(sup_state = "SHUTTING_DOWN" /\ outputs_safe /\ safety_input = "FRESH")
 =============================================================================

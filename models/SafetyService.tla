@@ -2,20 +2,24 @@
 (***************************************************************************)
 (* SAF-01 .. SAF-04: the Safety service of a JAUS-style robot subsystem    *)
 (* (docs/design/safety-service.md, "the page").  One step of this model is *)
-(* one call of SafetyService::cycle(): the intake of the cycle's messages  *)
-(* (page section 5), the state rows F01..M02 (section 6, transitions A-E)  *)
-(* and the control rows K01..K10 (section 7).                              *)
+(* one call of SafetyService::cycle(): the intake of the cycle's datagrams *)
+(* (page section 5: sender and freshness classification, then decoding),   *)
+(* the state rows F01..M02 (section 6, transitions A-E) and the control    *)
+(* rows K01..K10 with the re-send of section 7.                            *)
 (*                                                                         *)
-(* Environment.  The Safety Client, the Subsystem State service with its   *)
-(* access control and the channel between them and the service are        *)
-(* modelled by their most general behaviour: in every cycle any            *)
-(* combination of messages may arrive (or none).  This contains a lossy,   *)
-(* duplicating, reordering channel (a lost message is "NONE", a duplicate  *)
-(* is the same message again in a later cycle), a Safety Client that stops *)
-(* sending or sends garbage (rejected by the codec: "NONE" at this level), *)
-(* and an access control that grants, refuses, or hands control to a      *)
-(* component of higher authority at any time.  Invariants that hold here   *)
-(* hold for every behaviour of the real peers.                             *)
+(* Environment.  In every cycle any combination of datagrams may arrive    *)
+(* (or none): at most one of each kind, each from the configured peer and  *)
+(* fresh, or forged: sent from another address ("_SPOOFED"), or a replay   *)
+(* of an earlier Set Estop whose sequence number is outside the replay     *)
+(* window ("_REPLAYED").  This contains a lossy, duplicating, reordering   *)
+(* channel, a Safety Client that stops sending, a local attacker, and an   *)
+(* access control that grants, refuses, or hands control to a component of *)
+(* higher authority at any time.                                           *)
+(*                                                                         *)
+(* Properties over the messages in and out (page section 11) read history  *)
+(* variables (named h_...) that this module computes from the inbox and *)
+(* outputs alone, with their own classification of the datagrams, so that *)
+(* a defect in the service's intake or rows cannot weaken them.            *)
 (*                                                                         *)
 (* Timeouts are counters with symbolic constants (cycles, page section 3). *)
 (***************************************************************************)
@@ -38,60 +42,146 @@ ControlStatus == {"RELEASED", "REQUESTED", "REFUSED", "HELD"}
 OutRequests  == {"NONE", "REQUEST", "RELEASE"}
 OutSetStates == {"NONE", "OPERATIONAL", "EMERGENCY"}
 
-\* The abstract content of one cycle's datagrams (page section 12).
-Inboxes == [estop: {"NONE", "CLEAR", "SET"},
-            health: {"NONE", "NORMAL", "ERROR", "FATAL"},
-            control: {"NONE", "ACCEPTED", "REFUSED", "OTHER"},
-            hw_fault: BOOLEAN]
+\* The datagrams of one cycle (page section 12): at most one genuine datagram
+\* of each kind (from the configured peer, fresh) and at most one forged one.
+\* Set Estop CLEAR/SET comes from the Safety Client; Report Health Summary,
+\* Confirm Control (ACCEPTED, REFUSED), Report Control (US: holder = our id
+\* with our authority; OTHER: another holder or nobody) and Report Subsystem
+\* State (OPERATIONAL: any value but EMERGENCY) from the subsystem.  The
+\* forged datagram arrives after the genuine ones (it would win): a clear
+\* Set Estop from another address (CLEAR_SPOOFED) or the client's own
+\* earlier one replayed (CLEAR_REPLAYED: sequence number outside the replay
+\* window), a NORMAL health summary, a Confirm Control(ACCEPTED) or a Report
+\* Control naming us, from another address.
+EstopIn   == {"NONE", "CLEAR", "SET"}
+HealthIn  == {"NONE", "NORMAL", "ERROR", "FATAL"}
+ControlIn == {"NONE", "ACCEPTED", "REFUSED", "US", "OTHER"}
+SubsysIn  == {"NONE", "OPERATIONAL"}
+ForgedIn  == {"NONE", "CLEAR_SPOOFED", "CLEAR_REPLAYED", "NORMAL_SPOOFED",
+              "ACCEPTED_SPOOFED", "US_SPOOFED"}
+\* A hardware fault, a forged datagram or a Report Subsystem State comes
+\* with any Set Estop; the other kinds are NONE then (FAULT is absorbing; a
+\* forged datagram is rejected whatever else arrives, and conformance adds
+\* forged datagrams and subsystem reports to every inbox, page section 12).
+Inboxes == {in \in [estop: EstopIn, health: HealthIn, control: ControlIn,
+                    subsys: SubsysIn, forged: ForgedIn, hw_fault: BOOLEAN] :
+               (in.hw_fault \/ in.forged # "NONE" \/ in.subsys # "NONE")
+                 => /\ in.health = "NONE" /\ in.control = "NONE"
+                    /\ (in.hw_fault => in.forged = "NONE" /\ in.subsys = "NONE")
+                    /\ (in.forged # "NONE" => in.subsys = "NONE")}
 NoMessages == [estop |-> "NONE", health |-> "NONE", control |-> "NONE",
-               hw_fault |-> FALSE]
+               subsys |-> "NONE", forged |-> "NONE", hw_fault |-> FALSE]
 
 Max2(a, b) == IF a >= b THEN a ELSE b
 ControlAgeMax == Max2(ReportDataTimeoutCycles, MessageIntervalCycles)
 
 VARIABLES
     state, estop, estop_age, health, health_age,
-    control, control_age, out_request, out_set_state
+    control, control_age, out_request, out_set_state,
+    alarm,      \* the authority contest is lost (page section 7, K03/K06)
+    resend,     \* a re-send of Set Subsystem State(EMERGENCY) is due (section 7)
+    set_age     \* cycles since the last Set Subsystem State(EMERGENCY), to MessageIntervalCycles
 
-\* Environment and history (not C++ state).
-VARIABLES inbox, ever_faulted
+\* Environment and history (not C++ state): the last inbox, and what the
+\* properties of section 11 know from the messages alone.
+VARIABLES inbox, ever_faulted,
+    h_estop,    \* the last genuine Set Estop: "NONE", "CLEAR", "SET"
+    h_silence,  \* cycles since it, to EstopTimeoutCycles
+    h_health,   \* the last genuine health summary (HealthViews)
+    h_health_age, \* cycles since it, to ReportDataTimeoutCycles + 1
+    h_told,     \* the last Set Subsystem State sent was EMERGENCY
+    h_refused,  \* a genuine refusal since EMERGENCY was last sent or control released
+    h_owed,     \* a genuine SET arrived since the subsystem was last told EMERGENCY
+    h_held_sent, \* control became HELD and EMERGENCY was sent in that cycle
+    h_due,      \* a Report Subsystem State(not EMERGENCY) while held awaits a re-send
+    h_due_age,  \* cycles it has waited
+    shadow      \* the service after this cycle without the forged datagrams
 
 svcVars == <<state, estop, estop_age, health, health_age,
-             control, control_age, out_request, out_set_state>>
-vars == <<svcVars, inbox, ever_faulted>>
+             control, control_age, out_request, out_set_state,
+             alarm, resend, set_age>>
+histVars == <<ever_faulted, h_estop, h_silence, h_health, h_health_age,
+              h_told, h_refused, h_owed, h_held_sent, h_due, h_due_age, shadow>>
+vars == <<svcVars, inbox, histVars>>
 
 \* The checker and TLC identify states by the service and the history; the
 \* last inbox is only a label of the step that produced the state.
-View == <<svcVars, ever_faulted>>
+View == <<svcVars, histVars>>
 
 Svc == [state |-> state, estop |-> estop, estop_age |-> estop_age,
         health |-> health, health_age |-> health_age, control |-> control,
         control_age |-> control_age, out_request |-> out_request,
-        out_set_state |-> out_set_state]
+        out_set_state |-> out_set_state, alarm |-> alarm, resend |-> resend,
+        set_age |-> set_age]
+
+-----------------------------------------------------------------------------
+(******************* Intake classification (page section 5) ****************)
+\* The transport tags each datagram with its sender (the configured Safety
+\* Client, the configured subsystem, or any other address) and its freshness
+\* (the Set Estop sequence number inside the replay window); the service
+\* accepts a datagram only from the peer of its kind, and only fresh.
+SourceOf(v) ==
+    IF v \in {"CLEAR_SPOOFED", "NORMAL_SPOOFED", "ACCEPTED_SPOOFED", "US_SPOOFED"}
+    THEN "OTHER"
+    ELSE IF v \in {"CLEAR", "SET", "CLEAR_REPLAYED"} THEN "CLIENT"
+    ELSE "SUBSYSTEM"
+FreshOf(v) == v # "CLEAR_REPLAYED"
+KindOf(v) ==
+    IF v \in {"CLEAR", "SET", "CLEAR_SPOOFED", "CLEAR_REPLAYED"} THEN "estop"
+    ELSE IF v \in {"NORMAL", "ERROR", "FATAL", "NORMAL_SPOOFED"} THEN "health"
+    ELSE IF v = "OPERATIONAL" THEN "subsys"
+    ELSE "control"
+ContentOf(v) ==
+    IF v \in {"CLEAR_SPOOFED", "CLEAR_REPLAYED"} THEN "CLEAR"
+    ELSE IF v = "NORMAL_SPOOFED" THEN "NORMAL"
+    ELSE IF v = "ACCEPTED_SPOOFED" THEN "ACCEPTED"
+    ELSE IF v = "US_SPOOFED" THEN "US"
+    ELSE v
+PeerOf(kind) == IF kind = "estop" THEN "CLIENT" ELSE "SUBSYSTEM"
+Accepted(v) == v # "NONE" /\ SourceOf(v) = PeerOf(KindOf(v)) /\ FreshOf(v)
+\* The content of the message of this kind the service takes from the cycle:
+\* the last accepted one (the forged datagram comes last).
+Taken(kind, in) ==
+    IF in.forged # "NONE" /\ KindOf(in.forged) = kind /\ Accepted(in.forged)
+    THEN ContentOf(in.forged)
+    ELSE IF Accepted(in[kind]) THEN in[kind] ELSE "NONE"
 
 -----------------------------------------------------------------------------
 (************************ Derived conditions (page 4) **********************)
-\* SAF-04: ESTOPTIMEOUT in cycles (EstopTimeoutCycles = ESTOPTIMEOUT / CYCLEINTERVAL).
-EstopTimedOut(s) == s.estop # "NONE" /\ s.estop_age > EstopTimeoutCycles
+\* SAF-04: ESTOPTIMEOUT in cycles: no Set Estop for EstopTimeoutCycles cycles.
+EstopTimedOut(s) == s.estop # "NONE" /\ s.estop_age >= EstopTimeoutCycles
 \* SAF-04: REPORTDATATIMEOUT in cycles (ReportDataTimeoutCycles).
 HealthBad(s) == \/ s.health \in {"ERROR", "FATAL"}
                 \/ s.health_age > ReportDataTimeoutCycles
+\* A health summary has been received and is good: "no report yet" is
+\* unknown, not healthy (page section 4).
+HealthKnownGood(s) == s.health = "NORMAL" /\ s.health_age <= ReportDataTimeoutCycles
 Danger(s) == s.estop = "SET" \/ EstopTimedOut(s) \/ HealthBad(s)
 
 -----------------------------------------------------------------------------
 (***************************** Intake (page 5) *****************************)
 Intake(s, in) ==
+    LET e == Taken("estop", in)
+        h == Taken("health", in)
+    IN
     [s EXCEPT
-        !.estop = IF in.estop = "NONE" THEN @ ELSE in.estop,
-        !.estop_age = IF in.estop = "NONE"
-                      THEN IF @ < EstopTimeoutCycles + 1 THEN @ + 1 ELSE @
+        !.estop = IF e = "NONE" THEN @ ELSE e,
+        !.estop_age = IF e = "NONE"
+                      THEN IF @ < EstopTimeoutCycles THEN @ + 1 ELSE @
                       ELSE 0,
-        !.health = IF in.health = "NONE" THEN @ ELSE in.health,
-        !.health_age = IF in.health = "NONE"
+        !.health = IF h = "NONE" THEN @ ELSE h,
+        !.health_age = IF h = "NONE"
                        THEN IF @ < ReportDataTimeoutCycles + 1 THEN @ + 1 ELSE @
                        ELSE 0,
+        !.set_age = IF @ < MessageIntervalCycles THEN @ + 1 ELSE @,
         !.out_request = "NONE",
         !.out_set_state = "NONE"]
+
+\* The control event of the cycle: an accepted Confirm Control or Report
+\* Control ("NONE" when none was accepted).
+Event(in) == Taken("control", in)
+\* An accepted Report Subsystem State other than EMERGENCY.
+SubsysNotEmergency(in) == Taken("subsys", in) = "OPERATIONAL"
 
 -----------------------------------------------------------------------------
 (********************** State rows, transitions A-E (page 6) **************)
@@ -101,22 +191,27 @@ LeaveEmergency(s) ==
               !.out_set_state = IF s.control = "HELD" THEN "OPERATIONAL" ELSE "NONE",
               !.out_request = "RELEASE",
               !.control = "RELEASED",
-              !.control_age = 0]
+              !.control_age = 0,
+              !.alarm = FALSE]
 
 Enter(s, target) == [s EXCEPT !.state = target]
 
+\* D waits until the subsystem has been told EMERGENCY (control held) or the
+\* authority contest is lost (refused): an E-stop shorter than the control
+\* round trip still reaches the subsystem (page section 6).
 StateRow(s, in) ==
     IF s.state = "FAULT" THEN "F01"
     ELSE IF in.hw_fault THEN "E01"
     ELSE IF s.state = "PAIRING" THEN
-        IF s.estop # "NONE" /\ ~Danger(s) THEN "P01"
+        IF s.estop # "NONE" /\ ~Danger(s) /\ HealthKnownGood(s) THEN "P01"
         ELSE IF Danger(s) THEN "P02"
         ELSE "P03"
     ELSE IF s.state = "OPERATIONAL" THEN
         IF EstopTimedOut(s) THEN "O01"
         ELSE IF Danger(s) THEN "O02"
         ELSE "O03"
-    ELSE IF s.estop = "CLEAR" /\ ~Danger(s) THEN "M01"
+    ELSE IF /\ s.estop = "CLEAR" /\ ~Danger(s) /\ HealthKnownGood(s)
+            /\ s.control \in {"HELD", "REFUSED"} THEN "M01"
     ELSE "M02"
 
 StateStep(s, in) ==
@@ -128,36 +223,63 @@ StateStep(s, in) ==
 
 -----------------------------------------------------------------------------
 (*********************** Control rows K01-K10 (page 7) *********************)
+\* Confirm Control answers our pending Request Control (control REQUESTED);
+\* one we did not ask for is ignored.  Report Control naming us (with our
+\* authority) says we hold control whatever we asked.
 ControlRow(s, in) ==
+    LET ev == Event(in) IN
     IF s.control = "RELEASED" THEN "K01"
-    ELSE IF s.control \in {"REQUESTED", "REFUSED"} /\ in.control = "ACCEPTED" THEN "K02"
-    ELSE IF s.control = "REQUESTED" /\ in.control = "REFUSED" THEN "K03"
+    ELSE IF \/ s.control = "REQUESTED" /\ ev = "ACCEPTED"
+            \/ s.control \in {"REQUESTED", "REFUSED"} /\ ev = "US" THEN "K02"
+    ELSE IF s.control = "REQUESTED" /\ ev = "REFUSED" THEN "K03"
     ELSE IF s.control = "REQUESTED" /\ s.control_age >= ReportDataTimeoutCycles THEN "K04"
     ELSE IF s.control = "REFUSED" /\ s.control_age >= MessageIntervalCycles THEN "K05"
-    ELSE IF s.control = "HELD" /\ in.control = "OTHER" THEN "K06"
-    ELSE IF s.control = "HELD" /\ in.control = "ACCEPTED" THEN "K07"
+    ELSE IF s.control = "HELD" /\ ev = "OTHER" THEN "K06"
+    ELSE IF s.control = "HELD" /\ ev = "US" THEN "K07"
     ELSE IF s.control = "HELD" /\ s.control_age >= ReportDataTimeoutCycles THEN "K08"
     ELSE "K09"
 
 Request(s) == [s EXCEPT !.out_request = "REQUEST", !.control = "REQUESTED",
                         !.control_age = 0]
 
-\* K10 (OPERATIONAL): a report that we still hold control (our release was
-\* lost, or a stale Confirm Control) is answered by releasing again.
-ControlStep(s, in) ==
-    IF s.state \notin RaisingStates THEN
-        IF in.control = "ACCEPTED" /\ s.out_request = "NONE"
-        THEN [s EXCEPT !.out_request = "RELEASE"] ELSE s
-    ELSE
+ControlRows(s, in) ==
     LET row == ControlRow(s, in) IN
-    IF row \in {"K01", "K04", "K05", "K06", "K08"} THEN Request(s)
+    IF row = "K06" THEN [Request(s) EXCEPT !.alarm = TRUE]
+    ELSE IF row \in {"K01", "K04", "K05", "K08"} THEN Request(s)
     ELSE IF row = "K02" THEN [s EXCEPT !.control = "HELD", !.control_age = 0,
-                                       !.out_set_state = "EMERGENCY"]
-    ELSE IF row = "K03" THEN [s EXCEPT !.control = "REFUSED", !.control_age = 0]
+                                       !.out_set_state = "EMERGENCY",
+                                       !.set_age = 0, !.alarm = FALSE]
+    ELSE IF row = "K03" THEN [s EXCEPT !.control = "REFUSED", !.control_age = 0,
+                                       !.alarm = TRUE]
     ELSE IF row = "K07" THEN [s EXCEPT !.control_age = 0]
     ELSE [s EXCEPT !.control_age = IF @ < ControlAgeMax THEN @ + 1 ELSE @]
 
-AfterCycle(in) == ControlStep(StateStep(Intake(Svc, in), in), in)
+\* The re-send (page section 7): a Report Subsystem State other than
+\* EMERGENCY while we hold control in an emergency-raising state makes a
+\* re-send of Set Subsystem State(EMERGENCY) due; it is sent as soon as
+\* MessageIntervalCycles have passed since the last one (deferred, never
+\* dropped).  Outside HELD nothing is due and the interval is over.
+Resend(s, in) ==
+    IF s.control = "HELD" /\ s.out_set_state # "EMERGENCY"
+       /\ (s.resend \/ SubsysNotEmergency(in))
+    THEN IF s.set_age >= MessageIntervalCycles
+         THEN [s EXCEPT !.out_set_state = "EMERGENCY", !.set_age = 0, !.resend = FALSE]
+         ELSE [s EXCEPT !.resend = TRUE]
+    ELSE IF s.control = "HELD" THEN [s EXCEPT !.resend = FALSE]
+    ELSE [s EXCEPT !.resend = FALSE, !.set_age = MessageIntervalCycles]
+
+\* K10 (OPERATIONAL): a Report Control naming us (our release was lost) is
+\* answered by releasing again.
+ControlStep(s, in) ==
+    IF s.state \notin RaisingStates THEN
+        LET r == [s EXCEPT !.resend = FALSE, !.set_age = MessageIntervalCycles,
+                           !.alarm = FALSE]
+        IN IF Event(in) = "US" /\ s.out_request = "NONE"
+           THEN [r EXCEPT !.out_request = "RELEASE"] ELSE r
+    ELSE Resend(ControlRows(s, in), in)
+
+AfterCycleFrom(s, in) == ControlStep(StateStep(Intake(s, in), in), in)
+AfterCycle(in) == AfterCycleFrom(Svc, in)
 
 \* The rows one cycle fires (the C++ CycleResult's state_row and control_row, for
 \* the conformance row comparison): the state row on the intake's result, the
@@ -167,7 +289,7 @@ RowsFiredBy(in) ==
         s1 == StateStep(s0, in)
     IN {StateRow(s0, in)} \cup
        IF s1.state \notin RaisingStates
-       THEN IF in.control = "ACCEPTED" /\ s1.out_request = "NONE" THEN {"K10"} ELSE {}
+       THEN IF Event(in) = "US" /\ s1.out_request = "NONE" THEN {"K10"} ELSE {}
        ELSE {ControlRow(s1, in)}
 
 -----------------------------------------------------------------------------
@@ -176,23 +298,71 @@ SetSvc(s) ==
     /\ health' = s.health /\ health_age' = s.health_age
     /\ control' = s.control /\ control_age' = s.control_age
     /\ out_request' = s.out_request /\ out_set_state' = s.out_set_state
+    /\ alarm' = s.alarm /\ resend' = s.resend /\ set_age' = s.set_age
+
+(* History for the properties of page section 11, from the genuine fields *)
+(* of the inbox alone (the forged datagram has its own field), so that a  *)
+(* defect in the service's intake cannot hide from them.                  *)
+\* The inbox without its forged datagram.
+Honest(in) == [in EXCEPT !.forged = "NONE"]
 
 Cycle(in) ==
-    LET s == AfterCycle(in) IN
+    LET s == AfterCycle(in)
+        told == IF s.out_set_state = "EMERGENCY" THEN TRUE
+                ELSE IF s.out_set_state = "OPERATIONAL" THEN FALSE ELSE h_told
+        refused == IF s.out_set_state = "EMERGENCY" \/ s.out_request = "RELEASE" THEN FALSE
+                   ELSE IF in.control = "REFUSED" THEN TRUE ELSE h_refused
+        due == /\ s.control = "HELD" /\ s.state \in RaisingStates
+               /\ s.out_set_state # "EMERGENCY"
+               /\ (h_due \/ in.subsys = "OPERATIONAL")
+    IN
     /\ SetSvc(s)
     /\ inbox' = in
     /\ ever_faulted' = (ever_faulted \/ in.hw_fault)
+    /\ h_estop' = IF in.estop # "NONE" THEN in.estop ELSE h_estop
+    /\ h_silence' = IF in.estop # "NONE" THEN 0
+                    ELSE IF h_silence < EstopTimeoutCycles THEN h_silence + 1 ELSE h_silence
+    /\ h_health' = IF in.health # "NONE" THEN in.health ELSE h_health
+    /\ h_health_age' = IF in.health # "NONE" THEN 0
+                       ELSE IF h_health_age <= ReportDataTimeoutCycles
+                            THEN h_health_age + 1 ELSE h_health_age
+    /\ h_told' = told
+    /\ h_refused' = refused
+    \* A SET the subsystem has not been told about yet; while control is
+    \* refused (the contest lost) it cannot be told.
+    /\ h_owed' = IF s.out_set_state = "EMERGENCY" \/ refused THEN FALSE
+                 ELSE IF in.estop = "SET" /\ ~told THEN TRUE
+                 ELSE h_owed
+    /\ h_held_sent' = IF s.control # "HELD" THEN FALSE
+                      ELSE IF control # "HELD" THEN s.out_set_state = "EMERGENCY"
+                      ELSE h_held_sent
+    /\ h_due' = due
+    /\ h_due_age' = IF due /\ h_due
+                    THEN IF h_due_age < MessageIntervalCycles THEN h_due_age + 1 ELSE h_due_age
+                    ELSE 0
+    /\ shadow' = IF in.forged = "NONE" THEN s ELSE AfterCycle(Honest(in))
 
 \* Construction: PAIRING, nothing received yet, control not yet requested
 \* (the first cycle requests it: K01).
+SvcInit == [state |-> "PAIRING", estop |-> "NONE", estop_age |-> 0,
+            health |-> "NONE", health_age |-> 0, control |-> "RELEASED",
+            control_age |-> 0, out_request |-> "NONE", out_set_state |-> "NONE",
+            alarm |-> FALSE, resend |-> FALSE, set_age |-> MessageIntervalCycles]
+
 Init ==
     /\ state = "PAIRING"
     /\ estop = "NONE" /\ estop_age = 0
     /\ health = "NONE" /\ health_age = 0
     /\ control = "RELEASED" /\ control_age = 0
     /\ out_request = "NONE" /\ out_set_state = "NONE"
+    /\ alarm = FALSE /\ resend = FALSE /\ set_age = MessageIntervalCycles
     /\ inbox = NoMessages
     /\ ever_faulted = FALSE
+    /\ h_estop = "NONE" /\ h_silence = 0
+    /\ h_health = "NONE" /\ h_health_age = 0
+    /\ h_told = FALSE /\ h_refused = FALSE /\ h_owed = FALSE /\ h_held_sent = FALSE
+    /\ h_due = FALSE /\ h_due_age = 0
+    /\ shadow = SvcInit
 
 Next == \E in \in Inboxes : Cycle(in)
 
@@ -202,18 +372,26 @@ Spec == Init /\ [][Next]_vars
 (******************************** Invariants *******************************)
 \* SAF-01: every variable in its type; the state one of PAIRING, OPERATIONAL,
 \* EMERGENCY, FAULT.
-TypeOK ==
+\* Every variable but the inbox in its type (SafetyServicePeers.tla has its own inboxes).
+SvcTypeOK ==
     /\ state \in States
     /\ estop \in EstopViews
-    /\ estop_age \in 0..(EstopTimeoutCycles + 1)
+    /\ estop_age \in 0..EstopTimeoutCycles
     /\ health \in HealthViews
     /\ health_age \in 0..(ReportDataTimeoutCycles + 1)
     /\ control \in ControlStatus
     /\ control_age \in 0..ControlAgeMax
     /\ out_request \in OutRequests
     /\ out_set_state \in OutSetStates
-    /\ inbox \in Inboxes
+    /\ alarm \in BOOLEAN /\ resend \in BOOLEAN
+    /\ set_age \in 0..MessageIntervalCycles
     /\ ever_faulted \in BOOLEAN
+    /\ h_estop \in EstopViews /\ h_silence \in 0..EstopTimeoutCycles
+    /\ h_health \in HealthViews /\ h_health_age \in 0..(ReportDataTimeoutCycles + 1)
+    /\ h_told \in BOOLEAN /\ h_refused \in BOOLEAN /\ h_owed \in BOOLEAN /\ h_held_sent \in BOOLEAN
+    /\ h_due \in BOOLEAN /\ h_due_age \in 0..MessageIntervalCycles
+
+TypeOK == SvcTypeOK /\ inbox \in Inboxes
 
 \* The invariants spell their conditions out from the requirements rather
 \* than reuse the operators of the rows above, so that a mutant of a row
@@ -225,7 +403,7 @@ TypeOK ==
 \* control; it releases control only in OPERATIONAL.
 INV_SAF_EMERGENCY ==
     /\ (\/ estop = "SET"
-        \/ estop # "NONE" /\ estop_age > EstopTimeoutCycles
+        \/ estop # "NONE" /\ estop_age >= EstopTimeoutCycles
         \/ health \in {"ERROR", "FATAL"}
         \/ health_age > ReportDataTimeoutCycles
         \/ ever_faulted)
@@ -248,7 +426,7 @@ INV_SAF_RELEASE_ONLY_OPERATIONAL ==
 \* SAF-02 (B, C): never OPERATIONAL while the last Set Estop says emergency
 \* or the Set Estop messages have timed out.
 INV_SAF_NO_OPERATIONAL_IN_DANGER ==
-    state = "OPERATIONAL" => (estop = "CLEAR" /\ estop_age <= EstopTimeoutCycles)
+    state = "OPERATIONAL" => (estop = "CLEAR" /\ estop_age < EstopTimeoutCycles)
 
 \* SAF-01, SAF-02 (E): FAULT is absorbing, entered on a hardware fault.
 INV_SAF_FAULT_ABSORBING ==
@@ -260,6 +438,63 @@ INV_SAF_SET_STATE_WITH_CONTROL ==
     /\ out_set_state = "EMERGENCY" => control = "HELD"
     /\ out_set_state = "OPERATIONAL" => state = "OPERATIONAL"
 
+(* Properties over the messages in and out (page section 11, the unsafe   *)
+(* control actions UCA-1..UCA-6 of page section 13).                      *)
+
+\* UCA-1, UCA-2 (SAF-02 B, C, E): a genuine Set Estop(SET), no genuine Set
+\* Estop for EstopTimeoutCycles cycles after one, a genuine Error/Fatal
+\* health summary or none for more than ReportDataTimeoutCycles cycles, or
+\* a hardware fault: in that same cycle the service is in EMERGENCY or
+\* FAULT, wants control, and sends no release.
+INV_SAF_MSG_EMERGENCY ==
+    (\/ h_estop = "SET"
+     \/ h_estop # "NONE" /\ h_silence >= EstopTimeoutCycles
+     \/ h_health \in {"ERROR", "FATAL"}
+     \/ h_health_age > ReportDataTimeoutCycles
+     \/ ever_faulted)
+    => /\ state \in {"EMERGENCY", "FAULT"}
+       /\ control # "RELEASED"
+       /\ out_request # "RELEASE"
+
+\* UCA-4 (SAF-02 A, D): OPERATIONAL (and the release of control) only after
+\* a genuine clear Set Estop within ESTOPTIMEOUT and a genuine NORMAL health
+\* summary within REPORTDATATIMEOUT: no health report yet is unknown.
+INV_SAF_MSG_OPERATIONAL ==
+    state = "OPERATIONAL" =>
+        /\ h_estop = "CLEAR" /\ h_silence < EstopTimeoutCycles
+        /\ h_health = "NORMAL" /\ h_health_age <= ReportDataTimeoutCycles
+
+\* UCA-5: a datagram from another address, or a replayed Set Estop, changes
+\* nothing: the service equals the one that saw only the genuine datagrams.
+INV_SAF_ATTACKER_NO_EFFECT == shadow = Svc
+
+\* UCA-2: granted => sent.  In the cycle control becomes HELD the service
+\* sends Set Subsystem State(EMERGENCY) (with INV_SAF_SET_STATE_WITH_CONTROL:
+\* sent <=> granted or re-sent while held).
+INV_SAF_GRANTED_SENT == control = "HELD" => h_held_sent
+
+\* UCA-3: an E-stop pressed for a single cycle (SET, then CLEAR at once, or
+\* alternating every cycle) reaches the subsystem: OPERATIONAL is entered
+\* only after Set Subsystem State(EMERGENCY) was sent since the last SET,
+\* unless the access control refused us control (the contest, UCA-6).
+INV_SAF_NO_SILENT_EMERGENCY == state = "OPERATIONAL" => ~h_owed
+
+\* UCA-2, item 4 of issue 30: a Report Subsystem State other than EMERGENCY
+\* while the service holds control in an emergency-raising state (someone
+\* changed the subsystem behind its back, or our Set Subsystem State was
+\* lost) is answered by Set Subsystem State(EMERGENCY) within
+\* MessageIntervalCycles cycles: deferred, never dropped.
+INV_SAF_RESEND_BOUNDED == h_due => h_due_age < MessageIntervalCycles
+
+\* UCA-6, the authority contest (page section 7): refused while raising
+\* EMERGENCY, the service raises the alarm and asks again within
+\* MESSAGEINTERVAL; the alarm stands only while control is not held in an
+\* emergency-raising state.
+INV_SAF_CONTEST ==
+    /\ (control = "REFUSED" /\ state \in RaisingStates)
+         => (alarm /\ control_age <= MessageIntervalCycles)
+    /\ alarm => (state \in RaisingStates /\ control # "HELD")
+
 -----------------------------------------------------------------------------
 (* Reachability witnesses (non-vacuity): each Witness_X is the negation of *)
 (* a situation an invariant speaks about; tests/python/test_saf_model.py   *)
@@ -267,7 +502,7 @@ INV_SAF_SET_STATE_WITH_CONTROL ==
 Witness_EstopSetHeld ==        \* INV_SAF_EMERGENCY, C with control granted
     ~(estop = "SET" /\ state = "EMERGENCY" /\ control = "HELD")
 Witness_TimeoutEmergency ==    \* INV_SAF_EMERGENCY, B
-    ~(estop = "CLEAR" /\ estop_age > EstopTimeoutCycles /\ state = "EMERGENCY")
+    ~(estop = "CLEAR" /\ estop_age >= EstopTimeoutCycles /\ state = "EMERGENCY")
 Witness_HealthFatal ==         \* INV_SAF_EMERGENCY, C by health
     ~(health = "FATAL" /\ estop = "CLEAR" /\ state = "EMERGENCY")
 Witness_HealthStale ==         \* INV_SAF_EMERGENCY, REPORTDATATIMEOUT
@@ -277,11 +512,21 @@ Witness_Released ==            \* INV_SAF_RELEASE_ONLY_OPERATIONAL, D with contr
 Witness_Refused ==             \* INV_SAF_RELEASE_ONLY_OPERATIONAL, K03
     ~(state = "EMERGENCY" /\ control = "REFUSED")
 Witness_Preempted ==           \* K06: control lost to a higher authority
-    ~(state = "EMERGENCY" /\ control = "REQUESTED" /\ inbox.control = "OTHER")
+    ~(state = "EMERGENCY" /\ control = "REQUESTED" /\ alarm)
 Witness_Operational ==         \* INV_SAF_NO_OPERATIONAL_IN_DANGER
-    ~(state = "OPERATIONAL" /\ estop_age = EstopTimeoutCycles)
+    ~(state = "OPERATIONAL" /\ estop_age + 1 = EstopTimeoutCycles)
 Witness_Fault ==               \* INV_SAF_FAULT_ABSORBING
     ~(ever_faulted /\ control = "HELD")
 Witness_SetEmergency ==        \* INV_SAF_SET_STATE_WITH_CONTROL
     ~(out_set_state = "EMERGENCY" /\ state = "PAIRING")
+Witness_PairedNoHealth ==      \* INV_SAF_MSG_OPERATIONAL: a clear E-stop, no health yet
+    ~(state = "PAIRING" /\ estop = "CLEAR" /\ health = "NONE" /\ estop_age = 0)
+Witness_Owed ==                \* INV_SAF_NO_SILENT_EMERGENCY: CLEAR before the grant
+    ~(h_owed /\ estop = "CLEAR" /\ state = "EMERGENCY" /\ health = "NORMAL")
+Witness_ResendDeferred ==      \* INV_SAF_GRANTED_SENT: a re-send waits for the interval
+    ~(resend /\ state = "EMERGENCY" /\ control = "HELD")
+Witness_Resent ==              \* INV_SAF_SET_STATE_WITH_CONTROL: a re-send while held
+    ~(out_set_state = "EMERGENCY" /\ control = "HELD" /\ control_age > 0)
+Witness_ContestAlarm ==        \* INV_SAF_CONTEST
+    ~(alarm /\ control = "REFUSED" /\ estop = "SET")
 =============================================================================

@@ -27,6 +27,7 @@ CONSTANTS
     ArmingTimeoutCycles,  \* Config::arming_timeout_cycles (RSM-07)
     MaxStopCycles,        \* Config::max_stop_cycles (RSM-11)
     T1SpeedLimit,         \* Config::t1_speed_limit_mm_s (RSM-10)
+    T2SpeedLimit,         \* Config::t2_speed_limit_mm_s (K26: the largest jog speed accepted)
     QueueCapacity,        \* Config::command_queue_limit (RSM-14)
     JogCommands           \* the JOG_START commands the operator may submit
 
@@ -46,6 +47,10 @@ CONSTANTS
     CombineChanges        \* TRUE: a held change and free choices in one cycle
 
 D == DiscrepancyCycles
+
+\* ISO 10218-1 5.7.3 (RSM-10): reduced speed is at most 250 mm/s at the TCP,
+\* whatever Config::t1_speed_limit_mm_s says (the properties use this bound).
+T1MaxSpeed == 250
 
 EnablePositions == {"RELEASED", "MIDDLE", "PANIC"}
 Selectors       == {"AUTO", "T1", "T2", "INVALID"}
@@ -72,7 +77,13 @@ InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
 ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
 ASSUME MaxStopCycles       \in Nat \ {0}
-ASSUME T1SpeedLimit        \in Nat \ {0}
+ASSUME T1SpeedLimit        \in 1..T1MaxSpeed   \* ISO 10218-1 5.7.3: at most 250 mm/s
+\* Config::validate (page §9 "Configuration bounds"): every timer at most
+\* kMaxTimerCycles, the T1 limit at most ISO 10218-1's reduced speed.
+ASSUME DiscrepancyCycles   <= 2147483647
+ASSUME ArmingTimeoutCycles <= 2147483647
+ASSUME MaxStopCycles       <= 2147483647
+ASSUME T2SpeedLimit \in Nat /\ T1SpeedLimit < T2SpeedLimit /\ T2SpeedLimit <= 3000
 ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
 ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
                               speed_mm_s: Int]
@@ -91,7 +102,8 @@ ASSUME /\ <<TRUE, TRUE>> \in EstopInputs
        /\ <<TRUE, TRUE>> \in SafeguardInputs
        /\ <<"RELEASED", "RELEASED">> \in EnablingInputs
        /\ "AUTO" \in SelectorInputs /\ "ZERO" \in SpeedInputs
-       /\ FALSE \in ServoReadyInputs /\ FALSE \in DriveFaultInputs
+       /\ FALSE \in ServoReadyInputs /\ TRUE \in ServoReadyInputs
+       /\ FALSE \in DriveFaultInputs
        /\ TRUE \in SelfTestInputs /\ TRUE \in FieldbusInputs
 
 -----------------------------------------------------------------------------
@@ -108,7 +120,7 @@ StopCategories == {"NONE", "CAT0", "CAT1", "CAT2"}
 FaultCodes == {"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP",
                "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING", "SELECTOR_INVALID",
                "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT",
-               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION"}
+               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION", "SERVO_READY_LOST"}
 Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
             "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
             "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
@@ -140,7 +152,8 @@ VARIABLES
     state_cycles, t2_confirmed, resume_to, jog, queue, axes,
     stale_commands,       \* K36: queued commands submitted before the last E-stop release
     estop_tested_a,       \* K37: E-stop channel A seen open since the last accepted Reset
-    estop_tested_b        \* K37: likewise channel B
+    estop_tested_b,       \* K37: likewise channel B
+    enable_release_required \* K39: PANIC seen since the enabling device was last RELEASED
 
 (* Environment: `inputs` -- the inputs of the last cycle (before the     *)
 (* first cycle: InitialInputs); `event` -- the event that produced this  *)
@@ -189,8 +202,16 @@ VARIABLES inputs, event
 (*                    session output (at its start) was T1.               *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
 (*                    self_test_ok = FALSE.                               *)
-(*   obs_arming    -- RSM-07/RSM-15: consecutive cycles ending with the   *)
-(*                    status state ARMING (capped at ArmingTimeout + 2).  *)
+(*   obs_arming    -- RSM-07/RSM-15: consecutive cycles that read        *)
+(*                    servo_ready FALSE and end with drive enable on      *)
+(*                    (capped at ArmingTimeout + 2).                      *)
+(*   obs_was_enabled -- UCA-RSM-02: drive enable was on at the start of   *)
+(*                    the last cycle.                                      *)
+(*   obs_ready_lost -- UCA-RSM-03: the last cycle read servo_ready FALSE  *)
+(*                    with the brakes released at its start.              *)
+(*   obs_panic     -- UCA-RSM-05 (ISO 10218-1 5.8.3): a cycle read either *)
+(*                    enabling channel in PANIC and none since read both  *)
+(*                    RELEASED.                                           *)
 (*   obs_popped    -- RSM-13: the last event was a cycle that began with  *)
 (*                    a command queued (queue_length > 0).                *)
 (*   obs_submit_lost -- RSM-14: the last event was a Submit that neither  *)
@@ -200,18 +221,20 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
           obs_booted, obs_self_test_failed,
-          obs_arming, obs_popped, obs_submit_lost, obs_link_lost
+          obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
+          obs_was_enabled, obs_ready_lost, obs_panic
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
               safeguard_mismatch, enabling_mismatch, selector_invalid,
               state_cycles, t2_confirmed, resume_to, jog, queue, axes,
-              stale_commands, estop_tested_a, estop_tested_b>>
+              stale_commands, estop_tested_a, estop_tested_b, enable_release_required>>
 obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
               last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
               obs_booted, obs_self_test_failed,
-              obs_arming, obs_popped, obs_submit_lost, obs_link_lost>>
+              obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
+              obs_was_enabled, obs_ready_lost, obs_panic>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -230,7 +253,7 @@ View == <<state, selector, session_mode, stop_category, fault_code,
           command_result, estop_mismatch, safeguard_mismatch,
           enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
           resume_to, jog, queue, axes, stale_commands, estop_tested_a, estop_tested_b,
-          Held(inputs), obsVars>>
+          enable_release_required, Held(inputs), obsVars>>
 
 \* The manager state as one record, so that the sections can be composed.
 Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
@@ -241,7 +264,8 @@ Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
         state_cycles |-> state_cycles, t2_confirmed |-> t2_confirmed,
         resume_to |-> resume_to, jog |-> jog, queue |-> queue, axes |-> axes,
         stale_commands |-> stale_commands, estop_tested_a |-> estop_tested_a,
-        estop_tested_b |-> estop_tested_b]
+        estop_tested_b |-> estop_tested_b,
+        enable_release_required |-> enable_release_required]
 
 SetMgr(m) ==
     /\ state' = m.state                 /\ selector' = m.selector
@@ -256,6 +280,7 @@ SetMgr(m) ==
     /\ resume_to' = m.resume_to         /\ jog' = m.jog
     /\ stale_commands' = m.stale_commands
     /\ estop_tested_a' = m.estop_tested_a /\ estop_tested_b' = m.estop_tested_b
+    /\ enable_release_required' = m.enable_release_required
     /\ queue' = m.queue                 /\ axes' = m.axes
 
 -----------------------------------------------------------------------------
@@ -264,6 +289,7 @@ EstopTripped(in) == ~in.estop_a \/ ~in.estop_b                    \* 1oo2, RSM-0
 GateOpen(in)     == ~in.gate_a \/ ~in.gate_b                      \* 1oo2, RSM-04
 EnableMiddle(in) == in.enable_a = "MIDDLE" /\ in.enable_b = "MIDDLE"
 EnablePanic(in)  == in.enable_a = "PANIC" \/ in.enable_b = "PANIC"
+EnableReleased(in) == in.enable_a = "RELEASED" /\ in.enable_b = "RELEASED"
 
 Manual(m) == m.session_mode \in {"T1", "T2"}
 
@@ -301,7 +327,10 @@ Monitor(m, in) ==
               !.selector           = in.selector,
               \* K37: an E-stop channel seen open (tripped) since the last Reset
               !.estop_tested_a     = @ \/ ~in.estop_a,
-              !.estop_tested_b     = @ \/ ~in.estop_b]
+              !.estop_tested_b     = @ \/ ~in.estop_b,
+              \* K39 (ISO 10218-1 5.8.3): from PANIC only RELEASED re-arms the
+              \* enabling device; PANIC -> MIDDLE does not enable
+              !.enable_release_required = EnablePanic(in) \/ (@ /\ ~EnableReleased(in))]
 
 \* A counter above D is a discrepancy fault; codes in the order of §3.
 DiscrepancyCode(m) ==
@@ -335,11 +364,15 @@ C08_Guard(m, in) == m.state = "ESTOP_ACTIVE"                    \* RSM-05
 C09_Guard(m, in) == m.state \in Powered /\ in.drive_fault       \* RSM-07, RSM-03
 C10_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T1"  \* RSM-10
                     /\ in.speed = "OVER_T1"
-\* C25: standstill monitoring where power is on and no motion is commanded.
-\* (An axis still in PLCopen Stopping after JOG_STOP is still decelerating.)
+\* C25: standstill monitoring where power is on and no motion is commanded
+\* (no exemption: every stop, a JOG_STOP's too, ends in these states only
+\* after a cycle that measured standstill, C18/C19/C28).
 C25_Guard(m, in) == /\ m.state \in {"ARMING", "AUTO_IDLE", "MANUAL_IDLE", "HOLD"}
-                    /\ \A i \in Axes : m.axes[i] \in {"Disabled", "StandStill"}
                     /\ in.speed # "ZERO"                          \* RSM-11, RSM-03
+\* C27 (issue 29 item 3): a drive that stops reporting ready once the brakes
+\* are released can no longer hold the axis: Cat 0 and a lockout.
+ReadyStates == Powered \ {"ARMING"}
+C27_Guard(m, in) == m.state \in ReadyStates /\ ~in.servo_ready  \* RSM-07, RSM-03
 C11_Guard(m, in) == m.state \in Powered /\ Manual(m) /\ EnablePanic(in)  \* RSM-09
 C12_Guard(m, in) == StopCat1Free(m, in) /\ in.selector # m.session_mode      \* RSM-02
 C13_Guard(m, in) == StopCat1Free(m, in) /\ m.session_mode = "AUTO" /\ GateOpen(in) \* RSM-08
@@ -354,6 +387,10 @@ C18_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-
                     /\ m.stop_category = "CAT1"
 C19_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-11
                     /\ m.stop_category = "CAT2"
+\* C28 (issue 29 item 1): a JOG_STOP's Cat 2 stop (no resume target) ends in
+\* MANUAL_IDLE once the arm is measured at standstill.
+C28_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-09, RSM-11
+                    /\ m.stop_category = "CAT2" /\ m.resume_to = "NONE"
 C20_Guard(m, in) == m.state = "STOPPING" /\ m.state_cycles = MaxStopCycles
 C21_Guard(m, in) == m.state = "STOPPING"                                 \* RSM-11
 C22_Guard(m, in) == m.state = "IDLE" /\ in.selector # "T2"               \* RSM-06
@@ -372,14 +409,18 @@ C08(m, in) == m
 C09(m, in) == Lockout(m, "DRIVE_FAULT")
 C10(m, in) == Lockout(m, "T1_OVERSPEED")
 C25(m, in) == Lockout(m, "STANDSTILL_VIOLATION")
+C27(m, in) == Lockout(m, "SERVO_READY_LOST")
 C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
 \* A Cat 1 stop; escalating a stop in progress (STOPPING CAT2) keeps its
 \* timer and counts the cycle (as C21, at most up to the limit): the stop
 \* watchdog runs from the first trigger of the episode.
-StopCat1(m) == [WithCat(Enter(m, "STOPPING"), "CAT1")
-                  EXCEPT !.state_cycles = IF m.state = "STOPPING"
-                                          THEN Min(m.state_cycles + 1, MaxStopCycles)
-                                          ELSE 0]
+\* From ARMING (brakes engaged, drives not yet ready: nothing can move) the
+\* Cat 1 stop is complete at once: power is removed (IDLE), issue 29 item 2.
+StopCat1(m) == IF m.state = "ARMING" THEN WithCat(Enter(m, "IDLE"), "CAT1")
+               ELSE [WithCat(Enter(m, "STOPPING"), "CAT1")
+                       EXCEPT !.state_cycles = IF m.state = "STOPPING"
+                                               THEN Min(m.state_cycles + 1, MaxStopCycles)
+                                               ELSE 0]
 C12(m, in) == StopCat1(m)
 C13(m, in) == StopCat1(m)
 C14(m, in) == StopCat1(m)
@@ -389,13 +430,16 @@ C15(m, in) == Enter(m, IF m.session_mode = "AUTO" THEN "AUTO_IDLE" ELSE "MANUAL_
 C16(m, in) == Lockout(m, "ARMING_TIMEOUT")
 C17(m, in) == [m EXCEPT !.state_cycles = @ + 1]
 C18(m, in) == Enter(m, "IDLE")                         \* power removed, brakes on
+C28(m, in) == Enter(m, "MANUAL_IDLE")
 C19(m, in) == [Enter(m, "HOLD") EXCEPT !.resume_to = m.resume_to, !.jog = m.jog]
 C20(m, in) == Lockout(m, "STOP_TIMEOUT")
 C21(m, in) == [m EXCEPT !.state_cycles = @ + 1]
 C22(m, in) == [m EXCEPT !.t2_confirmed = FALSE]
 C23(m, in) == m                                        \* no change
 
-\* First matching row wins (§5). The chain is written once, here.
+\* First matching row wins (§5). The chain is written once, here.  The
+\* latching rows C09, C27, C10, C25 precede the E-stop's C06 (issue 29
+\* item 7): an E-stop in the same cycle must not make the fault forgotten.
 SafetyRow(m, in) ==
     IF      C01_Guard(m, in) THEN "C01"
     ELSE IF C02_Guard(m, in) THEN "C02"
@@ -403,12 +447,13 @@ SafetyRow(m, in) ==
     ELSE IF C24_Guard(m, in) THEN "C24"
     ELSE IF C04_Guard(m, in) THEN "C04"
     ELSE IF C05_Guard(m, in) THEN "C05"
+    ELSE IF C09_Guard(m, in) THEN "C09"
+    ELSE IF C27_Guard(m, in) THEN "C27"
+    ELSE IF C10_Guard(m, in) THEN "C10"
+    ELSE IF C25_Guard(m, in) THEN "C25"
     ELSE IF C06_Guard(m, in) THEN "C06"
     ELSE IF C07_Guard(m, in) THEN "C07"
     ELSE IF C08_Guard(m, in) THEN "C08"
-    ELSE IF C09_Guard(m, in) THEN "C09"
-    ELSE IF C10_Guard(m, in) THEN "C10"
-    ELSE IF C25_Guard(m, in) THEN "C25"
     ELSE IF C11_Guard(m, in) THEN "C11"
     ELSE IF C12_Guard(m, in) THEN "C12"
     ELSE IF C13_Guard(m, in) THEN "C13"
@@ -418,6 +463,7 @@ SafetyRow(m, in) ==
     ELSE IF C16_Guard(m, in) THEN "C16"
     ELSE IF C17_Guard(m, in) THEN "C17"
     ELSE IF C18_Guard(m, in) THEN "C18"
+    ELSE IF C28_Guard(m, in) THEN "C28"
     ELSE IF C19_Guard(m, in) THEN "C19"
     ELSE IF C20_Guard(m, in) THEN "C20"
     ELSE IF C21_Guard(m, in) THEN "C21"
@@ -439,11 +485,13 @@ Safety(m, in) ==
       [] r = "C21" -> C21(m, in) [] r = "C22" -> C22(m, in)
       [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
       [] r = "C25" -> C25(m, in) [] r = "C26" -> C26(m, in)
+      [] r = "C27" -> C27(m, in) [] r = "C28" -> C28(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
 (* `m` is the manager after §5; `c` the popped command; `in` the inputs.  *)
 ValidJog(c) == c.axis \in Axes /\ c.direction \in {-1, 1} /\ c.speed_mm_s > 0
+               /\ c.speed_mm_s <= T2SpeedLimit  \* issue 29 item 5: no jog request above T2's limit
 
 CommandRow(m, c, in) ==
     IF m.state = "ERROR_LOCKOUT" THEN "K01"                            \* RSM-04
@@ -465,6 +513,8 @@ CommandRow(m, c, in) ==
         ELSE IF m.selector = "INVALID"                            THEN "K08"
         ELSE IF m.selector = "AUTO" /\ GateOpen(in)               THEN "K09"
         ELSE IF m.selector \in {"T1", "T2"} /\ ~EnableMiddle(in)  THEN "K10"
+        \* K39: MIDDLE reached from PANIC without RELEASED (ISO 10218-1 5.8.3)
+        ELSE IF m.selector \in {"T1", "T2"} /\ m.enable_release_required THEN "K39"
         ELSE IF m.selector = "T2" /\ ~m.t2_confirmed              THEN "K11"
         ELSE "K12"
    [] c.kind = "SERVO_OFF" ->                                         \* RSM-13, RSM-11
@@ -502,7 +552,7 @@ RejectReason ==
      K04 |-> "DRIVE_FAULT",   K36 |-> "ESTOP_PRESSED",    K37 |-> "CHANNEL_TEST_PENDING",
      K06 |-> "WRONG_STATE",   K38 |-> "WRONG_STATE",      K07 |-> "DRIVE_FAULT",
      K08 |-> "SELECTOR_INVALID", K09 |-> "SAFEGUARD_OPEN",
-     K10 |-> "ENABLE_NOT_MIDDLE", K11 |-> "T2_NOT_CONFIRMED",
+     K10 |-> "ENABLE_NOT_MIDDLE", K39 |-> "ENABLE_NOT_MIDDLE", K11 |-> "T2_NOT_CONFIRMED",
      K13 |-> "WRONG_STATE",   K15 |-> "WRONG_MODE",       K16 |-> "WRONG_STATE",
      K17 |-> "SAFEGUARD_OPEN", K19 |-> "WRONG_STATE",     K21 |-> "WRONG_STATE",
      K22 |-> "SAFEGUARD_OPEN", K23 |-> "ENABLE_NOT_MIDDLE",
@@ -521,7 +571,7 @@ K05(m, c, in) == [Enter(m, "IDLE") EXCEPT !.estop_tested_a = FALSE,     \* INV-R
                                           !.estop_tested_b = FALSE]
 K12(m, c, in) == [Enter(m, "ARMING") EXCEPT !.session_mode = m.selector,
                                             !.stop_category = "NONE"]
-K14(m, c, in) == WithCat(Enter(m, "STOPPING"), "CAT1")
+K14(m, c, in) == WithCat(Enter(m, IF m.state = "ARMING" THEN "IDLE" ELSE "STOPPING"), "CAT1")
 K18(m, c, in) == Enter(m, "AUTO_RUNNING")
 K20(m, c, in) == [WithCat(Enter(m, "STOPPING"), "CAT2")
                     EXCEPT !.resume_to = m.state, !.jog = m.jog]
@@ -530,7 +580,9 @@ ClampT1(m, v) == IF m.session_mode = "T1" THEN Min(v, T1SpeedLimit) ELSE v  \* R
 K29(m, c, in) == [Enter(m, "MANUAL_JOGGING")
                     EXCEPT !.jog = [axis |-> c.axis, direction |-> c.direction,
                                     speed_mm_s |-> ClampT1(m, c.speed_mm_s)]]
-K32(m, c, in) == Enter(m, "MANUAL_IDLE")
+\* issue 29 item 1: a JOG_STOP is a Cat 2 stop (IEC 60204-1 9.2.2), ramped
+\* down and watched by the stop timer (C20); C28 ends it in MANUAL_IDLE.
+K32(m, c, in) == WithCat(Enter(m, "STOPPING"), "CAT2")
 K35(m, c, in) == [m EXCEPT !.t2_confirmed = TRUE]
 
 Accept(r, m, c, in) ==
@@ -587,7 +639,9 @@ AfterSubmit(c) ==
 \* read the outputs before and after a cycle.
 ContactorOut(m)      == m.state \in Powered
 DriveEnableOut(m)    == m.state \in Powered
-BrakeReleaseOut(m)   == m.state \in Powered
+\* issue 29 item 2: contactor and drive enable in ARMING, the brakes only
+\* once the drives report ready (C15): contactor -> servo on -> brake release.
+BrakeReleaseOut(m)   == m.state \in ReadyStates
 RampDownOut(m)       == m.state = "STOPPING"
 ResetLampOut(m)      == m.state = "ESTOP_RESET_NEEDED"
 CommandedSpeedOut(m) == IF m.state = "MANUAL_JOGGING" THEN m.jog.speed_mm_s ELSE 0
@@ -595,11 +649,14 @@ CommandedSpeedOut(m) == IF m.state = "MANUAL_JOGGING" THEN m.jog.speed_mm_s ELSE
 \* Any of the three power outputs on.
 PowerOut(m) == ContactorOut(m) \/ DriveEnableOut(m) \/ BrakeReleaseOut(m)
 
-\* No motion commanded: the status shows a state without motion (RSM-16
-\* status record) and every axis output is Disabled or StandStill.
+\* No motion commanded, over the outputs only: no jog speed, no ramp-down
+\* request, no program running (the status record's state, RSM-16: an AUTO
+\* program's path is commanded from the cycle Start is accepted) and no axis
+\* output in a PLCopen motion state.  An axis left in Stopping without a
+\* ramp-down request is not commanded motion (issue 29 item 1).
 NoMotionOut(m) ==
-    /\ m.state \in {"ARMING", "AUTO_IDLE", "MANUAL_IDLE", "HOLD"}
-    /\ \A i \in Axes : m.axes[i] \in {"Disabled", "StandStill"}
+    /\ CommandedSpeedOut(m) = 0 /\ ~RampDownOut(m) /\ m.state \notin Motion
+    /\ \A i \in Axes : m.axes[i] \notin PLCopen!MotionStates
 
 \* The kind of the command the next cycle pops, "NONE" if the queue is empty.
 Popped == IF queue = << >> THEN "NONE" ELSE Head(queue).kind
@@ -646,7 +703,11 @@ Cycle(in) ==
        /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
        /\ obs_booted' = TRUE
        /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
-       /\ obs_arming' = IF m.state = "ARMING" THEN Min(obs_arming + 1, ArmingTimeoutCycles + 2) ELSE 0
+       /\ obs_arming' = IF DriveEnableOut(m) /\ ~in.servo_ready
+                        THEN Min(obs_arming + 1, ArmingTimeoutCycles + 2) ELSE 0
+       /\ obs_was_enabled' = DriveEnableOut(Mgr)
+       /\ obs_ready_lost' = (~in.servo_ready /\ BrakeReleaseOut(Mgr))
+       /\ obs_panic' = (EnablePanic(in) \/ (obs_panic /\ ~EnableReleased(in)))
        /\ obs_popped' = (queue # << >>)
        /\ obs_submit_lost' = FALSE
        /\ obs_link_lost' = (~in.operator_link_ok /\ CommandedSpeedOut(Mgr) > 0)
@@ -666,7 +727,8 @@ Submit(c) ==
     /\ UNCHANGED <<inputs, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
-                   obs_booted, obs_self_test_failed, obs_arming, obs_link_lost>>
+                   obs_booted, obs_self_test_failed, obs_arming, obs_link_lost,
+                   obs_was_enabled, obs_ready_lost, obs_panic>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -679,12 +741,11 @@ Submit(c) ==
 (*  - Free signals, speed, servo_ready, drive_fault and self_test_ok:      *)
 (*    chosen afresh each cycle from their allowed values where the coming  *)
 (*    cycle reads them (page: speed only while powered -- C10, C18, C19,   *)
-(*    the §8 Stopping axes and the T1 history; servo_ready only in ARMING  *)
-(*    -- C15; drive_fault only while powered -- C09 -- or when a RESET or  *)
+(*    the §8 Stopping axes and the T1 history; servo_ready only powered    *)
+(*    -- C15, C27; drive_fault only while powered -- C09 -- or when a RESET or  *)
 (*    SERVO_ON is at the head of the queue -- K04, K07; self_test_ok only *)
 (*    in BOOT -- C02), and a fixed default (ZERO, FALSE, FALSE, TRUE)      *)
-(*    elsewhere, where the value cannot change the successor; likewise    *)
-(*    OVER_T1 is offered only in a T1 session.  Free                       *)
+(*    elsewhere, where the value cannot change the successor.  Free        *)
 (*    signals are therefore not part of the View.                          *)
 (* With LockoutHoldsInputs (the CI cfg) the held signals stop changing     *)
 (* once in ERROR_LOCKOUT: there, by C01 and K01, only the §3 counters and *)
@@ -700,21 +761,22 @@ HeldVariants(cur) ==
 DriveFaultRead == \/ state \in Powered
                   \/ queue # << >> /\ Head(queue).kind \in {"RESET", "SERVO_ON"}
 
-\* OVER_T1 is read only in a T1 session (C10, and the T1 history); in other
-\* powered states it acts as MOVING (§8 reads only speed = ZERO).
-SpeedChoices ==
-    IF state \notin Powered THEN {"ZERO"}
-    ELSE IF session_mode = "T1" THEN SpeedInputs
-    ELSE SpeedInputs \ (IF "MOVING" \in SpeedInputs THEN {"OVER_T1"} ELSE {})
+\* Every speed class in every powered state, whatever the session (issue 29:
+\* an AUTO or T2 session may measure OVER_T1). Unpowered, nothing reads the
+\* speed (§8 desires Disabled whatever it is; C25 and C10 are powered rows):
+\* the design page (hazard analysis, environment) argues the abstraction.
+SpeedChoices == IF state \notin Powered THEN {"ZERO"} ELSE SpeedInputs
 
 FreeChoices ==
     [speed:        SpeedChoices,
-     servo_ready:  IF state = "ARMING" THEN ServoReadyInputs ELSE {FALSE},
+     servo_ready:  IF state \in Powered THEN ServoReadyInputs ELSE {FALSE},
      drive_fault:  IF DriveFaultRead THEN DriveFaultInputs ELSE {FALSE},
      self_test_ok: IF state = "BOOT" THEN SelfTestInputs ELSE {TRUE}]
 
-FreeDefault == [speed |-> "ZERO", servo_ready |-> FALSE, drive_fault |-> FALSE,
-                self_test_ok |-> TRUE]
+\* servo_ready holds its level once the drives are ready (C15) and a
+\* held-change cycle keeps it; losing it is a free choice of its own.
+FreeDefault == [speed |-> "ZERO", servo_ready |-> state \in ReadyStates,
+                drive_fault |-> FALSE, self_test_ok |-> TRUE]
 
 WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
                             !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok,
@@ -734,15 +796,25 @@ LinkLoss(cur) ==
     IF state # "MANUAL_JOGGING" THEN {}
     ELSE {[WithFree(cur, FreeDefault) EXCEPT !.operator_link_ok = FALSE]}
 
+\* An E-stop change together with any free choice (issue 29 item 7: an
+\* E-stop pressed in the cycle that reads a drive fault, the drives not
+\* ready, an overspeed or unexpected motion must not lose the lockout).
+\* Offered also without CombineChanges: C06 competes with the latching
+\* rows C09, C27, C10, C25 in the same cycle (design page, environment).
+EstopWithFree(cur) ==
+    IF state = "ERROR_LOCKOUT" /\ LockoutHoldsInputs THEN {}
+    ELSE {WithFree([cur EXCEPT !.estop_a = p[1], !.estop_b = p[2]], f) :
+              p \in EstopInputs, f \in FreeChoices}
+
 \* With CombineChanges a cycle may change a held group and choose the free
 \* signals at once; without it (the CI cfg) a cycle either changes one held
-\* group (free signals at their defaults) or holds them and chooses the
-\* free signals.
+\* group (free signals at their defaults; the E-stop with any of them) or
+\* holds them and chooses the free signals.
 NextInputs(cur) ==
     IF CombineChanges
     THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
          \cup FieldbusLoss(cur) \cup LinkLoss(cur)
-    ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)}
+    ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)} \cup EstopWithFree(cur)
          \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur) \cup LinkLoss(cur)
 
 \* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
@@ -770,6 +842,8 @@ Init ==
     /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
     /\ obs_self_test_failed = FALSE /\ obs_link_lost = FALSE
     /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
+    /\ obs_was_enabled = FALSE    /\ obs_ready_lost = FALSE /\ obs_panic = FALSE
+    /\ enable_release_required = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
 \* last_reject_reason changes), so when it is full one representative
@@ -829,6 +903,8 @@ TypeOK ==
     /\ obs_unexpected_motion \in BOOLEAN /\ t1_overspeed \in BOOLEAN
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
     /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
+    /\ obs_was_enabled \in BOOLEAN /\ obs_ready_lost \in BOOLEAN /\ obs_panic \in BOOLEAN
+    /\ enable_release_required \in BOOLEAN
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     /\ obs_link_lost \in BOOLEAN
     \* per-state data is meaningful only where §4 says so
@@ -839,7 +915,8 @@ TypeOK ==
     \* RSM-01: STOPPING is of category 1 or 2; HOLD is a category 2 pause
     /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
     /\ state = "HOLD" => stop_category = "CAT2"
-    /\ (resume_to # "NONE") <=> (state = "HOLD" \/ (state = "STOPPING" /\ stop_category = "CAT2"))
+    /\ (resume_to # "NONE") => (state = "HOLD" \/ (state = "STOPPING" /\ stop_category = "CAT2"))
+    /\ state = "HOLD" => resume_to # "NONE"
     /\ (jog # NoJog) <=> (state = "MANUAL_JOGGING" \/ resume_to = "MANUAL_JOGGING")
 
 (***************************************************************************)
@@ -936,8 +1013,7 @@ RSM11_PAUSE_CAT2 ==
 \* RSM-11/RSM-03 (standstill monitoring, IEC 60204-1 Cat 2): with power on
 \* and no motion commanded, measured motion removes power (Cat 0) and shows
 \* a fault (or the E-stop removed power in the same cycle).
-RSM11_STANDSTILL ==
-    obs_unexpected_motion => Unpowered /\ (Locked \/ ~inputs.estop_a \/ ~inputs.estop_b)
+RSM11_STANDSTILL == obs_unexpected_motion => Unpowered /\ Locked
 
 \* INV-NOJOG-AUTO (RSM-08): no jog speed is commanded in AUTO (selector or
 \* session), and a jog command in AUTO is rejected with its reason
@@ -965,8 +1041,8 @@ RSM08_START ==
 \* session ends with the power outputs off.  (The TCP speed with the tool
 \* offset is computed in the C++ kinematics; the model sees its level.)
 INV_T1SPEED ==
-    /\ session_mode = "T1" => commanded_speed_mm_s <= T1SpeedLimit
-    /\ t1_overspeed => Unpowered
+    /\ session_mode = "T1" => commanded_speed_mm_s <= T1MaxSpeed
+    /\ t1_overspeed => Unpowered /\ Locked
 
 \* RSM-06: Servo-on is accepted only unpowered, after any E-stop demand has
 \* been reset, with no drive fault, a valid mode that becomes the session's,
@@ -983,13 +1059,31 @@ RSM06_SERVO_ON ==
 
 \* RSM-07/RSM-03: a drive fault read while powered removes power (Cat 0)
 \* and shows a fault (or the E-stop removed power in the same cycle).
-RSM07_DRIVE_FAULT ==
-    obs_drive_fault => Unpowered /\ (Locked \/ ~inputs.estop_a \/ ~inputs.estop_b)
+RSM07_DRIVE_FAULT == obs_drive_fault => Unpowered /\ Locked
 
 \* RSM-07 (arming timeout) and RSM-15 (timing in cycles, whatever the
-\* commands processed): the ARMING status is shown for at most
-\* ArmingTimeoutCycles + 1 consecutive cycles.
+\* commands processed), UCA-RSM-04: drive enable stays on without the drives
+\* reporting ready for at most ArmingTimeoutCycles + 1 consecutive cycles.
 RSM07_ARMING_TIMEOUT == obs_arming <= ArmingTimeoutCycles + 1
+
+\* UCA-RSM-02 (RSM-07, issue 29 item 2): the brakes are released only with
+\* the contactor closed and the drives enabled since the previous cycle at
+\* least, and only in a cycle whose drives report ready (contactor -> servo
+\* on -> brake release; a gravity-loaded axis never hangs on a drive that
+\* is not ready).
+UCA_BRAKE_ORDER ==
+    brake_release => contactor_closed /\ drive_enable /\ obs_was_enabled /\ inputs.servo_ready
+
+\* UCA-RSM-03 (RSM-07, RSM-03, issue 29 item 3): a cycle that reads the
+\* drives not ready with the brakes released ends with every power output
+\* off and a fault shown (bound: the same cycle).
+UCA_READY_LOST == obs_ready_lost => Unpowered /\ Locked
+
+\* UCA-RSM-05 (RSM-09, ISO 10218-1 5.8.3, issue 29 item 6): once the
+\* enabling device was read in PANIC (either channel), no drive is enabled
+\* in a manual session until both channels were read RELEASED.
+UCA_PANIC_REARM ==
+    drive_enable /\ session_mode \in {"T1", "T2"} => ~obs_panic
 
 \* RSM-13: a cycle that began with a command queued answers it: ACCEPTED, or
 \* its reason code, also shown as the last reject reason.
@@ -1060,8 +1154,14 @@ Witness_RSM08_START          == ~(last_accepted = "START")
 Witness_INV_T1SPEED          == ~t1_overspeed
 Witness_RSM06_SERVO_ON       == ~(last_accepted = "SERVO_ON" /\ inputs.selector = "T2")
 Witness_RSM07_DRIVE_FAULT    == ~obs_drive_fault
+\* (issue 29 item 7: an E-stop demand in the cycle that reads the drive fault)
+Witness_RSM07_DRIVE_FAULT_ESTOP == ~(obs_drive_fault /\ (~inputs.estop_a \/ ~inputs.estop_b))
 Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
 Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
+Witness_UCA_BRAKE_ORDER      == ~brake_release
+Witness_UCA_READY_LOST       == ~obs_ready_lost
+\* (the panic observer set and the device back in MIDDLE, unpowered)
+Witness_UCA_PANIC_REARM      == ~(obs_panic /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE")
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
 \* (a full queue: the next Submit takes RSM-14's QUEUE_FULL branch; that Submit
 \* itself changes only last_reject_reason, outside the View, so it adds no state)
@@ -1088,7 +1188,7 @@ CI_ChannelPairs  == {<<TRUE, TRUE>>, <<TRUE, FALSE>>}
 \* E-stop: also both channels open (a normal press), so that the test of
 \* both channels (K37) can pass and a Reset be accepted.
 CI_EstopPairs    == {<<TRUE, TRUE>>, <<TRUE, FALSE>>, <<FALSE, FALSE>>}
-All_ChannelPairs == BOOLEAN \X BOOLEAN
+All_ChannelPairs == {<<a, b>> : a \in BOOLEAN, b \in BOOLEAN}
 \* Full cfg (long timers): only consistent readings where a disagreement
 \* would let a 50-cycle counter run along a 1000-cycle timer.
 Consistent_ChannelPairs == {<<TRUE, TRUE>>, <<FALSE, FALSE>>}
@@ -1098,7 +1198,7 @@ Consistent_EnablingPairs == {<<"RELEASED", "RELEASED">>, <<"MIDDLE", "MIDDLE">>}
 \* middle, and a disagreement).
 CI_EnablingPairs  == {<<"RELEASED", "RELEASED">>, <<"MIDDLE", "MIDDLE">>,
                       <<"MIDDLE", "PANIC">>}
-All_EnablingPairs == EnablePositions \X EnablePositions
+All_EnablingPairs == {<<a, b>> : a \in EnablePositions, b \in EnablePositions}
 
 -----------------------------------------------------------------------------
 (***************** Row reachability (for the coverage check) ***************)

@@ -13,6 +13,10 @@ EXTENDS RuntimeSupervisor
 \* application, docs/prove.md).
 Stop_Started == (stop_step >= 1) <=> sup_state \in {"SHUTTING_DOWN", "STOPPED"}
 
+\* The observer init_age counts the ticks in INIT with the supervisor's own
+\* counter (TypeOK bounds it only through the timeout).
+Init_Count == sup_state = "INIT" => init_age = init_ticks
+
 Stop_Progress ==
     /\ (stop_step >= 1) <=> sup_state \in {"SHUTTING_DOWN", "STOPPED"}
     /\ stop_step >= 2 => outputs_safe

@@ -26,6 +26,12 @@ Strengthen_MODE ==
     /\ resume_to = "AUTO_RUNNING" => session_mode = "AUTO"
     /\ resume_to = "MANUAL_JOGGING" => session_mode \in {"T1", "T2"}
     /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
+    \* a JOG_STOP's Cat 2 stop (no resume target, K32) is a manual session's (C28)
+    /\ state = "STOPPING" /\ stop_category = "CAT2" /\ resume_to = "NONE" =>
+           session_mode \in {"T1", "T2"}
+    \* K39: a PANIC since the last RELEASED ends every manual powered state
+    \* (C11), and Servo-on in T1/T2 is refused while it is remembered
+    /\ state \in Powered /\ session_mode \in {"T1", "T2"} => ~enable_release_required
 
 \* The E-stop observer against the manager: no pending demand in IDLE, BOOT
 \* and the powered states; a demand means ESTOP_ACTIVE (or lockout), a
@@ -66,8 +72,8 @@ Strengthen_OBSERVERS ==
                        \/ /\ obs_ramp = MaxStopCycles + 2 /\ state_cycles = MaxStopCycles
                           /\ stop_category = "CAT1" /\ inputs.speed = "ZERO"
     /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
-    /\ (obs_arming > 0) <=> (state = "ARMING")
-    /\ obs_arming > 0 => obs_arming = state_cycles + 1
+    /\ obs_arming > 0 => state = "ARMING" /\ obs_arming <= state_cycles + 1
+    /\ obs_panic <=> enable_release_required
     /\ t2_confirmed => obs_t2
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
@@ -86,4 +92,5 @@ Strengthen_ALL ==
     /\ RSM09_JOG_START /\ RSM08_START /\ INV_T1SPEED /\ RSM06_SERVO_ON
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
     /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
+    /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM
 =============================================================================

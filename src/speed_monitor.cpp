@@ -6,7 +6,7 @@
 namespace safestate {
 
 SpeedMonitor::SpeedMonitor(const Config& config) noexcept
-    : kinematics_(config.dh, config.tool_offset_m),
+    : kinematics_(config.dh, tool_offset_or_flange(config)),
       zero_velocity_rad_s_(config.zero_velocity_rad_s),
       t1_speed_limit_mm_s_(static_cast<double>(config.t1_speed_limit_mm_s)) {}
 

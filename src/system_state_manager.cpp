@@ -33,7 +33,8 @@ SystemStateManager::SystemStateManager(const Config& config) noexcept
       estop_(config.discrepancy_cycles),
       safeguard_(config.discrepancy_cycles),
       enabling_(config.discrepancy_cycles),
-      selector_(config.discrepancy_cycles) {}
+      selector_(config.discrepancy_cycles),
+      fieldbus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit) {}
 
 SubmitResult SystemStateManager::submit(const Command& command) noexcept {
   // size() only shrinks under a concurrent consumer, so the limit check is conservative.
@@ -59,13 +60,16 @@ void SystemStateManager::derive_inputs(const ScanInputs& in) noexcept {
   d.selector = selector_.reading();
   d.speed = speed_.classify(in.q, in.qd);
   d.self_test_ok = in.self_test_ok;
-  d.servo_ready = in.servo_ready;
-  d.drive_fault = in.drive_fault;
-  d.fieldbus_ok = in.fieldbus_ok;
+  // §2: the drives' CiA 402 status words and the bus watchdog, decoded here.
+  drives_ = summarize_drives(in.bus.status_words);
+  d.servo_ready = drives_.servo_ready;
+  d.drive_fault = drives_.drive_fault;
+  d.fieldbus_ok = fieldbus_.update(in.bus.cycle_counter, in.bus.working_counter);
   d.operator_link_ok = in.operator_link_ok;
-  d.axes_at_rest = std::all_of(axes_.begin(), axes_.end(), [](const PlcopenAxis& a) {
-    return a.state() == AxisState::Disabled || a.state() == AxisState::StandStill;
-  });
+  // K39: PANIC on either channel latches; only RELEASED on both channels clears it.
+  enable_release_required_ = enabling_.either(EnablePosition::Panic) ||
+                             (enable_release_required_ && !enabling_.both(EnablePosition::Released));
+  d.enable_release_required = enable_release_required_;
   // K37: an E-stop channel seen open, every cycle, in every state.
   reset_.estop_tested_a = reset_.estop_tested_a || !in.estop_closed.a;
   reset_.estop_tested_b = reset_.estop_tested_b || !in.estop_closed.b;
@@ -168,7 +172,9 @@ ScanOutputs SystemStateManager::outputs() const noexcept {
   ScanOutputs out;
   out.contactor_closed = is_powered(s);
   out.drive_enable = is_powered(s);
-  out.brake_release = is_powered(s);
+  // Contactor and drive enable from ARMING on, the brakes only once the drives reported
+  // ready (C15): contactor -> servo on -> brake release (issue 29 item 2).
+  out.brake_release = is_powered(s) && s != StateId::Arming;
   out.ramp_down_request = s == StateId::Stopping;
   out.reset_lamp = s == StateId::EstopResetNeeded;
   out.commanded_speed_mm_s = s == StateId::ManualJogging ? jog(state_).speed_mm_s : 0;
@@ -202,6 +208,7 @@ StatusRecord SystemStateManager::status() const noexcept {
   r.stale_commands = reset_.stale_commands;
   r.estop_tested_a = reset_.estop_tested_a;
   r.estop_tested_b = reset_.estop_tested_b;
+  r.enable_release_required = enable_release_required_;
   return r;
 }
 

@@ -108,10 +108,11 @@ bool in_auto(const StepContext& c) noexcept {
   return c.in.selector == SelectorReading::Auto || session_mode(c.state) == OperatingMode::Auto;
 }
 
-// K26: axis ∉ 1..6 ∨ dir ∉ {-1, 1} ∨ speed ≤ 0.
+// K26: axis ∉ 1..6 ∨ dir ∉ {-1, 1} ∨ speed ≤ 0 ∨ speed > t2_speed_limit_mm_s.
 bool jog_arguments_invalid(const StepContext& c) noexcept {
   const Command& k = c.command;
-  return k.axis < 1 || k.axis > 6 || (k.direction != -1 && k.direction != 1) || k.speed_mm_s <= 0;
+  return k.axis < 1 || k.axis > 6 || (k.direction != -1 && k.direction != 1) || k.speed_mm_s <= 0 ||
+         k.speed_mm_s > c.config.t2_speed_limit_mm_s;
 }
 
 bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }
@@ -122,8 +123,23 @@ bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
 // C26: the controlling operator client's heartbeat did not arrive within its period.
 bool operator_link_lost(const StepContext& c) noexcept { return !c.in.operator_link_ok; }
 
-// C25: power on, no motion commanded (every axis Disabled/StandStill), measured motion.
-bool moving_at_standstill(const StepContext& c) noexcept { return c.in.axes_at_rest && c.in.speed != SpeedLevel::Zero; }
+// C25: power on, no motion commanded (the row's source states), measured motion. No axis is
+// exempt: every stop reaches these states only in a cycle that measured standstill.
+bool moving_at_standstill(const StepContext& c) noexcept { return c.in.speed != SpeedLevel::Zero; }
+
+// C27: the drives no longer report ready (the row's source: the brakes are released).
+bool servo_not_ready(const StepContext& c) noexcept { return !c.in.servo_ready; }
+
+// C28: a JOG_STOP's Cat 2 stop (no resume target) has reached standstill.
+bool stopped_jog_stop(const StepContext& c) noexcept {
+  return c.in.speed == SpeedLevel::Zero && stopping_category(c.state) == StopCategory::Cat2 &&
+         resume_to(c.state) == ResumeTarget::None;
+}
+
+// K39: the enabling device reached MIDDLE from PANIC without RELEASED (ISO 10218-1 5.8.3).
+bool selector_manual_and_enable_release_required(const StepContext& c) noexcept {
+  return (c.in.selector == SelectorReading::T1 || c.in.selector == SelectorReading::T2) && c.in.enable_release_required;
+}
 
 // K36: the Reset was queued before the E-stop release (C07 counted it as stale).
 bool reset_submitted_before_release(const StepContext& c) noexcept { return c.reset.stale_commands > 0; }
@@ -152,6 +168,7 @@ void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLoc
 void lockout_standstill_violation(StepContext& c) noexcept {
   c.state = states::ErrorLockout{FaultCode::StandstillViolation};
 }
+void lockout_servo_ready_lost(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::ServoReadyLost}; }
 
 void enter_estop_active(StepContext& c) noexcept { c.state = states::EstopActive{}; }
 // C07: every command queued now was submitted before the release (K36).
@@ -172,8 +189,13 @@ void reset_to_idle(StepContext& c) noexcept {
 
 // Cat 1: ramp down with power kept; no resume target, no jog (§4). Escalating a stop in
 // progress (STOPPING CAT2) keeps its timer and counts the cycle (as C21): the watchdog
-// runs from the first trigger (C12-C14 never fire with the timer expired).
+// runs from the first trigger (C12-C14 never fire with the timer expired). From ARMING
+// (brakes engaged, drives not ready, nothing moves) the stop is complete at once: IDLE.
 void enter_stopping_cat1(StepContext& c) noexcept {
+  if (state_id(c.state) == StateId::Arming) {
+    enter_idle(c);
+    return;
+  }
   const std::uint32_t kept =
       state_id(c.state) == StateId::Stopping ? std::min(state_cycles(c.state) + 1U, c.config.max_stop_cycles) : 0U;
   c.state = states::Stopping{session_mode(c.state), StopCategory::Cat1, kept, ResumeTarget::None, JogSetpoint{}};
@@ -237,7 +259,14 @@ void start_jog(StepContext& c) noexcept {
   c.state = states::ManualJogging{mode, JogSetpoint{c.command.axis, c.command.direction, speed}};
 }
 
-void stop_jog(StepContext& c) noexcept { c.state = states::ManualIdle{session_mode(c.state)}; }
+// K32: a JOG_STOP is a Cat 2 stop: ramp-down requested, stop timer running (C20), no resume
+// target, so that C28 ends it in MANUAL_IDLE at standstill (issue 29 item 1).
+void enter_stopping_cat2_jog_stop(StepContext& c) noexcept {
+  c.state = states::Stopping{session_mode(c.state), StopCategory::Cat2, 0, ResumeTarget::None, JogSetpoint{}};
+}
+
+// C28: the jog stop reached standstill.
+void enter_manual_idle(StepContext& c) noexcept { c.state = states::ManualIdle{session_mode(c.state)}; }
 
 void confirm_t2(StepContext& c) noexcept {
   if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = true;

@@ -18,6 +18,7 @@
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
 #include "safestate/enum_strings.hpp"
+#include "safestate/sim/bus_master.hpp"
 #include "safestate/speed_monitor.hpp"
 #include "safestate/system_state_manager.hpp"
 #include "safestate/transition_table.hpp"
@@ -52,10 +53,30 @@ JointVector joint_vector(const py::handle& value, const char* what) {
   return v;
 }
 
-/// A dict of inputs -> ScanInputs. Missing keys keep the zero (safe, tripped) value;
-/// unknown keys are an error, so that a misspelt key cannot silently read as "tripped".
-ScanInputs scan_inputs(const py::dict& d) {
+/// One cycle's inputs as the binding received them. The drives and the bus come either raw
+/// (drive_status_words, fieldbus_cycle_counter, working_counter: the process image as is) or
+/// as the model's abstract levels (servo_ready, drive_fault, fieldbus_ok), which a simulated
+/// EtherCAT master (sim::bus_image) turns into the image the manager's own decoder and
+/// watchdog then read, numbering the frame from the manager it is applied to.
+struct CycleCall {
   ScanInputs in;
+  bool raw_bus{false};
+  sim::BusLevels levels{false, false, false};  // a missing key: bus lost, drives not ready
+};
+
+ScanOutputs run_cycle(SystemStateManager& m, const CycleCall& c) {
+  if (c.raw_bus) return m.cycle(c.in);
+  ScanInputs in = c.in;
+  in.bus = sim::bus_image(m.fieldbus_watchdog(), c.levels);
+  return m.cycle(in);
+}
+
+/// A dict of inputs -> CycleCall. Missing keys keep the zero (safe, tripped) value;
+/// unknown keys are an error, so that a misspelt key cannot silently read as "tripped".
+CycleCall scan_inputs(const py::dict& d) {
+  CycleCall call;
+  ScanInputs& in = call.in;
+  bool abstract_bus = false;
   for (const auto& item : d) {
     const auto key = item.first.cast<std::string>();
     const py::handle v = item.second;
@@ -69,15 +90,27 @@ ScanInputs scan_inputs(const py::dict& d) {
     else if (key == "selector_t1") in.selector.t1 = v.cast<bool>();
     else if (key == "selector_t2") in.selector.t2 = v.cast<bool>();
     else if (key == "self_test_ok") in.self_test_ok = v.cast<bool>();
-    else if (key == "servo_ready") in.servo_ready = v.cast<bool>();
-    else if (key == "drive_fault") in.drive_fault = v.cast<bool>();
-    else if (key == "fieldbus_ok") in.fieldbus_ok = v.cast<bool>();
+    else if (key == "servo_ready") abstract_bus = true, call.levels.servo_ready = v.cast<bool>();
+    else if (key == "drive_fault") abstract_bus = true, call.levels.drive_fault = v.cast<bool>();
+    else if (key == "fieldbus_ok") abstract_bus = true, call.levels.fieldbus_ok = v.cast<bool>();
+    else if (key == "drive_status_words") {
+      const auto seq = v.cast<py::sequence>();
+      if (py::len(seq) != kAxisCount) throw py::value_error("drive_status_words must be 6 ints");
+      for (std::size_t i = 0; i < kAxisCount; ++i) in.bus.status_words[i] = seq[i].cast<std::uint16_t>();
+      call.raw_bus = true;
+    } else if (key == "fieldbus_cycle_counter") call.raw_bus = true, in.bus.cycle_counter = v.cast<std::uint16_t>();
+    else if (key == "working_counter") call.raw_bus = true, in.bus.working_counter = v.cast<std::uint16_t>();
     else if (key == "operator_link_ok") in.operator_link_ok = v.cast<bool>();
     else if (key == "q") in.q = joint_vector(v, "q");
     else if (key == "qd") in.qd = joint_vector(v, "qd");
     else throw py::key_error("unknown input '" + key + "'");
   }
-  return in;
+  if (abstract_bus && call.raw_bus) {
+    throw py::value_error(
+        "give the drives and bus either raw (drive_status_words, fieldbus_cycle_counter, working_counter) "
+        "or as levels (servo_ready, drive_fault, fieldbus_ok), not both");
+  }
+  return call;
 }
 
 py::list axes_list(const ScanOutputs& out) {
@@ -126,6 +159,7 @@ py::dict observe(const SystemStateManager& m) {
   d["stale_commands"] = s.stale_commands;
   d["estop_tested_a"] = s.estop_tested_a;
   d["estop_tested_b"] = s.estop_tested_b;
+  d["enable_release_required"] = s.enable_release_required;
   put_outputs(d, m.outputs());
   return d;
 }
@@ -192,7 +226,7 @@ py::dict derived_dict(const DerivedInputs& d) {
   out["drive_fault"] = d.drive_fault;
   out["fieldbus_ok"] = d.fieldbus_ok;
   out["operator_link_ok"] = d.operator_link_ok;
-  out["axes_at_rest"] = d.axes_at_rest;
+  out["enable_release_required"] = d.enable_release_required;
   out["discrepancy"] = str(to_string(d.discrepancy));
   return out;
 }
@@ -225,7 +259,7 @@ DhTable dh_from(const py::sequence& rows) {
 
 /// One step of a batch: a cycle's inputs, or a submitted command (kind, axis, direction,
 /// speed_mm_s) given as a tuple.
-using BatchStep = std::variant<ScanInputs, Command>;
+using BatchStep = std::variant<CycleCall, Command>;
 
 std::vector<BatchStep> batch_steps(const py::list& calls) {
   std::vector<BatchStep> steps;
@@ -244,8 +278,8 @@ std::vector<BatchStep> batch_steps(const py::list& calls) {
 }
 
 void run_step(SystemStateManager& m, const BatchStep& s) {
-  if (const auto* in = std::get_if<ScanInputs>(&s)) {
-    (void)m.cycle(*in);
+  if (const auto* in = std::get_if<CycleCall>(&s)) {
+    (void)run_cycle(m, *in);
   } else {
     (void)m.submit(std::get<Command>(s));
   }
@@ -294,6 +328,7 @@ void observe_key(const SystemStateManager& m, std::string& k) {
   num(static_cast<long long>(s.stale_commands));
   num(s.estop_tested_a ? 1 : 0);
   num(s.estop_tested_b ? 1 : 0);
+  num(s.enable_release_required ? 1 : 0);
   num(o.contactor_closed ? 1 : 0);
   num(o.drive_enable ? 1 : 0);
   num(o.brake_release ? 1 : 0);
@@ -320,8 +355,8 @@ class ManagerPlanReplayer {
     return safestate_bindings::run_plan(
         plan_, calls_, first, last, [this] { return std::make_unique<SystemStateManager>(config_); },
         [](SystemStateManager& m, const BatchStep& s, std::int8_t full_before) {
-          if (const auto* in = std::get_if<ScanInputs>(&s)) {
-            (void)m.cycle(*in);
+          if (const auto* in = std::get_if<CycleCall>(&s)) {
+            (void)run_cycle(m, *in);
             return true;
           }
           return (m.submit(std::get<Command>(s)) == SubmitResult::queue_full) == (full_before != 0);
@@ -371,14 +406,34 @@ PYBIND11_MODULE(_core, m) {
                      "Joint speed at or below which the axis is at rest (default 0.001 rad/s).")
       .def_readwrite("command_queue_limit", &Config::command_queue_limit,
                      "Commands the queue holds, 1..16 (default 8).")
+      .def_readwrite("fieldbus_expected_working_counter", &Config::fieldbus_expected_working_counter,
+                     "EtherCAT working counter of a complete frame (default 18: 3 per drive).")
+      .def_readwrite("fieldbus_lost_cycles_limit", &Config::fieldbus_lost_cycles_limit,
+                     "Missed bus cycles in a row tolerated before C24, at most 100 (default 0).")
+      .def_readwrite("t2_speed_limit_mm_s", &Config::t2_speed_limit_mm_s,
+                     "T2 TCP speed limit, mm/s, above the T1 limit and at most 3000 (default 1000).")
+      .def_readwrite("standstill_speed_window_mm_s", &Config::standstill_speed_window_mm_s,
+                     "TCP speed the standstill class may admit, below the T1 limit (default 10 mm/s).")
       .def_property(
           "tool_offset_m",
-          [](const Config& c) { return py::make_tuple(c.tool_offset_m[0], c.tool_offset_m[1], c.tool_offset_m[2]); },
-          [](Config& c, const py::sequence& v) {
-            if (py::len(v) != 3) throw py::value_error("tool_offset_m is (x, y, z) in metres");
-            for (std::size_t i = 0; i < 3; ++i) c.tool_offset_m[i] = v[i].cast<double>();
+          [](const Config& c) -> py::object {
+            if (!c.tool_offset_m) return py::none();
+            const auto& t = *c.tool_offset_m;
+            return py::make_tuple(t[0], t[1], t[2]);
           },
-          "Tool centre point in the flange frame, metres (RSM-10: T1 speed at the tool tip).")
+          [](Config& c, const py::object& v) {
+            if (v.is_none()) {
+              c.tool_offset_m.reset();
+              return;
+            }
+            const auto seq = v.cast<py::sequence>();
+            if (py::len(seq) != 3) throw py::value_error("tool_offset_m is (x, y, z) in metres, or None");
+            std::array<double, 3> t{};
+            for (std::size_t i = 0; i < 3; ++i) t[i] = seq[i].cast<double>();
+            c.tool_offset_m = t;
+          },
+          "Tool centre point in the flange frame, metres (RSM-10: T1 speed at the tool tip). None (the\n"
+          "default) is an invalid Config (TOOL_OFFSET_NOT_GIVEN); (0, 0, 0) states a tool-less flange.")
       .def_property(
           "dh", [](const Config& c) { return dh_to_list(c.dh); },
           [](Config& c, const py::sequence& rows) { c.dh = dh_from(rows); },
@@ -392,6 +447,7 @@ PYBIND11_MODULE(_core, m) {
                ", arming_timeout_cycles=" + std::to_string(c.arming_timeout_cycles) +
                ", max_stop_cycles=" + std::to_string(c.max_stop_cycles) +
                ", t1_speed_limit_mm_s=" + std::to_string(c.t1_speed_limit_mm_s) +
+               ", t2_speed_limit_mm_s=" + std::to_string(c.t2_speed_limit_mm_s) +
                ", zero_velocity_rad_s=" + std::to_string(c.zero_velocity_rad_s) +
                ", command_queue_limit=" + std::to_string(c.command_queue_limit) + ")";
       });
@@ -402,13 +458,16 @@ PYBIND11_MODULE(_core, m) {
       .def(
           "cycle",
           [](SystemStateManager& self, const py::dict& inputs) {
-            return outputs_dict(self.cycle(scan_inputs(inputs)));
+            return outputs_dict(run_cycle(self, scan_inputs(inputs)));
           },
           py::arg("inputs"),
           "Run one scan cycle. `inputs` keys: estop_closed_a/_b, safeguard_closed_a/_b (bool),\n"
           "enabling_a/_b ('RELEASED'|'MIDDLE'|'PANIC'), selector_auto/_t1/_t2, self_test_ok,\n"
-          "servo_ready, drive_fault (bool), q, qd (6 floats). A missing key takes its zero, safe\n"
-          "value (contacts open, RELEASED, False, 0.0); an unknown key raises KeyError.\n"
+          "q, qd (6 floats), and the drives and bus either as levels servo_ready, drive_fault,\n"
+          "fieldbus_ok (bool; a simulated EtherCAT master makes the process image) or raw\n"
+          "drive_status_words (6 CiA 402 words), fieldbus_cycle_counter, working_counter.\n"
+          "A missing key takes its zero, safe value (contacts open, RELEASED, False, 0, bus lost);\n"
+          "an unknown key raises KeyError.\n"
           "Returns the outputs: contactor_closed, drive_enable, brake_release, ramp_down_request,\n"
           "reset_lamp, commanded_speed_mm_s, axes (6 PLCopen state names).")
       .def(
@@ -426,7 +485,7 @@ PYBIND11_MODULE(_core, m) {
            "session_mode, stop_category, fault_code, last_reject_reason, command_result,\n"
            "estop_mismatch, safeguard_mismatch, enabling_mismatch, selector_invalid, state_cycles,\n"
            "t2_confirmed, resume_to, jog_axis, jog_direction, jog_speed_mm_s, queue_length,\n"
-           "stale_commands, estop_tested_a, estop_tested_b,\n"
+           "stale_commands, estop_tested_a, estop_tested_b, enable_release_required,\n"
            "contactor_closed, drive_enable, brake_release, ramp_down_request, reset_lamp,\n"
            "commanded_speed_mm_s, axes.")
       .def(
@@ -438,6 +497,24 @@ PYBIND11_MODULE(_core, m) {
           "The abstract inputs the last cycle derived (design §2): estop_tripped, gate_open,\n"
           "enable_middle, enable_panic, selector, speed, self_test_ok, servo_ready, drive_fault,\n"
           "discrepancy (first discrepancy fault code or 'NONE').")
+      .def(
+          "drive_status",
+          [](const SystemStateManager& self) {
+            py::list states;
+            py::list warnings;
+            for (const DriveStatus& d : self.drive_status().drives) {
+              states.append(str(to_string(d.state)));
+              warnings.append(d.warning);
+            }
+            py::dict out;
+            out["states"] = states;
+            out["warnings"] = warnings;
+            out["fieldbus_healthy"] = self.fieldbus_watchdog().healthy();
+            out["fieldbus_missed_cycles"] = self.fieldbus_watchdog().missed_cycles();
+            return out;
+          },
+          "What the last cycle decoded (design §2): the CiA 402 state name and warning bit of each\n"
+          "drive, and the fieldbus watchdog (healthy, missed cycles in a row).")
       .def_property_readonly(
           "config", [](const SystemStateManager& self) { return self.config(); }, "A copy of the Config.")
       .def_property_readonly(
@@ -494,8 +571,8 @@ PYBIND11_MODULE(_core, m) {
           for (auto i = starts[t]; i < starts[t + 1]; ++i) {
             const BatchStep& s = table.at(static_cast<std::size_t>(steps.at(static_cast<std::size_t>(i))));
             bool ok = true;
-            if (const auto* in = std::get_if<ScanInputs>(&s)) {
-              (void)mgr->cycle(*in);
+            if (const auto* in = std::get_if<CycleCall>(&s)) {
+              (void)run_cycle(*mgr, *in);
             } else {
               const bool full = mgr->submit(std::get<Command>(s)) == SubmitResult::queue_full;
               ok = full == (submit_full.at(static_cast<std::size_t>(i)) != 0);

@@ -35,12 +35,13 @@ namespace {
 py::str str(std::string_view s) { return py::str(s.data(), s.size()); }
 
 constexpr std::array<std::string_view, 3> kResults{"OK", "PROTECTION_ENTERED", "LATCH_BLOCKED"};
-constexpr std::array<std::string_view, 6> kFaults{"NONE",       "SENSOR_INVALID", "OVER_TEMP",
-                                                  "UNDER_VOLT", "OVER_VOLT",      "LATCH_BLOCKED"};
+constexpr std::array<std::string_view, 7> kFaults{"NONE",      "SENSOR_INVALID", "OVER_TEMP",      "UNDER_VOLT",
+                                                  "OVER_VOLT", "LATCH_BLOCKED",  "HAZARD_DETECTED"};
 constexpr std::array<std::string_view, 5> kSupStates{"INIT", "RUN", "DEGRADED", "SHUTTING_DOWN", "STOPPED"};
 constexpr std::array<std::string_view, 4> kUnitStatus{"INIT", "READY", "FAILED", "STOPPED"};
 constexpr std::array<std::string_view, kUnitCount> kUnits{"timer",  "dispatcher",  "monitoring", "control",
                                                           "safety", "diagnostics", "comms"};
+constexpr std::array<std::string_view, 3> kSafetyInputs{"NONE", "FRESH", "EMPTY"};
 constexpr std::array<std::string_view, 5> kAos{"monitoring", "control", "safety", "diagnostics", "comms"};
 
 template <std::size_t N>
@@ -66,14 +67,27 @@ class ProtectionChain {
     (void)safety_.run_to_completion();
     data_.control_command = kRegulatedCommand;
     data_.fan_output = safety_.safety().fan_output(kRegulatedCommand);  // the gate before any tick
+    data_.load_enable = safety_.safety().load_enable();
   }
 
-  // One tick: monitoring's snapshot, control's command, then safety and diagnostics in
-  // dispatch order, each run to completion. Returns the sm_protection row that fired.
-  std::string tick(int temp, int volt, bool valid, bool clear) {
+  // One tick: the supervisor's lifecycle event of the previous tick (EVT_DEGRADED /
+  // EVT_RECOVERY, delivered to safety and diagnostics before the next tick, as in
+  // ProtectionRuntime), monitoring's snapshot, control's command, then safety and
+  // diagnostics in dispatch order, each run to completion. Returns the sm_protection row.
+  std::string tick(int temp, int volt, bool valid, bool clear, bool hazard_detected, const std::string& lifecycle) {
+    if (lifecycle == "DEGRADED" || lifecycle == "RECOVERY") {
+      const AoSignal sig = lifecycle == "DEGRADED" ? AoSignal::degraded : AoSignal::recovery;
+      deliver(safety_, AoEvent{sig, data_.tick, 0, 0});
+      deliver(diagnostics_, AoEvent{sig, data_.tick, 0, 0});
+    } else if (lifecycle != "NONE") {
+      throw py::value_error("unknown lifecycle event '" + lifecycle + "'");
+    }
     ++data_.tick;
-    data_.snapshot = SensorSnapshot{static_cast<std::int16_t>(temp), static_cast<std::uint16_t>(volt), valid, clear};
+    data_.snapshot = SensorSnapshot{static_cast<std::int16_t>(temp), static_cast<std::uint16_t>(volt), valid, clear,
+                                    hazard_detected};
     data_.control_command = kRegulatedCommand;
+    data_.fan_output = kSafeFanCommandPercent;  // the runtime's fail-safe defaults of a dispatch cycle
+    data_.load_enable = false;
     run(safety_);
     run(diagnostics_);
     return std::string(row_id(safety_.safety().last_row()));
@@ -86,6 +100,8 @@ class ProtectionChain {
     d["latch_active"] = c.latch_active;
     d["override_active"] = c.override_active;
     d["fan_cmd"] = data_.fan_output == kSafeFanCommandPercent ? "SAFE" : "REGULATED";
+    d["load_enable"] = data_.load_enable;
+    d["degraded"] = safety_.safety().degraded();
     d["result"] = str(kResults[static_cast<std::size_t>(data_.safety_result)]);
     d["published"] = state_name(diagnostics_.published_state());
     d["fault_event"] = str(kFaults[static_cast<std::size_t>(safety_.safety().last_fault_event())]);
@@ -94,8 +110,9 @@ class ProtectionChain {
   std::uint32_t lost_events() const { return safety_.unpublished() + diagnostics_.overflow_count(); }
 
  private:
-  void run(ActiveObject& ao) {
-    if (ao.post(AoEvent{AoSignal::tick, data_.tick, 0, 0}) != PostResult::ok) throw py::value_error("tick not posted");
+  void run(ActiveObject& ao) { deliver(ao, AoEvent{AoSignal::tick, data_.tick, 0, 0}); }
+  static void deliver(ActiveObject& ao, const AoEvent& e) {
+    if (ao.post(e) != PostResult::ok) throw py::value_error("event not posted");
     (void)ao.run_to_completion();
   }
 
@@ -137,7 +154,8 @@ class SupervisorDouble {
     const SupervisorStep step = sup_.tick(in_);
     const std::array<UnitStatus, kUnitCount> status = in_.status;
     dispatched_ = dispatch_cycle(
-        step.mode, [&status](AoId a) { return status[index(unit_of(a))] == UnitStatus::ready; }, [](AoId) {});
+        dispatch_gate(step.mode, status[index(UnitId::dispatcher)]),
+        [&status](AoId a) { return status[index(unit_of(a))] == UnitStatus::ready; }, [](AoId) {});
     return std::string(step.row->id);
   }
 
@@ -155,7 +173,18 @@ class SupervisorDouble {
       k += i < dispatched_.count ? kAos[static_cast<std::size_t>(dispatched_.order[i])] : std::string_view("none");
       k += ',';
     }
+    k += '|';
+    k += kSafetyInputs[static_cast<std::size_t>(safety_input_of(dispatched_))];
+    k += '|';
+    k += output_stage();
     return k;
+  }
+
+  // The runtime's output stage after the tick: the gate is closed at the start of every
+  // dispatch cycle and only ao_safety on this tick's snapshot opens it; after shutdown
+  // step 1 control's command is the safe value.
+  std::string_view output_stage() const {
+    return !sup_.outputs_safe() && safety_input_of(dispatched_) == SafetyInput::fresh ? "GATED" : "SAFE";
   }
 
   py::dict observe() const {
@@ -173,6 +202,8 @@ class SupervisorDouble {
       disp.append(i < dispatched_.count ? str(kAos[static_cast<std::size_t>(dispatched_.order[i])]) : py::str("none"));
     }
     d["dispatched"] = disp;
+    d["safety_input"] = str(kSafetyInputs[static_cast<std::size_t>(safety_input_of(dispatched_))]);
+    d["outputs"] = str(output_stage());
     return d;
   }
 
@@ -259,6 +290,7 @@ PYBIND11_MODULE(_pro, m) {
            }),
            py::arg("temp_limit") = 85, py::arg("volt_min") = 180, py::arg("volt_max") = 300)
       .def("tick", &ProtectionChain::tick, py::arg("temp"), py::arg("volt"), py::arg("valid"), py::arg("clear"),
+           py::arg("hazard_detected") = false, py::arg("lifecycle") = "NONE",
            "One tick with this snapshot; returns the sm_protection row that fired.")
       .def("observe", &ProtectionChain::observe)
       .def("lost_events", &ProtectionChain::lost_events);

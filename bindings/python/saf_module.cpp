@@ -42,27 +42,83 @@ std::string field(const py::dict& inbox, const char* key) {
   throw py::value_error(std::string("inbox.") + key + ": unknown value '" + value + "' (one of " + allowed + ")");
 }
 
-/// The model's inbox record -> the datagrams of one cycle, in the order of design §12.
-std::vector<Encoded> encode_inbox(const py::dict& inbox) {
-  std::vector<Encoded> out;
+/// One datagram with the transport's intake verdict (design §5).
+struct Tagged {
+  Encoded bytes;
+  Sender from;
+  bool fresh;
+};
+
+/// The model's inbox record -> the datagrams of one cycle, in the order of design §12: a
+/// genuine value comes from the peer of its kind, fresh; "_SPOOFED" from another source;
+/// "_REPLAYED" from the Safety Client with a sequence number outside the replay window.
+std::vector<Tagged> encode_inbox(const py::dict& inbox) {
+  std::vector<Tagged> out;
   const std::string estop = field(inbox, "estop");
-  if (estop == "SET" || estop == "CLEAR") {
-    out.push_back(encode(Message::set_estop(estop == "SET")));
-  } else if (estop != "NONE") {
-    bad("estop", estop, "NONE, CLEAR, SET");
-  }
+  if (estop == "SET" || estop == "CLEAR")
+    out.push_back({encode(Message::set_estop(estop == "SET")), Sender::Client, true});
+  else if (estop == "CLEAR_SPOOFED") out.push_back({encode(Message::set_estop(false)), Sender::Other, true});
+  else if (estop == "CLEAR_REPLAYED") out.push_back({encode(Message::set_estop(false)), Sender::Client, false});
+  else if (estop != "NONE") bad("estop", estop, "NONE, CLEAR, SET, CLEAR_SPOOFED, CLEAR_REPLAYED");
   const std::string health = field(inbox, "health");
-  if (health == "NORMAL") out.push_back(encode(Message::report_health(Health::Normal)));
-  else if (health == "WARNING") out.push_back(encode(Message::report_health(Health::Warning)));
-  else if (health == "ERROR") out.push_back(encode(Message::report_health(Health::Error)));
-  else if (health == "FATAL") out.push_back(encode(Message::report_health(Health::Fatal)));
-  else if (health != "NONE") bad("health", health, "NONE, NORMAL, WARNING, ERROR, FATAL");
+  const auto report = [&out](Health h, Sender from) { out.push_back({encode(Message::report_health(h)), from, true}); };
+  if (health == "NORMAL") report(Health::Normal, Sender::Subsystem);
+  else if (health == "WARNING") report(Health::Warning, Sender::Subsystem);
+  else if (health == "ERROR") report(Health::Error, Sender::Subsystem);
+  else if (health == "FATAL") report(Health::Fatal, Sender::Subsystem);
+  else if (health == "NORMAL_SPOOFED") report(Health::Normal, Sender::Other);
+  else if (health != "NONE") bad("health", health, "NONE, NORMAL, WARNING, ERROR, FATAL, NORMAL_SPOOFED");
   const std::string control = field(inbox, "control");
-  if (control == "ACCEPTED") out.push_back(encode(Message::confirm_control(ControlResponse::Accepted)));
-  else if (control == "REFUSED") out.push_back(encode(Message::confirm_control(ControlResponse::NotAvailable)));
-  else if (control == "OTHER") out.push_back(encode(Message::report_control(kOtherComponentId, 255)));
-  else if (control != "NONE") bad("control", control, "NONE, ACCEPTED, REFUSED, OTHER");
+  const auto accepted = encode(Message::confirm_control(ControlResponse::Accepted));
+  const auto us = encode(Message::report_control(kSafetyComponentId, kAuthorityCode));
+  if (control == "ACCEPTED") out.push_back({accepted, Sender::Subsystem, true});
+  else if (control == "REFUSED")
+    out.push_back({encode(Message::confirm_control(ControlResponse::NotAvailable)), Sender::Subsystem, true});
+  else if (control == "US") out.push_back({us, Sender::Subsystem, true});
+  else if (control == "OTHER")
+    out.push_back({encode(Message::report_control(kOtherComponentId, 255)), Sender::Subsystem, true});
+  else if (control == "ACCEPTED_SPOOFED") out.push_back({accepted, Sender::Other, true});
+  else if (control == "US_SPOOFED") out.push_back({us, Sender::Other, true});
+  else if (control != "NONE")
+    bad("control", control, "NONE, ACCEPTED, REFUSED, US, OTHER, ACCEPTED_SPOOFED, US_SPOOFED");
+  const std::string subsys = inbox.contains("subsys") ? field(inbox, "subsys") : std::string("NONE");
+  if (subsys == "OPERATIONAL") {
+    out.push_back({encode(Message::report_subsystem_state(SubsystemState::Operational)), Sender::Subsystem, true});
+  } else if (subsys != "NONE") {
+    bad("subsys", subsys, "NONE, OPERATIONAL");
+  }
   return out;
+}
+
+const char* peer_name(Sender p) {
+  switch (p) {
+    case Sender::Client: return "CLIENT";
+    case Sender::Subsystem: return "SUBSYSTEM";
+    case Sender::Other: return "OTHER";
+  }
+  return "OTHER";
+}
+
+Sender peer_of_name(const std::string& s) {
+  if (s == "CLIENT") return Sender::Client;
+  if (s == "SUBSYSTEM") return Sender::Subsystem;
+  if (s == "OTHER") return Sender::Other;
+  throw py::value_error("peer: unknown value '" + s + "' (one of CLIENT, SUBSYSTEM, OTHER)");
+}
+
+/// The peer a datagram of this kind comes from when the caller does not say (a perfectly
+/// bound transport); undecodable bytes count as from another source.
+Sender default_peer(const std::string& d) {
+  const DecodeResult r = decode(reinterpret_cast<const std::uint8_t*>(d.data()), d.size());
+  if (!r.ok()) return Sender::Other;
+  return r.message.id == MessageId::SetEstop ? Sender::Client : Sender::Subsystem;
+}
+
+/// A datagram as conform's plan carries it: bytes, peer (0 client, 1 subsystem, 2 other), fresh.
+using PlanDatagram = std::tuple<std::string, int, bool>;
+
+void push_tagged(InboundBatch& batch, const std::string& d, Sender from, bool fresh) {
+  (void)batch.push(reinterpret_cast<const std::uint8_t*>(d.data()), d.size(), from, fresh);
 }
 
 py::dict observe(const SafetyService& s) {
@@ -77,6 +133,9 @@ py::dict observe(const SafetyService& s) {
   d["control_age"] = o.control_age;
   d["out_request"] = str(to_string(o.out_request));
   d["out_set_state"] = str(to_string(o.out_set_state));
+  d["alarm"] = o.alarm;
+  d["resend"] = o.resend;
+  d["set_age"] = o.set_age;
   return d;
 }
 
@@ -90,14 +149,21 @@ py::dict result_dict(const CycleResult& r) {
   return d;
 }
 
-CycleResult cycle_raw(SafetyService& s, const std::vector<py::bytes>& datagrams, bool hardware_fault) {
+/// Each datagram is bytes (tagged as from the peer of its kind, fresh) or a tuple
+/// (bytes, peer name, fresh): the transport's intake verdict (design §5).
+CycleResult cycle_raw(SafetyService& s, const py::list& datagrams, bool hardware_fault) {
   if (datagrams.size() > kMaxInboundPerCycle) {
     throw py::value_error("at most " + std::to_string(kMaxInboundPerCycle) + " datagrams per cycle");
   }
   InboundBatch batch{};
-  for (const py::bytes& b : datagrams) {
-    const std::string_view v = b;
-    (void)batch.push(reinterpret_cast<const std::uint8_t*>(v.data()), v.size());
+  for (const py::handle h : datagrams) {
+    if (py::isinstance<py::bytes>(h)) {
+      const std::string d = h.cast<std::string>();
+      push_tagged(batch, d, default_peer(d), true);
+    } else {
+      const auto [d, peer, fresh] = h.cast<std::tuple<py::bytes, std::string, bool>>();
+      push_tagged(batch, std::string(d), peer_of_name(peer), fresh);
+    }
   }
   return s.cycle(batch, hardware_fault);
 }
@@ -119,10 +185,14 @@ void observe_line(const SafetyService& s, std::string& k) {
   add(std::to_string(o.control_age));
   add(to_string(o.out_request));
   add(to_string(o.out_set_state));
+  add(o.alarm ? "True" : "False");
+  add(o.resend ? "True" : "False");
+  add(std::to_string(o.set_age));
 }
 
-/// One step of a plan: the inbox's datagrams and the hardware fault line.
-using SafCall = std::pair<std::vector<std::string>, bool>;
+/// One step of a plan: the inbox's datagrams (with their intake verdicts) and the hardware
+/// fault line.
+using SafCall = std::pair<std::vector<PlanDatagram>, bool>;
 
 struct SafRun {
   SafetyService svc;
@@ -155,12 +225,12 @@ class SafPlanReplayer {
           const std::size_t at = r.steps % (c.first.size() + 1);
           ++r.steps;
           InboundBatch batch{};
-          const auto push = [&batch](const std::string& d) {
-            (void)batch.push(reinterpret_cast<const std::uint8_t*>(d.data()), d.size());
-          };
           for (std::size_t i = 0; i <= c.first.size(); ++i) {
-            if (i == at) push(garbage);
-            if (i < c.first.size()) push(c.first[i]);
+            if (i == at) push_tagged(batch, garbage, Sender::Other, true);
+            if (i < c.first.size()) {
+              const auto& [d, peer, fresh] = c.first[i];
+              push_tagged(batch, d, static_cast<Sender>(peer), fresh);
+            }
           }
           r.last = r.svc.cycle(batch, c.second);
           return true;
@@ -189,10 +259,11 @@ PYBIND11_MODULE(_saf, m) {
       "encode_inbox",
       [](const py::dict& inbox) {
         py::list out;
-        for (const Encoded& e : encode_inbox(inbox)) out.append(to_bytes(e));
+        for (const Tagged& e : encode_inbox(inbox))
+          out.append(py::make_tuple(to_bytes(e.bytes), peer_name(e.from), e.fresh));
         return out;
       },
-      py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded.");
+      py::arg("inbox"), "The datagrams of one model inbox (design §12), encoded: [(bytes, peer, fresh)].");
 
   m.def(
       "transition_table",
@@ -268,9 +339,9 @@ PYBIND11_MODULE(_saf, m) {
       .def(
           "cycle",
           [](SafetyService& s, const py::dict& inbox) {
-            const std::vector<Encoded> encoded = encode_inbox(inbox);
+            const std::vector<Tagged> encoded = encode_inbox(inbox);
             InboundBatch batch{};
-            for (const Encoded& e : encoded) (void)batch.push(e);
+            for (const Tagged& e : encoded) (void)batch.push(e.bytes, e.from, e.fresh);
             const py::handle hw = inbox.contains("hw_fault") ? inbox["hw_fault"] : py::handle(Py_False);
             if (!py::isinstance<py::bool_>(hw)) throw py::type_error("inbox.hw_fault must be a bool");
             return result_dict(s.cycle(batch, hw.cast<bool>()));
@@ -278,11 +349,12 @@ PYBIND11_MODULE(_saf, m) {
           py::arg("inbox"), "One cycle with the model's inbox record (encoded per design §12).")
       .def(
           "cycle_raw",
-          [](SafetyService& s, const std::vector<py::bytes>& datagrams, bool hardware_fault) {
+          [](SafetyService& s, const py::list& datagrams, bool hardware_fault) {
             return result_dict(cycle_raw(s, datagrams, hardware_fault));
           },
           py::arg("datagrams"), py::arg("hardware_fault") = false,
-          "One cycle with raw datagrams (the codec path; garbage allowed).")
+          "One cycle with raw datagrams (the codec path; garbage allowed): each bytes (from the peer of\n"
+          "its kind, fresh) or (bytes, 'CLIENT'|'SUBSYSTEM'|'OTHER', fresh).")
       .def(
           "copy", [](const SafetyService& s) { return SafetyService(s); },
           "An independent copy (the service is plain data): replay branches from one state.")
@@ -297,6 +369,11 @@ PYBIND11_MODULE(_saf, m) {
           rej[str(to_string(static_cast<DecodeError>(i)))] = d.rejected[i];
         }
         out["rejected"] = rej;
+        out["rejected_source"] = d.rejected_source;
+        out["rejected_stale"] = d.rejected_stale;
+        out["unsolicited_confirm"] = d.unsolicited_confirm;
+        out["inconsistent_report"] = d.inconsistent_report;
+        out["alarms"] = d.alarms;
         return out;
       });
 }

@@ -186,6 +186,10 @@ class Store {
       case K_SET: return cmp_list(a, b);
       default: break;
     }
+    // TLC's RecordValue.compareTo fails on a function that is not a record whatever the
+    // sizes; which operand TLC's sort makes the receiver is not known here, so either
+    // orientation stops the core and the Python engine decides.
+    if (record_against_non_record(a, b) || record_against_non_record(b, a)) incomparable("compare", 0);
     uint32_t na = len(a), nb = len(b);
     if (na != nb) return na < nb ? -1 : 1;
     if (ka != kb) return ka == K_SEQ ? -1 : 1;  // () < (keys...)
@@ -293,12 +297,28 @@ class Store {
   // elements in TLC's order; a tuple's length, then its items; a record's field
   // names, then its fields; a function's keys, then its values), failing at the first
   // pair of incomparable kinds it meets (<<1>> = <<TRUE>>), as values.tlc_equals.
+  bool is_record(uint32_t f) const {
+    if (kind(f) != K_FUN || len(f) == 0) return false;
+    const uint32_t* k = items(f);
+    for (uint32_t i = 0; i < len(f); ++i)
+      if (kind(k[i]) != K_STR) return false;
+    return true;
+  }
+  // a a record, b a function or sequence that does not convert to one (<<>> does).
+  bool record_against_non_record(uint32_t a, uint32_t b) const {
+    if (!is_record(a)) return false;
+    Kind kb = kind(b);
+    return (kb == K_SEQ && len(b) > 0) || (kb == K_FUN && !is_record(b));
+  }
   bool equal_walk(uint32_t a, uint32_t b, int loc) const {
     if (a == b) return true;
     Kind ka = kind(a), kb = kind(b);
     if (ka == K_MV || kb == K_MV) return false;
     if (cls(ka) != cls(kb)) incomparable("check equality of", loc);
     if (ka != K_SEQ && ka != K_FUN && ka != K_SET) return false;
+    // TLC's RecordValue.equals: a record equals only what converts to a record (a
+    // function of field names, or <<>>), else an error whatever the sizes.
+    if (record_against_non_record(a, b)) incomparable("check equality of", loc);
     uint32_t n = len(a);
     if (n != len(b)) return false;
     const uint32_t *x = items(a), *y = items(b);
@@ -1397,6 +1417,21 @@ class Engine {
     edge_params.push_back(st.mk_seq(buf_));
   }
 
+  // The labelled graph of `safestate mutate`'s difference search (mutate/graph.py): per
+  // successor inside the model (and per initial state, source 0xFFFFFFFF), the source,
+  // the stored target, and the values of `label_vars` in the successor itself as one
+  // interned tuple -- under a VIEW the stored target may differ from it outside the
+  // VIEW, and the search compares what the step produced.  Only the one-worker search.
+  std::vector<int64_t> label_vars;
+  std::vector<uint32_t> label_src, label_dst, label_val;
+  void record_label(uint32_t src, uint32_t dst, const uint32_t* t) {
+    buf_.clear();
+    for (int64_t v : label_vars) buf_.push_back(t[size_t(v)]);
+    label_src.push_back(src);
+    label_dst.push_back(dst);
+    label_val.push_back(st.mk_seq(buf_));
+  }
+
   int cur_level = 0;
   uint64_t before = 0;
   void on_emit(Ctx& c, int lf) {
@@ -1421,6 +1456,8 @@ class Engine {
         is_new = false;
       }
       if (record_edges && emit_kind == 1) record_edge(uint32_t(head), uint32_t(found < 0 ? idx : found), lf);
+      if (!label_vars.empty())
+        record_label(emit_kind ? uint32_t(head) : 0xFFFFFFFFu, uint32_t(found < 0 ? idx : found), c.t);
     }
     if (!is_new) return;
     int which = -1;
@@ -1453,7 +1490,7 @@ class Engine {
         }
         initial_count = nstates();
         emit_kind = 1;
-        if (workers > 1 && !record_edges) search_levels();
+        if (workers > 1 && !record_edges && label_vars.empty()) search_levels();
         while (head < nstates()) {
           while (size_t(cur_level) < level_start.size() && head >= level_start[size_t(cur_level)]) ++cur_level;
           std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
@@ -1866,6 +1903,10 @@ PYBIND11_MODULE(_tla_native, m) {
              return py::make_tuple(as_bytes(e.edge_src), as_bytes(e.edge_dst), as_bytes(e.edge_leaf),
                                    as_bytes(e.edge_params));
            })
+      .def_readwrite("label_vars", &Engine::label_vars)
+      .def(
+          "labels_bytes",
+          [](Engine& e) { return py::make_tuple(as_bytes(e.label_src), as_bytes(e.label_dst), as_bytes(e.label_val)); })
       .def("parent", [](Engine& e, size_t i) { return e.parent[i]; })
       .def("leaf", [](Engine& e, size_t i) { return e.leaf[i]; })
       .def_property_readonly("distinct", &Engine::nstates)

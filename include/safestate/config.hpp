@@ -6,9 +6,13 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "safestate/config_error.hpp"
 #include "safestate/dh_table.hpp"
+#include "safestate/fieldbus_watchdog.hpp"
+#include "safestate/speed_limits.hpp"
+#include "safestate/standstill_bound.hpp"
 
 namespace safestate {
 
@@ -24,14 +28,33 @@ struct Config {
   std::uint32_t discrepancy_cycles{50};      ///< D: tolerated cycles of channel disagreement (§3)
   std::uint32_t arming_timeout_cycles{500};  ///< cycles ARMING waits for servo_ready (C16)
   std::uint32_t max_stop_cycles{1000};       ///< cycles STOPPING waits for zero speed (C20)
-  std::int32_t t1_speed_limit_mm_s{250};     ///< T1 TCP speed limit, integer mm/s (C10, K29)
+  std::int32_t t1_speed_limit_mm_s{250};     ///< T1 TCP speed limit, integer mm/s, 1..250 (C10, K29)
+  std::int32_t t2_speed_limit_mm_s{1000};    ///< T2 TCP speed limit, integer mm/s (K26)
   double zero_velocity_rad_s{0.001};         ///< |qd[i]| at or below this is standstill (§2)
-  std::uint32_t command_queue_limit{8};      ///< commands the queue holds, 1..kMaxQueueCapacity
-  DhTable dh{kUr5DhTable};                   ///< arm kinematics (UR5 standard DH)
+  /// The TCP speed (mm/s) the standstill class may admit: zero_velocity_rad_s seen at the
+  /// tool (zero_class_tcp_bound_mm_s) must not exceed it, and it stays below the T1 limit.
+  double standstill_speed_window_mm_s{10.0};
+  std::uint32_t command_queue_limit{8};  ///< commands the queue holds, 1..kMaxQueueCapacity
+  /// EtherCAT working counter of a complete frame: 3 per drive for the LRW datagram
+  /// (read 1 + write 2) of the six drives (§2 "Fieldbus watchdog").
+  std::uint16_t fieldbus_expected_working_counter{18};
+  /// Missed bus cycles in a row tolerated before C24 (0 = none), at most kMaxFieldbusLostCycles.
+  std::uint32_t fieldbus_lost_cycles_limit{0};
+  DhTable dh{kUr5DhTable};  ///< arm kinematics (UR5 standard DH)
   /// Tool centre point in the flange (last DH) frame, metres: the T1 speed (RSM-10) is
-  /// measured at the tool tip, not at the flange. Zero = a tool-less flange.
-  std::array<double, 3> tool_offset_m{0.0, 0.0, 0.0};
+  /// measured at the tool tip, not at the flange. No default: the integrator states the
+  /// mounted tool (kFlangeTcp for none); a Config without it is invalid (C02).
+  std::optional<std::array<double, 3>> tool_offset_m{};
 };
+
+/// The tool offset of a tool-less flange, for a Config that states it explicitly.
+inline constexpr std::array<double, 3> kFlangeTcp{0.0, 0.0, 0.0};
+
+/// The tool offset the kinematics use: the stated one, the flange for an invalid Config
+/// (which never leaves BOOT, C02).
+[[nodiscard]] inline std::array<double, 3> tool_offset_or_flange(const Config& c) noexcept {
+  return c.tool_offset_m.value_or(kFlangeTcp);
+}
 
 /// First problem found, in field order; ConfigError::None for a usable Config.
 [[nodiscard]] inline ConfigError validate(const Config& c) noexcept {
@@ -50,13 +73,34 @@ struct Config {
   if (c.t1_speed_limit_mm_s <= 0) {
     return ConfigError::T1LimitNotPositive;
   }
+  if (c.t1_speed_limit_mm_s > kIsoReducedSpeedMmS) {
+    return ConfigError::T1LimitAboveReducedSpeed;
+  }
+  // T2 is the high-speed manual mode: its limit lies above T1's and within the arm's reach.
+  if (c.t2_speed_limit_mm_s <= c.t1_speed_limit_mm_s || c.t2_speed_limit_mm_s > kMaxT2SpeedLimitMmS) {
+    return ConfigError::T2LimitOutOfRange;
+  }
   if (!std::isfinite(c.zero_velocity_rad_s) || c.zero_velocity_rad_s < 0.0) {
     return ConfigError::ZeroVelocityInvalid;
+  }
+  // ZERO and OVER_T1 must not overlap: a speed the standstill class admits is below T1's.
+  if (!std::isfinite(c.standstill_speed_window_mm_s) || c.standstill_speed_window_mm_s <= 0.0 ||
+      c.standstill_speed_window_mm_s >= static_cast<double>(c.t1_speed_limit_mm_s)) {
+    return ConfigError::StandstillWindowOutOfRange;
   }
   if (c.command_queue_limit == 0U || c.command_queue_limit > kMaxQueueCapacity) {
     return ConfigError::QueueLimitOutOfRange;
   }
-  for (const double v : c.tool_offset_m) {
+  if (c.fieldbus_expected_working_counter == 0U) {
+    return ConfigError::FieldbusWorkingCounterZero;
+  }
+  if (c.fieldbus_lost_cycles_limit > kMaxFieldbusLostCycles) {
+    return ConfigError::FieldbusToleranceTooLarge;
+  }
+  if (!c.tool_offset_m.has_value()) {
+    return ConfigError::ToolOffsetNotGiven;
+  }
+  for (const double v : *c.tool_offset_m) {
     if (!std::isfinite(v)) {
       return ConfigError::DhTableNotFinite;
     }
@@ -66,6 +110,11 @@ struct Config {
         !std::isfinite(row.theta_offset_rad)) {
       return ConfigError::DhTableNotFinite;
     }
+  }
+  // Checked last: it needs a finite arm and tool. Every joint at the threshold must stay
+  // inside the standstill window at the tool (else C25 and C10 see a moving arm as ZERO).
+  if (!(zero_class_tcp_bound_mm_s(c.dh, *c.tool_offset_m, c.zero_velocity_rad_s) <= c.standstill_speed_window_mm_s)) {
+    return ConfigError::ZeroVelocityAboveWindow;
   }
   return ConfigError::None;
 }

@@ -21,7 +21,9 @@ struct DerivedInputs {
   bool drive_fault{false};
   bool fieldbus_ok{false};       ///< C24: FALSE = fieldbus / cycle watchdog lost
   bool operator_link_ok{false};  ///< C26: FALSE = the operator link's heartbeat expired
-  bool axes_at_rest{false};      ///< C25: every axis Disabled or StandStill at the cycle start
+  /// K39 (ISO 10218-1 5.8.3): the enabling device was in PANIC (either channel) and has
+  /// not been RELEASED (both channels) since; MIDDLE reached from PANIC does not enable.
+  bool enable_release_required{false};
   /// First discrepancy fault in §3 order (E-stop, safeguard, enabling, selector), else None.
   FaultCode discrepancy{FaultCode::None};
 };

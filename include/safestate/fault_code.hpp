@@ -24,9 +24,10 @@ enum class FaultCode : std::uint8_t {
   StopTimeout,
   FieldbusLoss,
   StandstillViolation,
+  ServoReadyLost,  ///< C27: the drives stopped reporting ready with the brakes released
 };
 
-inline constexpr std::size_t kFaultCodeCount = 12;
+inline constexpr std::size_t kFaultCodeCount = 13;
 
 inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::None,
@@ -41,6 +42,7 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::StopTimeout,
     FaultCode::FieldbusLoss,
     FaultCode::StandstillViolation,
+    FaultCode::ServoReadyLost,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.
@@ -58,6 +60,7 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     case FaultCode::StopTimeout: return "STOP_TIMEOUT";
     case FaultCode::FieldbusLoss: return "FIELDBUS_LOSS";
     case FaultCode::StandstillViolation: return "STANDSTILL_VIOLATION";
+    case FaultCode::ServoReadyLost: return "SERVO_READY_LOST";
   }
   return "?";
 }

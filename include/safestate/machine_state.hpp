@@ -45,7 +45,7 @@ struct Stopping {
   OperatingMode session_mode{OperatingMode::None};
   StopCategory category{StopCategory::Cat1};  // CAT1 or CAT2
   std::uint32_t state_cycles{0};
-  ResumeTarget resume_to{ResumeTarget::None};  // set only for CAT2
+  ResumeTarget resume_to{ResumeTarget::None};  // CAT2: Pause / link loss; NONE for a JOG_STOP (C28)
   JogSetpoint jog{};                           // kept only when resume_to = MANUAL_JOGGING
 };
 struct Hold {

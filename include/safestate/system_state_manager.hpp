@@ -12,8 +12,10 @@
 #include "safestate/command_result.hpp"
 #include "safestate/config.hpp"
 #include "safestate/derived_inputs.hpp"
+#include "safestate/drive_status_summary.hpp"
 #include "safestate/dual_channel_input.hpp"
 #include "safestate/enable_position.hpp"
+#include "safestate/fieldbus_watchdog.hpp"
 #include "safestate/fired_rows.hpp"
 #include "safestate/machine_state.hpp"
 #include "safestate/mode_selector.hpp"
@@ -71,6 +73,10 @@ class SystemStateManager {
   [[nodiscard]] ConfigError config_error() const noexcept { return config_error_; }
   [[nodiscard]] const SpeedMonitor& speed_monitor() const noexcept { return speed_; }
   [[nodiscard]] std::size_t queue_length() const noexcept { return queue_.size(); }
+  /// The fieldbus watchdog after the last cycle (§2, C24).
+  [[nodiscard]] const FieldbusWatchdog& fieldbus_watchdog() const noexcept { return fieldbus_; }
+  /// The drives' decoded status words of the last cycle (§2).
+  [[nodiscard]] const DriveStatusSummary& drive_status() const noexcept { return drives_; }
 
  private:
   void derive_inputs(const ScanInputs& in) noexcept;
@@ -86,11 +92,14 @@ class SystemStateManager {
   DualChannelInput<bool> safeguard_;
   DualChannelInput<EnablePosition> enabling_;
   ModeSelector selector_;
+  FieldbusWatchdog fieldbus_;
+  DriveStatusSummary drives_{};
 
   MachineState state_{states::Boot{}};
   DerivedInputs derived_{};
   StopCategory stop_category_{StopCategory::None};
   ResetInterlock reset_{};
+  bool enable_release_required_{false};  ///< K39: PANIC seen since the last RELEASED (both channels)
   CommandResult command_result_{};
   // Written by submit() (producer) and cycle() (consumer): atomic, and a plain value.
   std::atomic<RejectReason> last_reject_reason_{RejectReason::None};

@@ -58,6 +58,9 @@ bool moving_at_standstill(const StepContext&) noexcept;
 bool reset_submitted_before_release(const StepContext&) noexcept;
 bool estop_channels_not_both_tested(const StepContext&) noexcept;
 bool not_idle_at_cycle_start(const StepContext&) noexcept;
+bool servo_not_ready(const StepContext&) noexcept;
+bool stopped_jog_stop(const StepContext&) noexcept;
+bool selector_manual_and_enable_release_required(const StepContext&) noexcept;
 }  // namespace guards
 
 /// Actions: construct the entered state (with its §4 data) or update the current one.
@@ -85,8 +88,10 @@ void enter_arming(StepContext&) noexcept;
 void enter_auto_running(StepContext&) noexcept;
 void resume_motion(StepContext&) noexcept;
 void start_jog(StepContext&) noexcept;
-void stop_jog(StepContext&) noexcept;
 void confirm_t2(StepContext&) noexcept;
+void lockout_servo_ready_lost(StepContext&) noexcept;
+void enter_stopping_cat2_jog_stop(StepContext&) noexcept;
+void enter_manual_idle(StepContext&) noexcept;
 }  // namespace actions
 
 namespace table_dsl {
@@ -140,7 +145,7 @@ struct Effect {
 #define SAFESTATE_ACTION(fn) &::safestate::actions::fn, #fn
 
 // clang-format off
-inline constexpr std::array<TransitionRow, 64> kRows{{
+inline constexpr std::array<TransitionRow, 67> kRows{{
   // ---- §5: one scan cycle, after channel monitoring (§3) ---------------------------------------
   // id     event      source                    guard                                                              effect                                                                       stop        requirements
   row("C01", Ev::Cycle, {St::ErrorLockout},       SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-04, INV-DISCREPANCY"),
@@ -149,21 +154,25 @@ inline constexpr std::array<TransitionRow, 64> kRows{{
   row("C24", Ev::Cycle, any(),                    SAFESTATE_GUARD(fieldbus_lost),                                   enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_fieldbus_loss)),          Stop::Cat0, "RSM-03, seed"),
   row("C04", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(estop_tripped),                                   enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-12"),
   row("C05", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(always),                                          enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Keep, "RSM-12"),
+  // The latching rows before C06: an E-stop in the same cycle keeps the lockout (issue 29 item 7).
+  row("C09", Ev::Cycle, powered(),                SAFESTATE_GUARD(drive_fault),                                     enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_drive_fault)),            Stop::Cat0, "RSM-07, RSM-03"),
+  row("C27", Ev::Cycle, {St::AutoIdle, St::AutoRunning, St::ManualIdle, St::ManualJogging, St::Stopping, St::Hold},
+                                                  SAFESTATE_GUARD(servo_not_ready),                                 enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_servo_ready_lost)),       Stop::Cat0, "RSM-07, RSM-03"),
+  row("C10", Ev::Cycle, powered(),                SAFESTATE_GUARD(t1_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t1_overspeed)),           Stop::Cat0, "RSM-10, INV-T1SPEED"),
+  row("C25", Ev::Cycle, {St::Arming, St::AutoIdle, St::ManualIdle, St::Hold}, SAFESTATE_GUARD(moving_at_standstill), enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_standstill_violation)), Stop::Cat0, "RSM-11, RSM-03"),
   row("C06", Ev::Cycle, any_but({St::EstopActive}), SAFESTATE_GUARD(estop_tripped),                                 enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-05, INV-1OO2"),
   row("C07", Ev::Cycle, {St::EstopActive},        SAFESTATE_GUARD(estop_released),                                  enter({St::EstopResetNeeded}, SAFESTATE_ACTION(enter_estop_reset_needed)),   Stop::Keep, "RSM-05"),
   row("C08", Ev::Cycle, {St::EstopActive},        SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-05"),
-  row("C09", Ev::Cycle, powered(),                SAFESTATE_GUARD(drive_fault),                                     enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_drive_fault)),            Stop::Cat0, "RSM-07, RSM-03"),
-  row("C10", Ev::Cycle, powered(),                SAFESTATE_GUARD(t1_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t1_overspeed)),           Stop::Cat0, "RSM-10, INV-T1SPEED"),
-  row("C25", Ev::Cycle, {St::Arming, St::AutoIdle, St::ManualIdle, St::Hold}, SAFESTATE_GUARD(moving_at_standstill), enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_standstill_violation)), Stop::Cat0, "RSM-11, RSM-03"),
   row("C11", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_panic),                            enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Cat0, "RSM-09, INV-ENABLE, INV-1OO2"),
-  row("C12", Ev::Cycle, powered(),                SAFESTATE_GUARD(selector_differs_from_session_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),             Stop::Cat1, "RSM-02, RSM-11"),
-  row("C13", Ev::Cycle, powered(),                SAFESTATE_GUARD(auto_session_gate_open_unless_cat1_stopping),     enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),                Stop::Cat1, "RSM-08, RSM-11, INV-GATE, INV-1OO2"),
-  row("C14", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_enable_not_middle_unless_cat1_stopping), enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),          Stop::Cat1, "RSM-09, RSM-11, INV-ENABLE, INV-1OO2"),
+  row("C12", Ev::Cycle, powered(),                SAFESTATE_GUARD(selector_differs_from_session_unless_cat1_stopping), enter({St::Stopping, St::Idle}, SAFESTATE_ACTION(enter_stopping_cat1)),             Stop::Cat1, "RSM-02, RSM-11"),
+  row("C13", Ev::Cycle, powered(),                SAFESTATE_GUARD(auto_session_gate_open_unless_cat1_stopping),     enter({St::Stopping, St::Idle}, SAFESTATE_ACTION(enter_stopping_cat1)),                Stop::Cat1, "RSM-08, RSM-11, INV-GATE, INV-1OO2"),
+  row("C14", Ev::Cycle, powered(),                SAFESTATE_GUARD(manual_session_enable_not_middle_unless_cat1_stopping), enter({St::Stopping, St::Idle}, SAFESTATE_ACTION(enter_stopping_cat1)),          Stop::Cat1, "RSM-09, RSM-11, INV-ENABLE, INV-1OO2"),
   row("C26", Ev::Cycle, {St::ManualJogging},      SAFESTATE_GUARD(operator_link_lost),                              enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat2_pause)),          Stop::Cat2, "RSM-13, seed"),
   row("C15", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(servo_ready),                                     enter({St::AutoIdle, St::ManualIdle}, SAFESTATE_ACTION(enter_operational_idle)), Stop::Keep, "RSM-07"),
   row("C16", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(arming_timer_expired),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_arming_timeout)),         Stop::Cat0, "RSM-07"),
   row("C17", Ev::Cycle, {St::Arming},             SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(count_state_cycle)),                                   Stop::Keep, "RSM-07"),
   row("C18", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stopped_cat1),                                    enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Keep, "RSM-11"),
+  row("C28", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stopped_jog_stop),                                enter({St::ManualIdle}, SAFESTATE_ACTION(enter_manual_idle)),                Stop::Keep, "RSM-09, RSM-11"),
   row("C19", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stopped_cat2),                                    enter({St::Hold}, SAFESTATE_ACTION(enter_hold)),                             Stop::Keep, "RSM-11"),
   row("C20", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stop_timer_expired),                              enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_stop_timeout)),           Stop::Cat0, "RSM-11"),
   row("C21", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(count_state_cycle)),                                   Stop::Keep, "RSM-11"),
@@ -184,11 +193,12 @@ inline constexpr std::array<TransitionRow, 64> kRows{{
   row("K08", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_invalid),                                reject(Why::SelectorInvalid),                                                Stop::Keep, "RSM-06"),
   row("K09", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_auto_and_gate_open),                     reject(Why::SafeguardOpen),                                                  Stop::Keep, "RSM-06"),
   row("K10", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_manual_and_enable_not_middle),           reject(Why::EnableNotMiddle),                                                Stop::Keep, "RSM-06"),
+  row("K39", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_manual_and_enable_release_required),     reject(Why::EnableNotMiddle),                                                Stop::Keep, "RSM-06, RSM-09"),
   row("K11", Ev::ServoOn,   any(),                SAFESTATE_GUARD(selector_t2_and_not_confirmed),                   reject(Why::T2NotConfirmed),                                                 Stop::Keep, "RSM-06"),
   row("K12", Ev::ServoOn,   any(),                SAFESTATE_GUARD(always),                                          enter({St::Arming}, SAFESTATE_ACTION(enter_arming)),                         Stop::Clear, "RSM-06, RSM-07"),
   row("K13", Ev::ServoOff,  any_but({St::Arming, St::AutoIdle, St::AutoRunning, St::ManualIdle, St::ManualJogging, St::Hold}),
                                                   SAFESTATE_GUARD(always),                                          reject(Why::WrongState),                                                     Stop::Keep, "RSM-13"),
-  row("K14", Ev::ServoOff,  any(),                SAFESTATE_GUARD(always),                                          enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat1)),                Stop::Cat1, "RSM-11"),
+  row("K14", Ev::ServoOff,  any(),                SAFESTATE_GUARD(always),                                          enter({St::Stopping, St::Idle}, SAFESTATE_ACTION(enter_stopping_cat1)),      Stop::Cat1, "RSM-11"),
   row("K15", Ev::Start,     {St::ManualIdle, St::ManualJogging}, SAFESTATE_GUARD(always),                           reject(Why::WrongMode),                                                      Stop::Keep, "RSM-08"),
   row("K16", Ev::Start,     any_but({St::AutoIdle}), SAFESTATE_GUARD(always),                                       reject(Why::WrongState),                                                     Stop::Keep, "RSM-08"),
   row("K17", Ev::Start,     any(),                SAFESTATE_GUARD(gate_open),                                       reject(Why::SafeguardOpen),                                                  Stop::Keep, "RSM-08, INV-GATE"),
@@ -206,7 +216,7 @@ inline constexpr std::array<TransitionRow, 64> kRows{{
   row("K29", Ev::JogStart,  any(),                SAFESTATE_GUARD(always),                                          enter({St::ManualJogging}, SAFESTATE_ACTION(start_jog)),                     Stop::Keep, "RSM-09, RSM-10, INV-T1SPEED"),
   row("K30", Ev::JogStop,   any(),                SAFESTATE_GUARD(in_auto),                                         reject(Why::JogInAuto),                                                      Stop::Keep, "RSM-08"),
   row("K31", Ev::JogStop,   any_but({St::ManualJogging}), SAFESTATE_GUARD(always),                                  reject(Why::WrongState),                                                     Stop::Keep, "RSM-09"),
-  row("K32", Ev::JogStop,   any(),                SAFESTATE_GUARD(always),                                          enter({St::ManualIdle}, SAFESTATE_ACTION(stop_jog)),                         Stop::Keep, "RSM-09"),
+  row("K32", Ev::JogStop,   any(),                SAFESTATE_GUARD(always),                                          enter({St::Stopping}, SAFESTATE_ACTION(enter_stopping_cat2_jog_stop)),       Stop::Cat2, "RSM-09, RSM-11"),
   row("K33", Ev::T2Confirm, any_but({St::Idle}),  SAFESTATE_GUARD(always),                                          reject(Why::WrongState),                                                     Stop::Keep, "RSM-06"),
   row("K34", Ev::T2Confirm, any(),                SAFESTATE_GUARD(selector_not_t2),                                 reject(Why::WrongMode),                                                      Stop::Keep, "RSM-06"),
   row("K35", Ev::T2Confirm, any(),                SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(confirm_t2)),                                          Stop::Keep, "RSM-06"),
@@ -219,9 +229,9 @@ inline constexpr std::array<TransitionRow, 64> kRows{{
 }  // namespace table_dsl
 
 /// The table, §5 rows then §6 rows.
-inline constexpr const std::array<TransitionRow, 64>& kTransitionTable = table_dsl::kRows;
-inline constexpr std::size_t kCycleRowCount = 26;    // C01..C26
-inline constexpr std::size_t kCommandRowCount = 38;  // K01..K38
+inline constexpr const std::array<TransitionRow, 67>& kTransitionTable = table_dsl::kRows;
+inline constexpr std::size_t kCycleRowCount = 28;    // C01..C28
+inline constexpr std::size_t kCommandRowCount = 39;  // K01..K39
 
 // ---- Compile-time audit of the table ---------------------------------------------------------
 
@@ -233,7 +243,7 @@ namespace table_check {
 }
 
 /// C rows then K rows, each id Cnn / Knn within its section's count (rows added by a later
-/// change take the next free number and sit where first-match needs them: C24-C26, K36-K38).
+/// change take the next free number and sit where first-match needs them: C24-C28, K36-K39).
 [[nodiscard]] constexpr bool ids_in_order() noexcept {
   for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
     const bool cycle = i < kCycleRowCount;
@@ -310,8 +320,8 @@ namespace table_check {
 
 }  // namespace table_check
 
-static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "64 rows: C01-C26, K01-K38");
-static_assert(table_check::ids_in_order(), "row ids must be C01..C26 then K01..K38");
+static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "67 rows: C01-C28, K01-K39");
+static_assert(table_check::ids_in_order(), "row ids must be C01..C28 then K01..K39");
 static_assert(table_check::ids_unique(), "row ids must be unique");
 static_assert(table_check::events_match_sections(), "C rows are cycle rows, K rows command rows");
 static_assert(table_check::effects_well_formed(), "every reject row needs a reason; effects must be well formed");

@@ -25,6 +25,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "evidence": ("safestate.evidence.cli", "build (or --verify) the certification evidence package"),
     "demo": ("safestate.demo_cli", "run a system's C++ demo scenario (saf: Safety service over UDP)"),
     "panel": ("safestate.panel.cli", "the operator panel: cell simulator + C++ core + web bridge, prints the URL"),
+    "saf": ("safestate.saf_service.cli", "the Safety service as processes: serve, client and subsystem simulators"),
 }
 
 DESCRIPTION = """\

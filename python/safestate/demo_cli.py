@@ -2,7 +2,9 @@
 
 `saf`: the Safety service over UDP on the loopback interface against its simulated peers
 (build/cpp/src/saf/saf_demo). `protection`: the fan controller closed around its thermal
-plant (build/cpp/src/pro/pro_demo). `ssm`: the SystemStateManager scenario (build/cpp/safestate_demo).
+plant (build/cpp/src/pro/pro_demo), its communications slot the Modbus server, with the
+operator a Modbus client in another process (python -m safestate.pro_operator, pymodbus)
+started once the server listens. `ssm`: the SystemStateManager scenario (build/cpp/safestate_demo).
 `press`: the hydraulic press accident, flat reference and chain press side by side
 (through the binding safestate._press; python/safestate/press_demo.py).
 """
@@ -46,5 +48,44 @@ def run(args: argparse.Namespace) -> int:
         print(f"safestate demo: {exe} does not exist; build the C++ tree first "
               "(bash scripts/setup.sh)", file=sys.stderr)
         return 2
+    if args.system == "protection":
+        return run_protection(exe)
     extra = ["--realtime"] if args.realtime and args.system == "saf" else []
     return subprocess.run([str(exe), *extra], check=False).returncode
+
+
+LISTENING = "modbus server listening on 127.0.0.1:"
+
+
+def run_protection(exe: Path) -> int:
+    """pro_demo, and the operator client once its Modbus server listens; pro_demo's exit code."""
+    try:
+        import pymodbus  # noqa: F401
+    except ImportError:
+        print("safestate demo protection: the operator client needs pymodbus (pip install pymodbus)",
+              file=sys.stderr)
+        return 2
+    demo = subprocess.Popen([str(exe)], stdout=subprocess.PIPE, text=True, bufsize=1)
+    operator: subprocess.Popen[bytes] | None = None
+    try:
+        assert demo.stdout is not None
+        for line in demo.stdout:
+            sys.stdout.write(line)
+            sys.stdout.flush()
+            if operator is None and line.startswith(LISTENING):
+                port = line[len(LISTENING):].strip()
+                operator = subprocess.Popen([sys.executable, "-m", "safestate.pro_operator", "--port", port],
+                                            env={**os.environ, "PYTHONPATH": os.pathsep.join(
+                                                [str(REPO / "python"), os.environ.get("PYTHONPATH", "")])})
+        code = demo.wait()
+    finally:
+        if demo.poll() is None:
+            demo.kill()
+            demo.wait()
+        if operator is not None:
+            try:
+                operator.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                operator.kill()
+                operator.wait()
+    return code

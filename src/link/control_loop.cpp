@@ -35,7 +35,7 @@ void apply_switches(sim::CellPlant& plant, const PlantSwitches& s) noexcept {
   in.safeguard_closed = {!s.gate_open, !s.gate_open};
   plant.enabling(s.enabling);
   plant.select(s.selector);
-  in.drive_fault = s.drive_fault;
+  plant.bus_levels().drive_fault = s.drive_fault;
 }
 
 }  // namespace
@@ -46,6 +46,7 @@ void ControlLoop::run_one_cycle() noexcept {
   const bool link_ok = heartbeat_.sample();
   plant_.inputs().operator_link_ok = link_ok;
   const StateId before = manager_.state();
+  plant_.inputs().bus = sim::bus_image(manager_.fieldbus_watchdog(), plant_.bus_levels());
   const ScanOutputs out = manager_.cycle(plant_.inputs());
   plant_.react(out, manager_.state(), jog(manager_.machine_state()));
 

@@ -103,9 +103,15 @@ TickReport ProtectionRuntime::tick(const ControllerInputs& in) noexcept {
   data_.supervisor = step.state;
 
   // 3. The dispatch cycle, fixed order, READY units as reported at the start of the tick.
-  const bool dispatcher_up = sin.status[index(UnitId::dispatcher)] == UnitStatus::ready;
+  // Fail-safe defaults first: the snapshot mailbox is emptied (a safety unit that runs
+  // without monitoring having run before it evaluates an invalid sensor, never an older
+  // reading) and the output gate is closed (only ao_safety, on this tick's snapshot,
+  // opens it); a tick in which safety does not run leaves the outputs safe.
+  data_.snapshot = SensorSnapshot{};
+  data_.fan_output = kSafeFanCommandPercent;
+  data_.load_enable = false;
   report.dispatched = dispatch_cycle(
-      dispatcher_up ? step.mode : DispatchMode::none,
+      dispatch_gate(step.mode, sin.status[index(UnitId::dispatcher)]),
       [&sin](AoId a) { return sin.status[index(unit_of(a))] == UnitStatus::ready; },
       [this](AoId a) {
         ActiveObject& target = ao(a);
@@ -120,11 +126,11 @@ TickReport ProtectionRuntime::tick(const ControllerInputs& in) noexcept {
   report.row = step.row;
   report.state = step.state;
   report.snapshot = data_.snapshot;
-  for (std::size_t i = 0; i < report.dispatched.count; ++i) {
-    if (report.dispatched.order[i] == AoId::safety) report.safety_ran = true;
-  }
+  report.safety_input = safety_input_of(report.dispatched);
+  report.safety_ran = report.safety_input != SafetyInput::none;
   report.safety_result = data_.safety_result;
   report.fan_output = data_.fan_output;
+  report.load_enable = data_.load_enable;
   report.stop_step = supervisor_.stop_step();
   return report;
 }

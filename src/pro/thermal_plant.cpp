@@ -13,10 +13,12 @@ ControllerInputs ThermalPlant::inputs() const noexcept {
   return in;
 }
 
-void ThermalPlant::step(std::uint8_t fan_command_percent) noexcept {
+void ThermalPlant::step(std::uint8_t fan_command_percent, bool load_enable) noexcept {
   fan_percent_ = driver_fault() ? 0.0 : static_cast<double>(fan_command_percent);
+  load_on_ = load_enable;
+  const double heat = load_enable ? heat_w_ : 0.0;
   const double g = p_.g_still_w_per_k + p_.g_fan_w_per_k * fan_percent_ / 100.0;
-  temperature_c_ += p_.tick_s * (heat_w_ - g * (temperature_c_ - p_.ambient_c)) / p_.heat_capacity_j_per_k;
+  temperature_c_ += p_.tick_s * (heat - g * (temperature_c_ - p_.ambient_c)) / p_.heat_capacity_j_per_k;
   if (!stuck_) ++sequence_;
 }
 

@@ -12,6 +12,8 @@ void MonitoringAo::on_event(const AoEvent& e) noexcept {
   if (handle_start_stop(e)) return;
   if (e.signal != AoSignal::tick) return;
   data_.snapshot = validator_.snapshot(data_.sample);
+  // ao_safety_event.hazard_detected: the fan driver's fault line of this tick (§2).
+  data_.snapshot.hazard_detected = data_.driver_fault;
   if (data_.clear_pending) {
     // A remote clear is a non-critical request: only in RUN (§8).
     if (data_.supervisor == SupervisorState::run) {
@@ -42,6 +44,8 @@ void ControlAo::on_event(const AoEvent& e) noexcept {
       outputs_safe_ = true;
       data_.control_command = kSafeFanCommandPercent;
       data_.fan_output = kSafeFanCommandPercent;
+      data_.load_enable = false;
+      data_.outputs_held_safe = true;
       break;
     case AoSignal::degraded: ++degraded_; break;
     default: break;
@@ -54,10 +58,16 @@ void SafetyAo::publish(const AoEvent& e) noexcept {
 
 void SafetyAo::on_event(const AoEvent& e) noexcept {
   if (handle_start_stop(e)) return;
+  if (e.signal == AoSignal::degraded || e.signal == AoSignal::recovery) {
+    safety_.set_degraded(e.signal == AoSignal::degraded);
+    return;
+  }
   if (e.signal != AoSignal::tick) return;
   const SensorSnapshot& snap = data_.snapshot;
   data_.safety_result = safety_.dispatch(snap, e.tick);
   data_.fan_output = safety_.fan_output(data_.control_command);
+  // After shutdown step 1 control holds the outputs safe; the permissive stays off.
+  data_.load_enable = safety_.load_enable() && !data_.outputs_held_safe;
   if (snap.clear_request) {
     data_.last_clear =
         data_.safety_result == SafetyResult::latch_blocked ? ClearOutcome::denied : ClearOutcome::accepted;

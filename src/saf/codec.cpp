@@ -26,14 +26,38 @@ DecodeResult reject(DecodeError e) noexcept {
   return r;
 }
 
+/// Set Estop has the seed's size and the two of the extension (design §14); every other
+/// type exactly its spec's.
+bool payload_size_valid(MessageId id, std::uint16_t length) noexcept {
+  if (id == MessageId::SetEstop) {
+    return length == kEstopSeedPayload || length == kEstopSequencedPayload || length == kEstopAuthenticatedPayload;
+  }
+  return length == spec_of(id).payload_size;
+}
+
+std::uint16_t payload_size_of(const Message& m) noexcept {
+  if (m.id != MessageId::SetEstop) return spec_of(m.id).payload_size;
+  switch (m.estop_form) {
+    case EstopForm::Seed: return kEstopSeedPayload;
+    case EstopForm::Sequenced: return kEstopSequencedPayload;
+    case EstopForm::Authenticated: return kEstopAuthenticatedPayload;
+  }
+  return kEstopSeedPayload;
+}
+
 /// The payload's fields, range-checked.
-DecodeResult decode_payload(MessageId id, const std::uint8_t* p) noexcept {
+DecodeResult decode_payload(MessageId id, const std::uint8_t* p, std::uint16_t length) noexcept {
   DecodeResult r{};
   r.message.id = id;
   switch (id) {
     case MessageId::SetEstop:
       if (p[0] > 1) return reject(DecodeError::FieldRange);
       r.message.emergency = p[0] == 1;
+      if (length >= kEstopSequencedPayload) {
+        r.message.estop_form = length == kEstopSequencedPayload ? EstopForm::Sequenced : EstopForm::Authenticated;
+        r.message.component_id = read_u32(p + 1);
+        r.message.sequence = read_u64(p + 5);
+      }
       break;
     case MessageId::ReportHealthSummary:
       if (p[0] > kHealthMax) return reject(DecodeError::FieldRange);
@@ -74,19 +98,25 @@ DecodeResult decode(const std::uint8_t* data, std::size_t size) noexcept {
   if (size > kHeaderSize + length) return reject(DecodeError::TrailingBytes);
   const auto spec = find_spec(read_u64(data));
   if (!spec) return reject(DecodeError::UnknownId);
-  if (length != spec->payload_size) return reject(DecodeError::BadLength);
-  return decode_payload(spec->id, data + kHeaderSize);
+  if (!payload_size_valid(spec->id, length)) return reject(DecodeError::BadLength);
+  return decode_payload(spec->id, data + kHeaderSize, length);
 }
 
 Encoded encode(const Message& m) noexcept {
   Encoded e{};
-  const MessageSpec spec = spec_of(m.id);
+  const std::uint16_t payload_size = payload_size_of(m);
   std::uint8_t* p = e.bytes.data();
   write_le(p, static_cast<std::uint64_t>(m.id), 8);
-  write_le(p + 8, spec.payload_size, 2);
+  write_le(p + 8, payload_size, 2);
   std::uint8_t* q = p + kHeaderSize;
   switch (m.id) {
-    case MessageId::SetEstop: q[0] = m.emergency ? 1 : 0; break;
+    case MessageId::SetEstop:
+      q[0] = m.emergency ? 1 : 0;
+      if (m.estop_form != EstopForm::Seed) {
+        write_le(q + 1, m.component_id, 4);
+        write_le(q + 5, m.sequence, 8);  // an Authenticated form's MAC: estop_extension.cpp
+      }
+      break;
     case MessageId::ReportHealthSummary: q[0] = static_cast<std::uint8_t>(m.health); break;
     case MessageId::ConfirmControl: q[0] = static_cast<std::uint8_t>(m.response); break;
     case MessageId::ReportControl:
@@ -103,7 +133,7 @@ Encoded encode(const Message& m) noexcept {
     case MessageId::QueryHealthSummary:
     case MessageId::QueryControl: break;
   }
-  e.size = kHeaderSize + spec.payload_size;
+  e.size = kHeaderSize + payload_size;
   return e;
 }
 

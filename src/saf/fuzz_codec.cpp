@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// libFuzzer target for the Safety service codec and intake (SAF-03): any byte string is
-// decoded; a rejected datagram must not change the service; an accepted one must encode
-// back to the same bytes. Built with clang -fsanitize=fuzzer,address,undefined by
-// bench/saf_fuzz.sh.
+// libFuzzer target for the Safety service codec and intake (SAF-03, design §14): any byte
+// string is decoded; a rejected datagram must not change the service; an accepted one must
+// encode back to the same bytes (an authenticated Set Estop up to its MAC); the deployed
+// intake judges it from the client's and from another source without crashing, and
+// accepts nothing from another source. Built with clang -fsanitize=fuzzer,address,undefined
+// by bench/saf_fuzz.sh.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 
+#include "safestate/saf/intake.hpp"
 #include "safestate/saf/safety_service.hpp"
 
 using namespace safestate::saf;
@@ -16,7 +19,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const DecodeResult r = decode(data, size);
   if (r.ok()) {
     const Encoded e = encode(r.message);
-    if (e.size != size || std::memcmp(e.bytes.data(), data, size) != 0) std::abort();  // round trip
+    // The codec does not compute the MAC (estop_extension.cpp does): compare up to it.
+    const bool mac = r.message.id == MessageId::SetEstop && r.message.estop_form == EstopForm::Authenticated;
+    const std::size_t compared = mac ? kEstopMacCovered : size;
+    if (e.size != size || std::memcmp(e.bytes.data(), data, compared) != 0) std::abort();  // round trip
+  }
+  {
+    IntakeConfig c{};
+    c.client = Peer{kLoopback, 4000};
+    c.client_component_id = 0x0001'0300;
+    c.subsystem = Peer{kLoopback, 4001};
+    c.key.size = 32;
+    Intake intake{c};
+    Datagram d{};
+    d.size = size;
+    if (size > 0) std::memcpy(d.bytes.data(), data, size < d.bytes.size() ? size : d.bytes.size());
+    (void)intake.judge(d, Source{c.client, SocketRole::Client}, size > 0 && data[0] == 0x01);
+    (void)intake.judge(d, Source{c.subsystem, SocketRole::Subsystem}, false);
+    const IntakeRejection other = intake.judge(d, Source{Peer{kLoopback, 4002}, SocketRole::Client}, false);
+    if (other.reason == IntakeReason::None) std::abort();  // nothing is accepted from an unconfigured source
   }
   // Through the service: the datagram alone, then split into up to 16 datagrams.
   static constexpr Timing kTiming{2, 3, 2, 3};

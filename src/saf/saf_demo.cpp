@@ -40,6 +40,12 @@ class Rig {
     subsystem_.step();
     InboundBatch batch{};
     ep_.receive_batch(batch);
+    // The demo's endpoint binds no senders: each datagram counts as from the peer of its kind.
+    for (std::size_t i = 0; i < batch.count; ++i) {
+      Datagram& d = batch.items[i];
+      const DecodeResult m = decode(d.bytes.data(), d.size);
+      d.from = m.ok() && m.message.id == MessageId::SetEstop ? Sender::Client : Sender::Subsystem;
+    }
     const CycleResult r = svc_.cycle(batch, hw_);
     for (std::size_t i = 0; i < r.outbox.count; ++i) (void)ep_.send_to(subsystem_.port(), encode(r.outbox.messages[i]));
     subsystem_.step();  // the subsystem applies Set Subsystem State in the same cycle

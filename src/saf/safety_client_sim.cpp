@@ -7,8 +7,11 @@ namespace safestate::saf {
 
 void SafetyClientSim::step(std::uint16_t service_port) noexcept {
   switch (mode_) {
-    case ClientMode::Clear: (void)ep_.send_to(service_port, encode(Message::set_estop(false))); break;
-    case ClientMode::Emergency: (void)ep_.send_to(service_port, encode(Message::set_estop(true))); break;
+    case ClientMode::Clear:
+    case ClientMode::Emergency:
+      last_ = encode_set_estop(mode_ == ClientMode::Emergency, component_id_, sequence_++, key_);
+      (void)ep_.send_to(service_port, last_);
+      break;
     case ClientMode::Silent: break;
     case ClientMode::Garbage: {
       // A Set Estop header with a corrupted payload, then random bytes of random length.

@@ -22,6 +22,9 @@ HealthView view_of(Health h) noexcept {
 
 bool raises_emergency(SafState s) noexcept { return s != SafState::Operational; }
 
+/// The peer a message of this kind must come from (design §5).
+Sender peer_of(MessageId id) noexcept { return id == MessageId::SetEstop ? Sender::Client : Sender::Subsystem; }
+
 }  // namespace
 
 SafetyService::SafetyService(const Config& config, std::uint32_t component_id) noexcept
@@ -30,6 +33,7 @@ SafetyService::SafetyService(const Config& config, std::uint32_t component_id) n
       component_id_(component_id),
       config_error_(config.validate()) {
   if (config_error_ != ConfigError::None) obs_.state = SafState::Fault;
+  obs_.set_age = timing_.message_interval;
 }
 
 namespace {
@@ -48,10 +52,11 @@ SafetyService::SafetyService(const Timing& timing, std::uint8_t authority_code, 
       component_id_(component_id),
       config_error_(check(timing)) {
   if (config_error_ != ConfigError::None) obs_.state = SafState::Fault;
+  obs_.set_age = timing_.message_interval;
 }
 
 bool SafetyService::estop_timed_out() const noexcept {
-  return obs_.estop != EstopView::None && obs_.estop_age > timing_.estop_timeout;
+  return obs_.estop != EstopView::None && obs_.estop_age >= timing_.estop_timeout;
 }
 
 bool SafetyService::health_bad() const noexcept {
@@ -59,14 +64,19 @@ bool SafetyService::health_bad() const noexcept {
          obs_.health_age > timing_.report_data_timeout;
 }
 
+bool SafetyService::health_known_good() const noexcept {
+  return (obs_.health == HealthView::Normal || obs_.health == HealthView::Warning) &&
+         obs_.health_age <= timing_.report_data_timeout;
+}
+
 bool SafetyService::danger() const noexcept {
   return obs_.estop == EstopView::Set || estop_timed_out() || health_bad();
 }
 
-ControlEvent SafetyService::intake(const InboundBatch& inbound) noexcept {
+SafetyService::Intake SafetyService::intake(const InboundBatch& inbound) noexcept {
   bool estop_seen = false;
   bool health_seen = false;
-  ControlEvent ev = ControlEvent::None;
+  Intake in{};
   for (std::size_t i = 0; i < inbound.count && i < inbound.items.size(); ++i) {
     const Datagram& d = inbound.items[i];
     const DecodeResult r = decode(d.bytes.data(), d.size);
@@ -76,8 +86,18 @@ ControlEvent SafetyService::intake(const InboundBatch& inbound) noexcept {
       ++diag_.rejected[static_cast<std::size_t>(error)];
       continue;
     }
-    ++diag_.accepted;
     const Message& m = r.message;
+    // Sender binding and freshness (design §5): only the peer of the message's kind, and
+    // only inside the replay window; anything else changes nothing but a counter.
+    if (d.from != peer_of(m.id)) {
+      ++diag_.rejected_source;
+      continue;
+    }
+    if (!d.fresh) {
+      ++diag_.rejected_stale;
+      continue;
+    }
+    ++diag_.accepted;
     switch (m.id) {
       case MessageId::SetEstop:
         obs_.estop = m.emergency ? EstopView::Set : EstopView::Clear;
@@ -88,32 +108,42 @@ ControlEvent SafetyService::intake(const InboundBatch& inbound) noexcept {
         health_seen = true;
         break;
       case MessageId::ConfirmControl:
-        ev = m.response == ControlResponse::Accepted ? ControlEvent::Accepted : ControlEvent::Refused;
+        in.event = m.response == ControlResponse::Accepted ? ControlEvent::Accepted : ControlEvent::Refused;
         break;
       case MessageId::ReportControl:
-        ev = m.component_id == component_id_ ? ControlEvent::Accepted : ControlEvent::Other;
+        if (m.component_id != component_id_) {
+          in.event = ControlEvent::Other;
+        } else if (m.authority == authority_) {
+          in.event = ControlEvent::Us;
+        } else {
+          ++diag_.inconsistent_report;  // names us with an authority we never asked with
+        }
         break;
       case MessageId::ReportSubsystemState:
         diag_.subsystem_state_known = true;
         diag_.subsystem_state = m.subsystem_state;
-        resend_emergency_ = m.subsystem_state != SubsystemState::Emergency;
+        in.subsystem_not_emergency = m.subsystem_state != SubsystemState::Emergency;
         break;
       default: break;  // outgoing types were rejected above
     }
   }
-  obs_.estop_age = estop_seen ? 0 : saturating_inc(obs_.estop_age, timing_.estop_timeout + 1);
+  obs_.estop_age = estop_seen ? 0 : saturating_inc(obs_.estop_age, timing_.estop_timeout);
   obs_.health_age = health_seen ? 0 : saturating_inc(obs_.health_age, timing_.report_data_timeout + 1);
-  return ev;
+  obs_.set_age = saturating_inc(obs_.set_age, timing_.message_interval);
+  return in;
 }
 
 bool SafetyService::state_guard(StateGuard g, bool hardware_fault) const noexcept {
   switch (g) {
     case StateGuard::True: return true;
     case StateGuard::HardwareFault: return hardware_fault;
-    case StateGuard::PairedAndSafe: return obs_.estop != EstopView::None && !danger();
+    case StateGuard::PairedAndSafe: return obs_.estop != EstopView::None && !danger() && health_known_good();
     case StateGuard::Danger: return danger();
     case StateGuard::EstopTimedOut: return estop_timed_out();
-    case StateGuard::ClearAndSafe: return obs_.estop == EstopView::Clear && !danger();
+    case StateGuard::ClearSafeAndTold:
+      // D waits until the subsystem was told EMERGENCY (control held) or the contest is lost.
+      return obs_.estop == EstopView::Clear && !danger() && health_known_good() &&
+             (obs_.control == ControlStatus::Held || obs_.control == ControlStatus::Refused);
   }
   return false;
 }
@@ -121,13 +151,14 @@ bool SafetyService::state_guard(StateGuard g, bool hardware_fault) const noexcep
 bool SafetyService::control_guard(ControlGuard g, ControlEvent ev) const noexcept {
   switch (g) {
     case ControlGuard::True: return true;
-    case ControlGuard::EventAccepted: return ev == ControlEvent::Accepted;
+    case ControlGuard::Granted:
+      return ev == ControlEvent::Us || (ev == ControlEvent::Accepted && obs_.control == ControlStatus::Requested);
     case ControlGuard::EventRefused: return ev == ControlEvent::Refused;
+    case ControlGuard::EventUs: return ev == ControlEvent::Us;
     case ControlGuard::EventOther: return ev == ControlEvent::Other;
     case ControlGuard::AgeReportDataTimeout: return obs_.control_age >= timing_.report_data_timeout;
     case ControlGuard::AgeMessageInterval: return obs_.control_age >= timing_.message_interval;
-    case ControlGuard::EventAcceptedNoRelease:
-      return ev == ControlEvent::Accepted && obs_.out_request == OutRequest::None;
+    case ControlGuard::EventUsNoRelease: return ev == ControlEvent::Us && obs_.out_request == OutRequest::None;
   }
   return false;
 }
@@ -143,6 +174,7 @@ void SafetyService::apply(StateEffect e) noexcept {
       obs_.out_request = OutRequest::Release;
       obs_.control = ControlStatus::Released;
       obs_.control_age = 0;
+      obs_.alarm = false;
       break;
   }
 }
@@ -154,14 +186,23 @@ void SafetyService::apply(ControlEffect e) noexcept {
       obs_.control = ControlStatus::Requested;
       obs_.control_age = 0;
       break;
+    case ControlEffect::RequestAlarm:
+      apply(ControlEffect::Request);
+      obs_.alarm = true;
+      ++diag_.alarms;
+      break;
     case ControlEffect::Grant:
       obs_.control = ControlStatus::Held;
       obs_.control_age = 0;
       obs_.out_set_state = OutSetState::Emergency;
+      obs_.set_age = 0;
+      obs_.alarm = false;
       break;
     case ControlEffect::Refuse:
       obs_.control = ControlStatus::Refused;
       obs_.control_age = 0;
+      obs_.alarm = true;
+      ++diag_.alarms;
       break;
     case ControlEffect::Refresh: obs_.control_age = 0; break;
     case ControlEffect::ReleaseAgain: obs_.out_request = OutRequest::Release; break;
@@ -178,12 +219,36 @@ void SafetyService::add(Outbox& out, const Message& m) const noexcept {
   if (out.count < out.messages.size()) out.messages[out.count++] = m;
 }
 
+void SafetyService::resend_step(bool subsystem_not_emergency) noexcept {
+  // Design §7: a Report Subsystem State other than EMERGENCY while we hold control makes a
+  // re-send due; it waits for MESSAGEINTERVAL since the last Set Subsystem State(EMERGENCY)
+  // (deferred, never dropped). Without control nothing is due and the interval is over.
+  if (!raises_emergency(obs_.state) || obs_.control != ControlStatus::Held) {
+    obs_.resend = false;
+    obs_.set_age = timing_.message_interval;
+    if (!raises_emergency(obs_.state)) obs_.alarm = false;
+    return;
+  }
+  if (obs_.out_set_state == OutSetState::Emergency || !(obs_.resend || subsystem_not_emergency)) {
+    obs_.resend = false;
+    return;
+  }
+  if (obs_.set_age >= timing_.message_interval) {
+    obs_.out_set_state = OutSetState::Emergency;
+    obs_.set_age = 0;
+    obs_.resend = false;
+  } else {
+    obs_.resend = true;
+  }
+}
+
 CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_fault) noexcept {
   CycleResult result{};
   obs_.out_request = OutRequest::None;
   obs_.out_set_state = OutSetState::None;
-  resend_emergency_ = false;
-  const ControlEvent ev = intake(inbound);
+  const ControlStatus control_before = obs_.control;
+  const Intake in = intake(inbound);
+  const ControlEvent ev = in.event;
 
   for (const StateRow& row : kStateRows) {
     if ((row.source & bit(obs_.state)) == 0 || !state_guard(row.guard, hardware_fault)) continue;
@@ -200,14 +265,11 @@ CycleResult SafetyService::cycle(const InboundBatch& inbound, bool hardware_faul
     apply(row.effect);
     break;
   }
-  if (raises_emergency(obs_.state)) {
-    // C++ only (design §7): someone changed the subsystem state behind our back.
-    const std::uint64_t since = diag_.cycles - diag_.last_set_emergency_cycle;
-    if (resend_emergency_ && obs_.control == ControlStatus::Held && obs_.out_set_state == OutSetState::None &&
-        since >= timing_.message_interval) {
-      obs_.out_set_state = OutSetState::Emergency;
-    }
+  // A Confirm Control answers our pending Request Control; any other is ignored and counted.
+  if ((ev == ControlEvent::Accepted || ev == ControlEvent::Refused) && control_before != ControlStatus::Requested) {
+    ++diag_.unsolicited_confirm;
   }
+  resend_step(in.subsystem_not_emergency);
 
   Outbox& out = result.outbox;
   // Set Subsystem State first: setting OPERATIONAL needs the control the release gives up.

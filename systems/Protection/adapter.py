@@ -2,9 +2,12 @@
 C++ `safestate._pro.Protection` (ao_safety with sm_protection as an active object, its
 output gate and ao_diagnostics, run in dispatch order once per tick; design §4, §11).
 
-* Tick(t, v, ok, clr): one `tick(temp, volt, valid, clear)`; the C++ reports the row of
-  sm_protection that fired (compared with `RowsFiredBy`).
-* Projection: the seven outputs of the tick; the snapshot (inputs) and the history
+* Tick(t, v, ok, clr, hz, lc): one `tick(temp, volt, valid, clear, hazard_detected,
+  lifecycle)`: the lifecycle event (EVT_DEGRADED / EVT_RECOVERY) is delivered to ao_safety
+  before the tick's snapshot; the C++ reports the row of sm_protection that fired
+  (compared with `RowsFiredBy`).
+* Projection: the nine outputs of the tick (with `load_enable`, the equipment permissive,
+  and `degraded`, ao_safety's degraded mode); the snapshot (inputs) and the history
   (`was_protection`, `hazard_ticks`) are not C++ state.  `fan_cmd` is read off the fan
   command the gate wrote: SAFE when it is the safe value, the control command (40 %)
   otherwise.
@@ -41,9 +44,10 @@ class Chain:
 
 
 class ProtectionAdapter(Adapter):
-    observed_variables = ("protection_state", "latch_active", "override_active", "fan_cmd", "result",
-                          "published", "fault_event")
-    hidden_variables = ("temp", "volt", "valid", "clear", "was_protection", "hazard_ticks")
+    observed_variables = ("protection_state", "latch_active", "override_active", "fan_cmd", "load_enable",
+                          "result", "published", "fault_event", "degraded")
+    hidden_variables = ("temp", "volt", "valid", "clear", "hazard_in", "lifecycle", "was_protection",
+                        "hazard_ticks")
     config_constants = {"TempLimit": "temp_limit", "VoltMin": "volt_min", "VoltMax": "volt_max"}
     rows_operator = "RowsFiredBy"
 
@@ -57,20 +61,21 @@ class ProtectionAdapter(Adapter):
     def new_sut(self) -> Chain:
         return Chain(self.core.Protection(**{self.config_constants[k]: v for k, v in self.constants.items()}))
 
-    def hazard(self, t: int, v: int, ok: bool) -> bool:
+    def hazard(self, t: int, v: int, ok: bool, hz: bool) -> bool:
         """PRO-01's hazard, from the requirement's limits (not from the C++)."""
         c = self.constants
-        return t > c["TempLimit"] or v < c["VoltMin"] or v > c["VoltMax"] or not ok
+        return t > c["TempLimit"] or v < c["VoltMin"] or v > c["VoltMax"] or not ok or hz
 
-    def tick(self, sut: Chain, t: int, v: int, ok: bool, clr: bool) -> str:
-        row: str = sut.cpp.tick(t, v, ok, clr)
-        if not self.hazard(t, v, ok):
+    def tick(self, sut: Chain, t: int, v: int, ok: bool, clr: bool, hz: bool, lc: str) -> str:
+        row: str = sut.cpp.tick(t, v, ok, clr, hz, lc)
+        if not self.hazard(t, v, ok, hz):
             sut.hazard_ticks, sut.responded = 0, False
             return row
         sut.hazard_ticks += 1
         if not sut.responded:
             o = sut.cpp.observe()
-            if o["protection_state"] == "PROTECTION" and o["fan_cmd"] == "SAFE" and o["published"] == "PROTECTION":
+            if (o["protection_state"] == "PROTECTION" and o["fan_cmd"] == "SAFE" and not o["load_enable"]
+                    and o["published"] == "PROTECTION"):
                 sut.responded = True
                 self.responses.append(sut.hazard_ticks)
             elif sut.hazard_ticks == self.budget:
@@ -81,13 +86,13 @@ class ProtectionAdapter(Adapter):
         if event.action != TICK:
             raise ValueError(f"unknown model action {event.action} (expected {TICK})")
         p = dict(event.params)
-        return Applied(frozenset({self.tick(sut, p["t"], p["v"], p["ok"], p["clr"])}))
+        return Applied(frozenset({self.tick(sut, p["t"], p["v"], p["ok"], p["clr"], p["hz"], p["lc"])}))
 
     def observe(self, sut: Chain) -> dict[str, Any]:
         return sut.cpp.observe()  # type: ignore[no-any-return]
 
     def model_rows(self, state: tuple, event: Event) -> frozenset[str] | None:
-        """`RowsFiredBy([t, v, ok, clr])`: Tick has four parameters, the operator takes their record."""
+        """`RowsFiredBy([t, v, ok, clr, hz, lc])`: Tick has six parameters, the operator takes their record."""
         return frozenset(self.stepper.applied("RowsFiredBy")(state, FnValue(dict(event.params))))  # type: ignore[arg-type]
 
     def measurements(self) -> dict[str, Any]:
@@ -101,9 +106,9 @@ class ProtectionAdapter(Adapter):
         probes = []
         for event, _ in self.stepper.transitions(state):
             p = dict(event.params)
-            probes.append(Probe(event, (p["t"], p["v"], p["ok"], p["clr"]), str(event)))
+            probes.append(Probe(event, (p["t"], p["v"], p["ok"], p["clr"], p["hz"], p["lc"]), str(event)))
             for t, v, why in self._wider(p["t"], p["v"]):
-                probes.append(Probe(event, (t, v, p["ok"], p["clr"]), f"{event}: {why}"))
+                probes.append(Probe(event, (t, v, p["ok"], p["clr"], p["hz"], p["lc"]), f"{event}: {why}"))
         return probes
 
     def _wider(self, t: int, v: int) -> list[tuple[int, int, str]]:

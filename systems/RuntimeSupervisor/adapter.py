@@ -8,7 +8,12 @@ and the dispatch cycle; design §6-§8, §11).
   request, or - for STOPPED - the report of the unit the supervisor asked to stop (step 1:
   control reports the outputs safe).  The C++ reports the row that fired (`RowsFiredBy`).
 * Projection: `sup_state`, `status`, `init_ticks`, `stop_step`, `outputs_safe`,
-  `dispatched`; the fault lines `fatal_fault`, `watchdog_ok` are inputs.
+  `dispatched`, `safety_input` (what ao_safety evaluated: `safety_input_of` the real
+  dispatch record) and `outputs` (the output stage after the tick); the fault lines
+  `fatal_fault`, `watchdog_ok` are inputs, `init_age`, `shutdown_requested` and
+  `stop_reports` are the model's observers.
+* The dispatcher gate is the runtime's `dispatch_gate`: no dispatch cycle while the
+  dispatcher unit is not READY.
 * Replay of the 178,041 transitions runs as a compact plan in the binding (`PlanReplayer`).
 * Input-complete alphabet: every model event, plus the reports the model leaves out
   because they change nothing, each probed as the model's NONE: a unit reporting the
@@ -39,8 +44,9 @@ def call(event: Event) -> tuple[str, str]:
 
 
 class RuntimeSupervisorAdapter(Adapter):
-    observed_variables = ("sup_state", "status", "init_ticks", "stop_step", "outputs_safe", "dispatched")
-    hidden_variables = ("fatal_fault", "watchdog_ok")
+    observed_variables = ("sup_state", "status", "init_ticks", "stop_step", "outputs_safe", "dispatched",
+                          "safety_input", "outputs")
+    hidden_variables = ("fatal_fault", "watchdog_ok", "init_age", "shutdown_requested", "stop_reports")
     config_constants = {"InitTimeoutTicks": "init_timeout_ticks"}
     rows_operator = "RowsFiredBy"
 
@@ -66,7 +72,7 @@ class RuntimeSupervisorAdapter(Adapter):
         d = self.project(state)
         status = "".join(f"{d['status'][u]}," for u in UNITS)
         return (f"{d['sup_state']}|{status}|{d['init_ticks']}|{d['stop_step']}|{int(d['outputs_safe'])}|"
-                + "".join(f"{a}," for a in d["dispatched"]))
+                + "".join(f"{a}," for a in d["dispatched"]) + f"|{d['safety_input']}|{d['outputs']}")
 
     def plan_call(self, event: Event) -> tuple[str, str]:
         return call(event)

@@ -74,7 +74,9 @@ class SystemStateManagerAdapter(Adapter):
                           "safeguard_mismatch", "enabling_mismatch", "selector_invalid",
                           "state_cycles", "t2_confirmed", "resume_to", "axes",
                           # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
-                          "stale_commands", "estop_tested_a", "estop_tested_b")
+                          "stale_commands", "estop_tested_a", "estop_tested_b",
+                          # issue 29 item 6: K39's memory of a PANIC since the last RELEASED.
+                          "enable_release_required")
     split_records = {"jog": (("jog_axis", "axis"), ("jog_direction", "direction"),
                              ("jog_speed_mm_s", "speed_mm_s"))}
     observed_operators = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request",
@@ -87,12 +89,14 @@ class SystemStateManagerAdapter(Adapter):
                         "last_accepted", "jog_in_auto", "obs_guard_fault", "obs_servo_on_powered", "obs_t2",
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
-                        "obs_submit_lost", "obs_link_lost")
+                        "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
+                        "obs_panic")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
         "MaxStopCycles": "max_stop_cycles",
         "T1SpeedLimit": "t1_speed_limit_mm_s",
+        "T2SpeedLimit": "t2_speed_limit_mm_s",
         "QueueCapacity": "command_queue_limit",
     }
     rows_operator = "RowsFiredBy"
@@ -104,10 +108,18 @@ class SystemStateManagerAdapter(Adapter):
         self.cfg = self.config()
         self.queue_capacity = int(self.constants["QueueCapacity"])
         self.speeds = speed_vectors(core, self.cfg)
-        self.jog_probes = jog_probes(int(self.constants["T1SpeedLimit"]))
+        self.jog_probes = jog_probes(int(self.constants["T1SpeedLimit"]), int(self.constants["T2SpeedLimit"]))
         self._raw_cache: dict[Value, dict[str, Any]] = {}
         self.discrepancy_cycles = int(self.constants["DiscrepancyCycles"])
         self._combined_seen: set[tuple[Value, Value]] = set()
+        self._hazard_seen: set[tuple[Value, Value]] = set()
+
+    def config(self) -> Any:
+        """The model's constants, and the tool stated as a tool-less flange (design §9: a
+        Config states its tool); the model abstracts the tool into `speed`."""
+        cfg = super().config()
+        cfg.tool_offset_m = (0.0, 0.0, 0.0)
+        return cfg
 
     # ------------------------------------------------------------ C++ calls
     def new_sut(self) -> Any:
@@ -181,6 +193,7 @@ class SystemStateManagerAdapter(Adapter):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
         probes += self._combined_disagreement_probes(state, cur, base)
+        probes += self._hazard_probes(state, cur, base)
         if not state[self.index["queue"]]:
             hold = Event.of(CYCLE, {"in": FnValue(cur)})
             for label, cmd in self.jog_probes:
@@ -210,6 +223,51 @@ class SystemStateManagerAdapter(Adapter):
                              f"{g1} and {g2} disagreeing from one cycle on, held {self.discrepancy_cycles + 1} cycles",
                              (ev,) * self.discrepancy_cycles))
         return out
+
+    def _hazard_probes(self, state: tuple, cur: dict[str, Value], base: dict[str, Any]) -> list[Probe]:
+        """The reproductions of issue 29, named by the design page's unsafe control actions
+        (§13): two inputs changing in one cycle and short command sequences that the
+        one-dimension alphabet above does not contain.  Offered once per (control state,
+        session mode), from the first probed state there with an empty queue."""
+        key = (state[self.index["state"]], state[self.index["session_mode"]])
+        if key in self._hazard_seen or state[self.index["queue"]]:
+            return []
+        self._hazard_seen.add(key)
+
+        def cyc(model: dict[str, Value], raw: dict[str, Any]) -> tuple[Event, dict[str, Any]]:
+            return Event.of(CYCLE, {"in": FnValue(dict(cur, **model))}), dict(base, **raw)
+
+        def sub(kind: str) -> tuple[Event, Any]:
+            ev = Event.of(SUBMIT, {"c": FnValue({"kind": kind, "axis": 0, "direction": 0, "speed_mm_s": 0})})
+            return ev, self.plan_call(ev)
+
+        def seq(label: str, steps: list[tuple[Event, Any]]) -> Probe:
+            events = tuple(e for e, _ in steps)
+            return Probe(events[-1], [c for _, c in steps], label, events[:-1])
+
+        estop = ({"estop_a": False, "estop_b": False}, {"estop_closed_a": False, "estop_closed_b": False})
+        panic = ({"enable_a": "PANIC", "enable_b": "PANIC"}, {"enabling_a": "PANIC", "enabling_b": "PANIC"})
+        middle = ({"enable_a": "MIDDLE", "enable_b": "MIDDLE"}, {"enabling_a": "MIDDLE", "enabling_b": "MIDDLE"})
+        moving = ({"speed": "MOVING"}, {"qd": self.speeds["MOVING"][0]})
+        unready = ({"servo_ready": False}, {"servo_ready": False})
+        stop_cycles = int(self.constants["MaxStopCycles"]) + 2
+        arming_cycles = int(self.constants["ArmingTimeoutCycles"]) + 2
+        return [
+            seq("UCA-RSM-06 E-stop and a drive fault in one cycle",
+                [cyc(dict(estop[0], drive_fault=True), dict(estop[1], drive_fault=True))]),
+            seq("UCA-RSM-06 E-stop and servo_ready lost in one cycle",
+                [cyc(dict(estop[0], **unready[0]), dict(estop[1], **unready[1]))]),
+            seq("UCA-RSM-06 E-stop channel B and a T1 overspeed in one cycle",
+                [cyc({"estop_b": False, "speed": "OVER_T1"},
+                     {"estop_closed_b": False, "qd": self.speeds["OVER_T1"][0]})]),
+            seq("UCA-RSM-03 servo_ready lost, held 3 cycles", [cyc(*unready)] * 3),
+            seq("UCA-RSM-05 enabling PANIC, back to MIDDLE, then Servo-on",
+                [cyc(*panic), cyc(*middle), sub("SERVO_ON"), cyc(*middle)]),
+            seq(f"UCA-RSM-07 JOG_STOP with the arm still moving, {stop_cycles} cycles",
+                [sub("JOG_STOP")] + [cyc(*moving)] * stop_cycles),
+            seq(f"UCA-RSM-02 Servo-on without servo_ready, {arming_cycles} cycles",
+                [sub("SERVO_ON")] + [cyc(*unready)] * arming_cycles),
+        ]
 
     def probe_batch(self, prefix: list[Event], probes: list[Probe]) -> list[tuple[dict[str, Any], frozenset[str]]]:
         """Run each probe on a fresh C++ manager brought to the state by `prefix`."""
@@ -300,17 +358,20 @@ class SystemStateManagerAdapter(Adapter):
                                       for d in (-1, 0, 1, 2)} - {0}))
 
 
-def jog_probes(t1_limit: int) -> list[tuple[str, dict[str, Value]]]:
+def jog_probes(t1_limit: int, t2_limit: int) -> list[tuple[str, dict[str, Value]]]:
     """JOG_START commands at each bound of K26's argument check (axis 1..6, direction
-    -1/1, speed > 0) and of the T1 clamp, beyond the cfg's JogCommands: the
-    input-complete pass submits each (queue empty) and then runs one cycle."""
+    -1/1, 0 < speed <= the T2 limit) and of the T1 clamp, beyond the cfg's JogCommands:
+    the input-complete pass submits each (queue empty) and then runs one cycle."""
     def jog(axis: int, direction: int, speed: int) -> dict[str, Value]:
         return {"kind": "JOG_START", "axis": axis, "direction": direction, "speed_mm_s": speed}
     return [("JOG_START speed 0", jog(1, 1, 0)), ("JOG_START speed 1 mm/s", jog(1, 1, 1)),
             ("JOG_START axis 0", jog(0, 1, 100)), ("JOG_START axis 6", jog(6, -1, 100)),
             ("JOG_START direction 0", jog(1, 0, 100)),
             ("JOG_START exactly at the T1 limit", jog(1, 1, t1_limit)),
-            ("JOG_START just above the T1 limit", jog(1, -1, t1_limit + 1))]
+            ("JOG_START just above the T1 limit", jog(1, -1, t1_limit + 1)),
+            ("JOG_START exactly at the T2 limit", jog(2, 1, t2_limit)),
+            ("JOG_START just above the T2 limit", jog(2, -1, t2_limit + 1)),
+            ("JOG_START at the largest int32", jog(1, 1, 2**31 - 1))]
 
 
 def tcp_speed_per_rad_s(dh: list[tuple[float, ...]], q: list[float], joint: int) -> float:
@@ -465,9 +526,11 @@ def flagship_rules(D: int, queue_capacity: int, timers: list[int]) -> type:  # n
         @rule(kind=st.sampled_from(["START", "JOG_START", "PAUSE", "RESUME", "JOG_STOP", "SERVO_OFF", "RESET"]),
               i=st.integers(0, 7))
         def command(self, kind: str, i: int) -> None:
-            """One command and the cycle that pops it."""
+            """One command and the cycle that pops it (the drives kept ready where offered)."""
             self._submit(kind, i)
-            self._cycle_where(lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
+            healthy = (lambda r: not r["drive_fault"] and r["fieldbus_ok"] and r["operator_link_ok"])
+            if not self._cycle_where(lambda r: healthy(r) and r["servo_ready"]):
+                self._cycle_where(healthy)
 
         @rule(n=st.sampled_from(timers), i=st.integers(0, 7))
         def hold(self, n: int, i: int) -> None:

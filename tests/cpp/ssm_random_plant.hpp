@@ -25,7 +25,8 @@ class RandomPlant {
   /// The inputs of the next cycle. `at_rest_commanded`: the last outputs command no motion
   /// (power off, or every axis Disabled/StandStill): the robot then stays at rest but for
   /// a rare creep (a fault that the standstill monitor, C25, must catch).
-  const ScanInputs& next(bool at_rest_commanded = false) {
+  /// `bus`: the manager's watchdog, from which the simulated master numbers its frames.
+  const ScanInputs& next(const FieldbusWatchdog& bus, bool at_rest_commanded = false) {
     follow(estop_demand_, in_.estop_closed, 0.004, 0.03);
     follow(gate_demand_, in_.safeguard_closed, 0.01, 0.03);
     // Enabling device: the operator moves it; the two channels follow with a lag.
@@ -42,9 +43,12 @@ class RandomPlant {
       in_.selector = contacts(mode_target_);
     }
     if (chance(0.0005)) in_.selector = SelectorContacts{true, true, false};  // welded contact
-    if (chance(0.05)) in_.servo_ready = chance(0.8);
-    if (in_.drive_fault ? chance(0.1) : chance(0.002)) in_.drive_fault = !in_.drive_fault;
-    in_.fieldbus_ok = !chance(0.0003);      // a lost EtherCAT frame / missed cycle deadline (C24)
+    // Drives become ready a few cycles after power-up and stay ready, but for a rare loss
+    // (C27 must catch it with the brakes released).
+    if (levels_.servo_ready ? chance(0.0005) : chance(0.05)) levels_.servo_ready = !levels_.servo_ready;
+    if (levels_.drive_fault ? chance(0.1) : chance(0.002)) levels_.drive_fault = !levels_.drive_fault;
+    levels_.fieldbus_ok = !chance(0.0003);  // a lost EtherCAT frame / missed cycle deadline (C24)
+    in_.bus = sim::bus_image(bus, levels_);
     in_.operator_link_ok = !chance(0.001);  // the operator client's heartbeat expired (C26)
     if (at_rest_commanded) {
       in_.qd = chance(0.002) ? kSlow : kRest;
@@ -70,6 +74,7 @@ class RandomPlant {
   }
 
   [[nodiscard]] const ScanInputs& inputs() const { return in_; }
+  [[nodiscard]] const sim::BusLevels& levels() const { return levels_; }
 
   /// What next() needs from the last outputs: no motion commanded.
   [[nodiscard]] static bool at_rest(const ScanOutputs& out) {
@@ -100,6 +105,7 @@ class RandomPlant {
   }
 
   std::mt19937 rng_;
+  sim::BusLevels levels_{};
   ScanInputs in_{};
   bool estop_demand_{true};
   bool gate_demand_{true};

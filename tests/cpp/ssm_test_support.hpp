@@ -11,6 +11,7 @@
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
 #include "safestate/scan_inputs.hpp"
+#include "safestate/sim/bus_master.hpp"
 #include "safestate/status_record.hpp"
 #include "safestate/system_state_manager.hpp"
 
@@ -26,6 +27,14 @@ inline constexpr JointVector kSlow{0.05, 0.0, 0.0, 0.0, 0.0, 0.0};
 inline constexpr JointVector kFast{2.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 inline constexpr JointVector kRest{};
 
+/// The design-page defaults with the tool stated as a tool-less flange: a Config states its
+/// tool (design §9), and these tests measure the speed at the flange.
+inline Config flange_config() {
+  Config c;
+  c.tool_offset_m = kFlangeTcp;
+  return c;
+}
+
 inline SelectorContacts contacts(SelectorReading mode) {
   SelectorContacts c;
   c.auto_ = mode == SelectorReading::Auto;
@@ -34,8 +43,8 @@ inline SelectorContacts contacts(SelectorReading mode) {
   return c;  // Invalid: no contact closed
 }
 
-/// Everything healthy in `mode`: E-stop released, gate closed, self-test passed, drives
-/// ready and fault-free, robot at rest; the enabling device in MIDDLE in T1/T2 (the operator
+/// Everything healthy in `mode`: E-stop released, gate closed, self-test passed, robot at
+/// rest (drives and bus: the Rig's `plant`, sim::bus_image); the enabling device in MIDDLE in T1/T2 (the operator
 /// holds it) and RELEASED in AUTO.
 inline ScanInputs healthy(SelectorReading mode = SelectorReading::Auto) {
   ScanInputs in;
@@ -46,9 +55,6 @@ inline ScanInputs healthy(SelectorReading mode = SelectorReading::Auto) {
   in.enabling = {e, e};
   in.selector = contacts(mode);
   in.self_test_ok = true;
-  in.servo_ready = true;
-  in.drive_fault = false;
-  in.fieldbus_ok = true;
   in.operator_link_ok = true;
   in.q = kPose;
   in.qd = kRest;
@@ -76,13 +82,19 @@ inline std::string describe(const StatusRecord& s) {
 /// A manager plus the inputs it sees every cycle. `in` is edited between cycles.
 class Rig {
  public:
-  explicit Rig(const Config& config = Config{}) : m(config) {}
+  explicit Rig(const Config& config = flange_config()) : m(config) {}
 
   SystemStateManager m;
   ScanInputs in{healthy(SelectorReading::Auto)};
+  /// Drives ready, no fault, bus healthy: each cycle() turns these into the process image
+  /// (status words, cycle counter, working counter) the manager decodes itself.
+  sim::BusLevels plant{};
   ScanOutputs out{};
 
-  void cycle() { out = m.cycle(in); }
+  void cycle() {
+    in.bus = sim::bus_image(m.fieldbus_watchdog(), plant);
+    out = m.cycle(in);
+  }
   void cycles(std::uint32_t n) {
     for (std::uint32_t i = 0; i < n; ++i) cycle();
   }
@@ -117,10 +129,10 @@ class Rig {
     if (mode == SelectorReading::T2) {
       ASSERT_EQ(command(Command::t2_confirm()), CommandResult::accepted());
     }
-    in.servo_ready = false;
+    plant.servo_ready = false;
     ASSERT_EQ(command(Command::servo_on()), CommandResult::accepted());
     ASSERT_EQ(state(), StateId::Arming);
-    in.servo_ready = true;
+    plant.servo_ready = true;
     cycle();
     ASSERT_EQ(state(), mode == SelectorReading::Auto ? StateId::AutoIdle : StateId::ManualIdle);
   }

@@ -49,9 +49,10 @@ TEST(RSM16_StatusNames, EnumNamesAreTheUpperCaseNamesOfTheDesignPage) {
   EXPECT_EQ(names(kAllOperatingModes), (V{"NONE", "AUTO", "T1", "T2"}));
   EXPECT_EQ(names(kAllSelectorReadings), (V{"INVALID", "AUTO", "T1", "T2"}));
   EXPECT_EQ(names(kAllStopCategories), (V{"NONE", "CAT0", "CAT1", "CAT2"}));
-  EXPECT_EQ(names(kAllFaultCodes), (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD",
-                                      "DISCREPANCY_ENABLING", "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED",
-                                      "ARMING_TIMEOUT", "STOP_TIMEOUT", "FIELDBUS_LOSS", "STANDSTILL_VIOLATION"}));
+  EXPECT_EQ(names(kAllFaultCodes),
+            (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING",
+               "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT", "FIELDBUS_LOSS",
+               "STANDSTILL_VIOLATION", "SERVO_READY_LOST"}));
   EXPECT_EQ(names(kAllRejectReasons),
             (V{"NONE", "LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT", "SELECTOR_INVALID",
                "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE", "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO",
@@ -144,7 +145,14 @@ TEST(RSM15_Config, DefaultsAreThoseOfTheDesignPage) {
   EXPECT_EQ(c.command_queue_limit, 8U);
   EXPECT_EQ(kMaxQueueCapacity, 16U);
   EXPECT_DOUBLE_EQ(c.dh[1].a_m, kUr5DhTable[1].a_m);
-  EXPECT_EQ(validate(c), ConfigError::None);
+  EXPECT_EQ(c.t2_speed_limit_mm_s, 1000);
+  EXPECT_DOUBLE_EQ(c.standstill_speed_window_mm_s, 10.0);
+  // Issue 29 item 4: no silent flange default; the defaults become usable once the tool is stated.
+  EXPECT_FALSE(c.tool_offset_m.has_value());
+  EXPECT_EQ(validate(c), ConfigError::ToolOffsetNotGiven);
+  Config stated = c;
+  stated.tool_offset_m = kFlangeTcp;
+  EXPECT_EQ(validate(stated), ConfigError::None);
 }
 
 // kAllConfigErrors is the public list of validate()'s answers: each once, in declaration
@@ -152,7 +160,10 @@ TEST(RSM15_Config, DefaultsAreThoseOfTheDesignPage) {
 TEST(RSM15_Config, EveryConfigErrorIsListedOnceInDeclarationOrder) {
   EXPECT_EQ(names(kAllConfigErrors),
             (V{"NONE", "CYCLE_TIME_ZERO", "DISCREPANCY_TOO_LARGE", "ARMING_TIMEOUT_TOO_LARGE", "MAX_STOP_TOO_LARGE",
-               "T1_LIMIT_NOT_POSITIVE", "ZERO_VELOCITY_INVALID", "QUEUE_LIMIT_OUT_OF_RANGE", "DH_TABLE_NOT_FINITE"}));
+               "T1_LIMIT_NOT_POSITIVE", "ZERO_VELOCITY_INVALID", "QUEUE_LIMIT_OUT_OF_RANGE", "DH_TABLE_NOT_FINITE",
+               "T1_LIMIT_ABOVE_REDUCED_SPEED", "T2_LIMIT_OUT_OF_RANGE", "STANDSTILL_WINDOW_OUT_OF_RANGE",
+               "TOOL_OFFSET_NOT_GIVEN", "ZERO_VELOCITY_ABOVE_WINDOW", "FIELDBUS_WORKING_COUNTER_ZERO",
+               "FIELDBUS_TOLERANCE_TOO_LARGE"}));
   for (std::size_t i = 0; i < kAllConfigErrors.size(); ++i) {
     EXPECT_EQ(static_cast<std::size_t>(kAllConfigErrors[i]), i) << to_string(kAllConfigErrors[i]);
   }
@@ -161,6 +172,7 @@ TEST(RSM15_Config, EveryConfigErrorIsListedOnceInDeclarationOrder) {
 TEST(RSM15_Config, ValidateRejectsEachUnusableParameter) {
   const auto with = [](auto edit) {
     Config c;
+    c.tool_offset_m = kFlangeTcp;
     edit(c);
     return validate(c);
   };

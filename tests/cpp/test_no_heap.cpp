@@ -24,7 +24,7 @@ TEST(RSM15_NoHeap, TheCountingAllocatorSeesAllocations) {
 }
 
 TEST(RSM15_NoHeap, HundredThousandRandomCyclesAndCommandsAllocateNothing) {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 8;
   c.arming_timeout_cycles = 25;
   c.max_stop_cycles = 120;
@@ -46,7 +46,7 @@ TEST(RSM15_NoHeap, HundredThousandRandomCyclesAndCommandsAllocateNothing) {
       ++commands;
       if (mgr->submit(cmd) == SubmitResult::queue_full) ++full;
     }
-    const ScanOutputs out = mgr->cycle(plant.next(RandomPlant::at_rest(mgr->outputs())));
+    const ScanOutputs out = mgr->cycle(plant.next(mgr->fieldbus_watchdog(), RandomPlant::at_rest(mgr->outputs())));
     const StatusRecord st = mgr->status();
     (void)mgr->last_rows();
     if (is_motion(st.state)) ++motion_cycles;

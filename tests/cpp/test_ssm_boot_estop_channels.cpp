@@ -51,10 +51,10 @@ TEST(RSM01_States, EveryLeafStateIsReachedByAScriptedSession) {
   note();  // ESTOP_RESET_NEEDED
   (void)r.command(Command::reset());
   note();  // IDLE
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   note();  // ARMING
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();
   note();  // AUTO_IDLE
   (void)r.command(Command::start());
@@ -67,14 +67,14 @@ TEST(RSM01_States, EveryLeafStateIsReachedByAScriptedSession) {
   r.cycle();  // C12: STOPPING CAT1
   r.cycle();
   note();  // IDLE
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();
   note();  // MANUAL_IDLE
   (void)r.command(Command::jog_start(1, 1, 50));
   note();  // MANUAL_JOGGING
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   note();  // ERROR_LOCKOUT
   EXPECT_EQ(seen.size(), kStateCount);
@@ -123,7 +123,7 @@ TEST(RSM12_Boot, FailedSelfTestLocksOutWithSelfTestFailed) {
 }
 
 TEST(RSM12_Boot, InvalidConfigFailsTheSelfTest) {
-  Config c;
+  Config c = flange_config();
   c.command_queue_limit = 0;
   ASSERT_EQ(validate(c), ConfigError::QueueLimitOutOfRange);
   Rig r(c);
@@ -161,7 +161,7 @@ TEST_P(RSM05_EstopPriority, EstopPressedInAnyPoweredStateEntersEstopActiveSameCy
   switch (GetParam()) {
     case 0:
       r.boot();
-      r.in.servo_ready = false;
+      r.plant.servo_ready = false;
       (void)r.command(Command::servo_on());
       break;  // ARMING
     case 1: r.to_operational(SelectorReading::Auto); break;
@@ -246,7 +246,7 @@ TEST(RSM05_Estop, ResetAfterReleaseEntersIdleWithLampOff) {
 TEST(RSM05_Estop, ResetWithDriveFaultIsRejected) {
   Rig r;
   r.to_reset_needed();
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   EXPECT_EQ(r.command(Command::reset()), CommandResult::rejected(RejectReason::DriveFault));
   EXPECT_EQ(r.state(), StateId::EstopResetNeeded);
 }
@@ -333,7 +333,7 @@ void PrintTo(const DiscrepancyCase& c, std::ostream* os) { *os << c.name; }
 class RSM04_Discrepancy : public ::testing::TestWithParam<DiscrepancyCase> {};
 
 TEST_P(RSM04_Discrepancy, ExactlyDCyclesAreToleratedAndTheNextLatchesLockout) {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 50;
   Rig r(c);
   r.to_operational(SelectorReading::T1);
@@ -410,7 +410,7 @@ TEST(RSM04_Discrepancy, CodesAreCheckedInTheDocumentedOrder) {
 }
 
 TEST(RSM04_Discrepancy, CountersRunInBootAndInLockout) {
-  Config c;
+  Config c = flange_config();
   c.discrepancy_cycles = 0;  // no tolerance: the first disagreement latches
   Rig r(c);
   r.in = healthy();
@@ -505,7 +505,7 @@ TEST(RSM02_ModeSelector, ModeChangeWhilePoweredStopsCat1AndMotionNeedsANewServoO
   EXPECT_EQ(r.state(), StateId::Idle);
   EXPECT_FALSE(r.out.contactor_closed);
   EXPECT_EQ(r.command(Command::jog_start(1, 1, 10)), CommandResult::rejected(RejectReason::WrongState));
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   EXPECT_EQ(r.command(Command::servo_on()), CommandResult::accepted());
   EXPECT_EQ(r.st().session_mode, OperatingMode::T1);
 }

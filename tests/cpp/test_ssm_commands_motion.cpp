@@ -43,7 +43,7 @@ TEST(RSM06_ServoOn, RejectedOutsideIdle) {
 TEST(RSM06_ServoOn, RejectedWithADriveFault) {
   Rig r;
   r.boot();
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   EXPECT_EQ(r.command(Command::servo_on()), CommandResult::rejected(RejectReason::DriveFault));
   EXPECT_EQ(r.state(), StateId::Idle);
 }
@@ -142,10 +142,10 @@ TEST(RSM07_Arming, ArmingPowersTheDrivesAndReadyEntersTheSubStateOfTheMode) {
 TEST(RSM07_Arming, DriveFaultDuringArmingLocksOut) {
   Rig r;
   r.boot();
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   r.cycles(3);
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   EXPECT_EQ(r.state(), StateId::ErrorLockout);
   EXPECT_EQ(r.st().fault_code, FaultCode::DriveFault);
@@ -154,11 +154,11 @@ TEST(RSM07_Arming, DriveFaultDuringArmingLocksOut) {
 }
 
 TEST(RSM07_Arming, ArmingTimesOutAfterExactlyTheConfiguredCycles) {
-  Config c;
+  Config c = flange_config();
   c.arming_timeout_cycles = 10;
   Rig r(c);
   r.boot();
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   EXPECT_EQ(r.st().state_cycles, 0U);
   r.cycles(10);  // 10 full cycles after the Servo-on cycle
@@ -171,14 +171,14 @@ TEST(RSM07_Arming, ArmingTimesOutAfterExactlyTheConfiguredCycles) {
 }
 
 TEST(RSM07_Arming, ReadyInTheLastAllowedCycleIsInTime) {
-  Config c;
+  Config c = flange_config();
   c.arming_timeout_cycles = 10;
   Rig r(c);
   r.boot();
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   r.cycles(10);
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();  // C15 precedes C16
   EXPECT_EQ(r.state(), StateId::AutoIdle);
 }
@@ -363,13 +363,20 @@ TEST(RSM09_Manual, TheSafeguardIsNotRequiredInManualModes) {
   EXPECT_EQ(r.state(), StateId::ManualJogging);
 }
 
-TEST(RSM09_Manual, JogStopReturnsToManualIdle) {
+TEST(RSM09_Manual, JogStopRampsDownThenReturnsToManualIdleAtStandstill) {
   Rig r;
   r.to_jogging(SelectorReading::T1);
   EXPECT_EQ(r.command(Command::jog_stop()), CommandResult::accepted());
-  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  EXPECT_EQ(r.state(), StateId::Stopping);
+  EXPECT_EQ(r.st().stop_category, StopCategory::Cat2);
+  EXPECT_TRUE(r.out.ramp_down_request);
   EXPECT_EQ(r.out.commanded_speed_mm_s, 0);
   EXPECT_EQ(r.command(Command::jog_stop()), CommandResult::rejected(RejectReason::WrongState));
+  r.in.qd = kRest;
+  r.cycle();
+  EXPECT_EQ(r.cycle_row(), "C28");
+  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  EXPECT_FALSE(r.out.ramp_down_request);
 }
 
 // ---------------------------------------------------------------- RSM-10 T1 speed (integration)
@@ -406,7 +413,7 @@ TEST(RSM10_T1Speed, AJointTurningBackwardsIsNotAtRest) {
 // overspeed. The joint-1 rate whose TCP speed is the limit exactly is found by nudging
 // the last bits of limit / (speed per rad/s).
 TEST(RSM10_T1Speed, ExactlyTheT1LimitIsNotAnOverspeed) {
-  const Config config{};
+  const Config config = flange_config();
   const SpeedMonitor mon{config};
   const double limit = static_cast<double>(config.t1_speed_limit_mm_s);
   double w = limit / mon.tcp_speed_mm_s(kPose, JointVector{1.0, 0, 0, 0, 0, 0});
@@ -473,7 +480,7 @@ TEST(RSM10_T1Speed, HighSpeedInT2OrAutoIsNotAT1Overspeed) {
 }
 
 TEST(RSM10_T1Speed, AConfiguredLimitIsUsedForClampAndOverspeed) {
-  Config c;
+  Config c = flange_config();
   c.t1_speed_limit_mm_s = 20;
   Rig r(c);
   r.to_operational(SelectorReading::T1);
@@ -488,7 +495,7 @@ TEST(RSM10_T1Speed, AConfiguredLimitIsUsedForClampAndOverspeed) {
 // ---------------------------------------------------------------- RSM-11 stopping, pause
 
 TEST(RSM11_Stopping, Cat1StopTimesOutAfterExactlyMaxStopCyclesAndCutsPower) {
-  Config c;
+  Config c = flange_config();
   c.max_stop_cycles = 20;
   Rig r(c);
   r.to_auto_running();
@@ -614,7 +621,7 @@ TEST(RSM13_Commands, ARejectedCommandChangesNothingButTheCommandFields) {
       },
       [](Rig& r) {
         r.boot();
-        r.in.servo_ready = false;
+        r.plant.servo_ready = false;
         (void)r.command(Command::servo_on());
       },
   };
@@ -671,7 +678,7 @@ TEST(RSM14_CommandQueue, AFullQueueRejectsAtOnceAndChangesNothingElse) {
 }
 
 TEST(RSM14_CommandQueue, TheConfiguredLimitBoundsTheQueue) {
-  Config c;
+  Config c = flange_config();
   c.command_queue_limit = 2;
   Rig r(c);
   EXPECT_EQ(r.submit(Command::reset()), SubmitResult::queued);
@@ -692,7 +699,8 @@ TEST(RSM14_CommandQueue, CommandsAreHandledOnePerCycleInOrder) {
   EXPECT_EQ(r.state(), StateId::ManualJogging);
   EXPECT_EQ(r.st().queue_length, 1U);
   r.cycle();
-  EXPECT_EQ(r.state(), StateId::ManualIdle);
+  EXPECT_EQ(r.state(), StateId::Stopping);  // the jog stop's Cat 2 ramp (K32)
+  EXPECT_EQ(r.st().queue_length, 0U);
 }
 
 TEST(RSM14_CommandQueue, AProducerThreadNeverBlocksAndNothingIsLost) {
@@ -762,7 +770,7 @@ TEST(RSM16_Outputs, StatusRecordNamesStateModeStopReasonAndFault) {
   EXPECT_EQ(to_string(s.stop_category), "NONE");
   EXPECT_EQ(to_string(s.last_reject_reason), "WRONG_MODE");
   EXPECT_EQ(to_string(s.command_result), "WRONG_MODE");
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   s = r.st();
   EXPECT_EQ(to_string(s.fault_code), "DRIVE_FAULT");
@@ -776,10 +784,10 @@ TEST(RSM17_AxesInManager, ServoOnStopAndPowerOffWalkTheAxesThroughThePlcopenStat
   Rig r;
   r.boot();
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::Disabled);
-  r.in.servo_ready = false;
+  r.plant.servo_ready = false;
   (void)r.command(Command::servo_on());
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::Disabled);  // ARMING
-  r.in.servo_ready = true;
+  r.plant.servo_ready = true;
   r.cycle();
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::StandStill);  // MC_Power on
   (void)r.command(Command::start());
@@ -815,10 +823,10 @@ TEST(RSM17_AxesInManager, PauseTakesAxesThroughStoppingToStandStill) {
 TEST(RSM17_AxesInManager, DriveFaultPutsEveryAxisInErrorStopForGood) {
   Rig r;
   r.to_auto_running();
-  r.in.drive_fault = true;
+  r.plant.drive_fault = true;
   r.cycle();
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::ErrorStop);
-  r.in.drive_fault = false;
+  r.plant.drive_fault = false;
   r.cycles(10);
   for (const AxisState a : r.out.axes) EXPECT_EQ(a, AxisState::ErrorStop);
 }

@@ -18,6 +18,7 @@ STATUS_KEYS = {
     "selector_invalid", "state_cycles", "t2_confirmed", "resume_to", "jog_axis",
     "jog_direction", "jog_speed_mm_s", "queue_length",
     "stale_commands", "estop_tested_a", "estop_tested_b",  # K36, K37 (issue 17)
+    "enable_release_required",  # K39 (issue 29)
 }
 OUTPUT_KEYS = {
     "contactor_closed", "drive_enable", "brake_release", "ramp_down_request", "reset_lamp",
@@ -41,6 +42,11 @@ def healthy(mode="AUTO", **overrides):
     return inputs
 
 
+def flange_config(**fields):
+    """The design-page defaults with the tool stated (a tool-less flange), as a Config must."""
+    return core.Config(tool_offset_m=(0.0, 0.0, 0.0), **fields)
+
+
 def command(manager, kind, inputs, **args):
     assert manager.submit(kind, **args) == "QUEUED"
     manager.cycle(inputs)
@@ -48,7 +54,7 @@ def command(manager, kind, inputs, **args):
 
 
 def operational(mode="AUTO"):
-    m = core.Manager(core.Config())
+    m = core.Manager(flange_config())
     m.cycle(healthy(mode))
     if mode == "T2":
         assert command(m, "T2_CONFIRM", healthy(mode)) == "ACCEPTED"
@@ -66,7 +72,7 @@ def test_module_and_api_are_documented():
 
 
 def test_observe_has_exactly_the_status_and_output_keys_before_the_first_cycle():
-    m = core.Manager()
+    m = core.Manager(flange_config())
     obs = m.observe()
     assert set(obs) == STATUS_KEYS | OUTPUT_KEYS
     assert obs["state"] == "BOOT"
@@ -78,7 +84,7 @@ def test_observe_has_exactly_the_status_and_output_keys_before_the_first_cycle()
 
 
 def test_cycle_returns_the_outputs():
-    m = core.Manager()
+    m = core.Manager(flange_config())
     out = m.cycle(healthy())
     assert set(out) == OUTPUT_KEYS
     assert m.observe()["state"] == "IDLE"
@@ -86,7 +92,7 @@ def test_cycle_returns_the_outputs():
 
 
 def test_missing_inputs_take_the_safe_value():
-    m = core.Manager()
+    m = core.Manager(flange_config())
     m.cycle({})  # self-test not passed, E-stop open, ...
     obs = m.observe()
     assert obs["state"] == "ERROR_LOCKOUT"
@@ -95,7 +101,7 @@ def test_missing_inputs_take_the_safe_value():
 
 
 def test_estop_release_needs_reset_rsm05():
-    m = core.Manager()
+    m = core.Manager(flange_config())
     m.cycle(healthy(estop_closed_b=False))
     assert m.observe()["state"] == "ESTOP_ACTIVE"
     assert command(m, "RESET", healthy(estop_closed_a=False, estop_closed_b=False)) == "ESTOP_PRESSED"
@@ -146,7 +152,7 @@ def test_jog_in_auto_is_rejected_and_changes_nothing():
 
 
 def test_full_queue_is_rejected_at_once_rsm14():
-    m = core.Manager(core.Config(command_queue_limit=2))
+    m = core.Manager(flange_config(command_queue_limit=2))
     assert m.submit("RESET") == "QUEUED"
     assert m.submit("RESET") == "QUEUED"
     assert m.submit("SERVO_ON") == "QUEUE_FULL"
@@ -157,7 +163,7 @@ def test_full_queue_is_rejected_at_once_rsm14():
 
 
 def test_bad_arguments_raise():
-    m = core.Manager()
+    m = core.Manager(flange_config())
     with pytest.raises(KeyError):
         m.cycle({"estop_a": True})
     with pytest.raises(ValueError):
@@ -171,11 +177,14 @@ def test_bad_arguments_raise():
     assert m.observe()["state"] == "BOOT"  # nothing ran
 
 
-def test_transition_table_lists_c01_to_c26_and_k01_to_k38_and_matches_json_and_dot():
+def test_transition_table_lists_c01_to_c28_and_k01_to_k39_and_matches_json_and_dot():
     rows = core.transition_table()
     ids = [r["id"] for r in rows]
-    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 27)]
-    assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 39)]
+    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 29)]
+    assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 40)]
+    # issue 29: the latching rows before the E-stop's C06, C28 before C19, K39 after K10
+    assert ids.index("C09") < ids.index("C27") < ids.index("C10") < ids.index("C25") < ids.index("C06")
+    assert ids[ids.index("C28") + 1] == "C19" and ids[ids.index("K10") + 1] == "K39"
     # rows added by issues 17 and 16 sit where first-match needs them
     assert ids[3] == "C24" and ids[ids.index("K02") + 1] == "K36" and ids[ids.index("K06") + 1] == "K38"
     assert ids[ids.index("C14") + 1] == "C26"
@@ -202,6 +211,9 @@ def test_speed_level_and_tcp_speed():
 
 def test_config_fields_are_read_write():
     c = core.Config()
+    assert c.tool_offset_m is None and c.validate() == "TOOL_OFFSET_NOT_GIVEN"  # issue 29 item 4
+    c.tool_offset_m = (0.0, 0.0, 0.1)
+    assert c.tool_offset_m == (0.0, 0.0, 0.1)
     assert (c.cycle_time_us, c.discrepancy_cycles, c.arming_timeout_cycles, c.max_stop_cycles,
             c.t1_speed_limit_mm_s, c.zero_velocity_rad_s, c.command_queue_limit) == (
         1000, 50, 500, 1000, 250, 0.001, 8)
@@ -210,7 +222,7 @@ def test_config_fields_are_read_write():
     c.arming_timeout_cycles = 4
     c.max_stop_cycles = 5
     c.t1_speed_limit_mm_s = 100
-    c.zero_velocity_rad_s = 0.01
+    c.zero_velocity_rad_s = 0.0015  # seen at the tool: inside the 10 mm/s standstill window
     c.command_queue_limit = 16
     c.cycle_time_us = 500
     dh = c.dh
@@ -229,7 +241,7 @@ def test_config_fields_are_read_write():
 
 @pytest.mark.req("RSM-04", "INV-DISCREPANCY")
 def test_discrepancy_of_d_cycles_is_tolerated_and_d_plus_one_latches():
-    m = core.Manager(core.Config(discrepancy_cycles=3))
+    m = core.Manager(flange_config(discrepancy_cycles=3))
     m.cycle(healthy())
     for _ in range(3):
         m.cycle(healthy(safeguard_closed_b=False))

@@ -154,6 +154,88 @@ CASES = {
         "VARIABLE x\nInit == x = IF <<1, TRUE>> \\in {<<2, 3>>} THEN 1 ELSE 0\nNext == UNCHANGED x",
         '',
         Tlc(0, 1, 2, 1, None)),
+    'KindRecordFunctionSet': Case(
+        '{[val |-> 1], (2 :> 1)} is an error: sorting compares the field name with 2',
+        "VARIABLE x\nInit == x = Cardinality({[val |-> 1], (2 :> 1)})\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to compare integer 2 with non-integer:\n"val"')),
+    'KindSetsOfSetsSorted': Case(
+        '{{1}, {"a"}} is an error (Python would not merge them: nothing to see without sorting)',
+        "VARIABLE x\nInit == x = Cardinality({{1}, {\"a\"}})\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to compare string "a" with non-string:\n1')),
+    'KindRecordFieldsSorted': Case(
+        '{[a |-> {1}], [a |-> {"x"}]} is an error deep inside a field',
+        "VARIABLE x\nInit == x = Cardinality({[a |-> {1}], [a |-> {\"x\"}]})\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to compare string "x" with non-string:\n1')),
+    'KindRecordCupFunction': Case(
+        '{[a |-> 1]} \\cup {(2 :> 1)} is an error: a record equals only what can be a record',
+        "VARIABLE x\nInit == x = Cardinality({[a |-> 1]} \\cup {(2 :> 1)})\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of record:\n[a |-> 1]\nwith non-record\n(2 :> 1)')),
+    'KindRecordEqualsFunction': Case(
+        '[a |-> 1, b |-> 2] = (2 :> 1) is an error whatever the sizes, not FALSE',
+        "VARIABLE x\nInit == x = ([a |-> 1, b |-> 2] = (2 :> 1))\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of record:\n[a |-> 1, b |-> 2]\nwith non-record\n(2 :> 1)')),
+    'KindRecordEqualsEmptyTuple': Case(
+        '[a |-> 1] = <<>> is FALSE: <<>> is also the empty record',
+        "VARIABLE x\nInit == x = ([a |-> 1] = <<>>)\nNext == UNCHANGED x",
+        '',
+        Tlc(0, 1, 2, 1, None)),
+    'KindComparableShapes': Case(
+        'sets of compounds whose comparisons stop before kinds differ are sets: '
+        '{[a |-> 1], [b |-> TRUE]}, {(1 :> 1 @@ 2 :> TRUE), (1 :> 2 @@ 3 :> 1)}, {{<<1>>}, {<<1, 2>>}}',
+        "VARIABLE x\nInit == x = Cardinality({[a |-> 1], [b |-> TRUE]}) + Cardinality({(1 :> 1 @@ 2 :> TRUE), "
+        "(1 :> 2 @@ 3 :> 1)}) + Cardinality({{<<1>>}, {<<1, 2>>}})\nNext == UNCHANGED x",
+        '',
+        Tlc(0, 1, 2, 1, None)),
+    'KindCombineFcnKeys': Case(
+        '(TRUE :> 1) @@ (1 :> 2) is an error (TLC\'s CombineFcn compares the keys), not (TRUE :> 1)',
+        "VARIABLE x\nInit == x = (TRUE :> 1) @@ (1 :> 2)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of integer 1 with non-integer:\nTRUE')),
+    'KindCombineFcnArgument': Case(
+        '(1 :> 2) @@ 5 is TLC\'s argument error',
+        "VARIABLE x\nInit == x = (1 :> 2) @@ 5\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'The second argument of @@ should be a function, but instead it is:\n5')),
+    'KindCombineFcnTuple': Case(
+        '<<5, 6>> @@ (3 :> 7) is the sequence <<5, 6, 7>>',
+        "VARIABLE x\nInit == x = <<5, 6>> @@ (3 :> 7)\nNext == UNCHANGED x\nInv == x = <<5, 6, 7>>",
+        'INVARIANT Inv\n',
+        Tlc(0, 1, 2, 1, None)),
+    'KindTupleEqualsInt': Case(
+        '<<1>> = 1: TLC\'s TupleValue words it "the function ... with the value"',
+        "VARIABLE x\nInit == x = (<<1>> = 1)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of the function <<1>> with the value:\n1')),
+    'KindSetEqualsInt': Case(
+        '{1} = 1: "the set ... with the value"',
+        "VARIABLE x\nInit == x = ({1} = 1)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of the set {1} with the value:\n1')),
+    'KindRecordEqualsInt': Case(
+        '[a |-> 1] = 1: "record ... with non-record"',
+        "VARIABLE x\nInit == x = ([a |-> 1] = 1)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of record:\n[a |-> 1]\nwith non-record\n1')),
+    'KindIntEqualsTuple': Case(
+        '1 = <<1>>: the left operand is named first, as TLC',
+        "VARIABLE x\nInit == x = (1 = <<1>>)\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to check equality of integer 1 with non-integer:\n<<1>>')),
+    'KindRecordSortedAfterTuple': Case(
+        '{<<1, FALSE>>, [val |-> 0]}: TLC\'s sort asks the record to compare itself with a tuple, an error',
+        "VARIABLE x\nInit == x = Cardinality({<<1, FALSE>>, [val |-> 0]})\nNext == UNCHANGED x",
+        '',
+        Tlc(75, 0, 0, 0, 'Attempted to compare record:\n[val |-> 0]\nwith non-record\n<<1, FALSE>>')),
+    'KindTupleSortedAfterRecord': Case(
+        '{[val |-> 0], <<1, FALSE>>}: the other way round the tuple compares sizes first, a set of two',
+        "VARIABLE x\nInit == x = Cardinality({[val |-> 0], <<1, FALSE>>})\nNext == UNCHANGED x\nInv == x = 2",
+        'INVARIANT Inv\n',
+        Tlc(0, 1, 2, 1, None)),
 }
 
 # Outside the native core's subset (refused with "not supported by the native engine").

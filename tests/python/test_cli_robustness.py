@@ -90,7 +90,16 @@ def _start(*args: str, env_extra: dict[str, str] | None = None, new_session: boo
     env["PYTHONPATH"] = str(PYTHON_DIR) + os.pathsep + env.get("PYTHONPATH", "")
     env.update(env_extra or {})
     return subprocess.Popen([sys.executable, "-m", "safestate.cli", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env, start_new_session=new_session)
+                            stderr=subprocess.PIPE, text=True, env=env, start_new_session=new_session,
+                            preexec_fn=_as_from_a_terminal)
+
+
+def _as_from_a_terminal() -> None:
+    """The child starts as a foreground job does: SIGINT at its default, unblocked. A
+    process started with SIGINT ignored keeps ignoring Ctrl-C (Python installs no
+    handler), and a pytest worker may have inherited it ignored or blocked."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})
 
 
 def _wait_for(p: subprocess.Popen, text: str) -> list[str]:
@@ -408,10 +417,13 @@ def test_a_parse_error_says_what_was_expected_where_the_parse_stops(tmp_path, na
 
 
 @pytest.mark.parametrize("expr, shown", [("x + 1", "2147483647+1"), ("x * 2", "2147483647*2"),
-                                         ("0 - x - 10", "-2147483647-10"), ("2 ^ 40", "2^40")])
+                                         ("0 - x - 10", "-2147483647-10"), ("2 ^ 40", "2^40"),
+                                         ("-(-x - 1)", "--2147483648"),
+                                         ("(-x - 1) \\div (-1)", "-2147483648 \\div -1")])
 def test_arithmetic_beyond_tlcs_32_bit_ints_is_tlcs_overflow_error(tla_dir, expr: str, shown: str) -> None:
-    """TLC's Naturals: "Overflow when computing a+b" (EC.TLC_MODULE_OVERFLOW), exit 255
-    while computing successors -- never a number TLC cannot hold."""
+    """TLC's Naturals/Integers: "Overflow when computing a+b" (EC.TLC_MODULE_OVERFLOW), exit 255
+    while computing successors -- never a number TLC cannot hold (messages as TLC 1.8.0
+    prints them, unary minus and \\div of the least int included)."""
     tla = tla_dir("Over", f"""---- MODULE Over ----
 EXTENDS Integers
 VARIABLE x

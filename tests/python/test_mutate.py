@@ -11,6 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from mutate_specs import VIEWED
+
 from safestate.cli import main
 from safestate.mutate.generate import generate
 
@@ -186,20 +188,6 @@ def test_every_registered_system_declares_inputs_and_observables_of_its_model() 
         for name in decl["inputs"] + decl["observables"]:
             assert name in variables, (s.name, name)
         assert not set(decl["inputs"]) & set(decl["observables"]), s.name
-
-
-VIEWED = r"""---- MODULE Viewed ----
-EXTENDS Naturals
-VARIABLES inp, h, note
-View == <<inp, h>>
-Init == inp = 0 /\ h = 0 /\ note = "a"
-Next == \E i \in {0, 1} :
-    /\ inp' = i
-    /\ h' = IF i = 1 THEN 0 ELSE h
-    /\ note' = IF i = 1 THEN "b" ELSE note
-TypeOK == inp \in 0..1 /\ h \in 0..1 /\ note \in {"a", "b"}
-====
-"""
 
 
 def test_view_hidden_sticky_variable_gives_no_false_survivor(tmp_path: Path, capsys: pytest.CaptureFixture[str],

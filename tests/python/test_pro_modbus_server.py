@@ -9,6 +9,7 @@ import select
 import socket
 import struct
 import subprocess
+import time
 from collections.abc import Iterator
 
 import pytest
@@ -98,10 +99,13 @@ def test_coil_write_reaches_the_latch_clear_request_once_per_write() -> None:
     proc = ModbusServerProcess(*IMAGE_OPTIONS)
     try:
         client = client_for(proc)
+        assert not client.write_coil(1, True, device_id=UNIT).isError()  # the write enable
         assert not client.write_coil(0, True, device_id=UNIT).isError()
         first = proc.next_line(5.0)
         assert first is not None and first.startswith("clear request taken at tick"), first
+        assert not client.write_coil(1, True, device_id=UNIT).isError()
         assert not client.write_coil(0, False, device_id=UNIT).isError()  # 0 requests nothing
+        assert not client.write_coil(1, True, device_id=UNIT).isError()
         assert not client.write_coils(0, [True], device_id=UNIT).isError()  # function 0x0F
         second = proc.next_line(5.0)
         assert second is not None and second.startswith("clear request taken at tick"), second
@@ -125,10 +129,11 @@ MALFORMED = [
     ("read input registers 0..6 (crosses the end)", mbap(b"\x04\x00\x00\x00\x07"), ("exception", 0x02)),
     ("read input registers, quantity 0", mbap(b"\x04\x00\x00\x00\x00"), ("exception", 0x03)),
     ("read input registers, quantity 126 (> 125)", mbap(b"\x04\x00\x00\x00\x7e"), ("exception", 0x03)),
-    ("read coil 1 (only coil 0 exists)", mbap(b"\x01\x00\x01\x00\x01"), ("exception", 0x02)),
+    ("read coil 2 (only coils 0, 1 exist)", mbap(b"\x01\x00\x02\x00\x01"), ("exception", 0x02)),
     ("read coils, quantity 0", mbap(b"\x01\x00\x00\x00\x00"), ("exception", 0x03)),
     ("write single coil 0 with value 0x1234", mbap(b"\x05\x00\x00\x12\x34"), ("exception", 0x03)),
-    ("write single coil 1", mbap(b"\x05\x00\x01\xff\x00"), ("exception", 0x02)),
+    ("write single coil 2", mbap(b"\x05\x00\x02\xff\x00"), ("exception", 0x02)),
+    ("write coil 0 without the write enable", mbap(b"\x05\x00\x00\xff\x00"), ("exception", 0x01)),
     ("write single register 0 (the read-only temperature)", mbap(b"\x06\x00\x00\x00\x2a"), ("exception", 0x02)),
     ("write multiple registers 0..1 (read-only area)", mbap(b"\x10\x00\x00\x00\x02\x04\x00\x01\x00\x02"), ("exception", 0x02)),
     ("read holding registers (none exist)", mbap(b"\x03\x00\x00\x00\x01"), ("exception", 0x02)),
@@ -219,3 +224,59 @@ def test_a_bad_option_is_a_one_line_error() -> None:
     proc = subprocess.run([str(SERVE), "--fan-percent", "140"], capture_output=True, text=True, timeout=10)
     assert proc.returncode == 2
     assert proc.stderr.splitlines()[0] == "pro_modbus_serve: --fan-percent: expected an integer in 0..100, got '140'"
+
+
+def _exception_code(reply: object) -> int | None:
+    return getattr(reply, "exception_code", None) if reply.isError() else None  # type: ignore[attr-defined]
+
+
+def test_issue31_item6_a_client_off_the_allow_list_reads_but_every_write_is_refused_and_counted() -> None:
+    """Issue 31 item 6: writes that change safety state only from an allow-listed client.
+    The loopback interface is 127.0.0.0/8: a client bound to 127.0.0.2 is another client
+    than one on 127.0.0.1, the only address on the allow-list."""
+    proc = ModbusServerProcess("--allow-writes-from", "127.0.0.1", *IMAGE_OPTIONS)
+    try:
+        stranger = pymodbus_client.ModbusTcpClient("127.0.0.1", port=proc.port, timeout=2, retries=0,
+                                                   source_address=("127.0.0.2", 0))
+        assert stranger.connect()
+        assert stranger.read_input_registers(3, count=1, device_id=UNIT).registers == [1]
+        assert _exception_code(stranger.write_coil(1, True, device_id=UNIT)) == 0x01
+        assert _exception_code(stranger.write_coil(0, True, device_id=UNIT)) == 0x01
+        stranger.close()
+        operator = client_for(proc)  # 127.0.0.1: on the list
+        assert not operator.write_coil(1, True, device_id=UNIT).isError()
+        assert not operator.write_coil(0, True, device_id=UNIT).isError()
+        line = proc.next_line(5.0)
+        assert line is not None and line.startswith("clear request taken at tick"), line
+        operator.close()
+    finally:
+        code, lines = proc.stop()
+    assert code == 0
+    assert "frames write_not_allowed 2" in lines, lines
+
+
+def test_issue31_item6_a_clear_needs_the_write_enable_just_before_and_uses_it_once() -> None:
+    """Issue 31 item 6: the write-enable handshake: coil 1 := 1 arms one write to coil 0 of
+    the same connection for the arm window; without it (or after it was used, or once it
+    expired) the write is answered with exception 01 and counted."""
+    proc = ModbusServerProcess("--arm-window-ticks", "400", *IMAGE_OPTIONS)  # 400 ticks of 5 ms: 2 s
+    try:
+        client = client_for(proc)
+        assert _exception_code(client.write_coil(0, True, device_id=UNIT)) == 0x01
+        assert not client.write_coil(1, True, device_id=UNIT).isError()
+        assert client.read_coils(0, count=2, device_id=UNIT).bits[:2] == [False, True]  # armed
+        assert not client.write_coil(0, True, device_id=UNIT).isError()
+        line = proc.next_line(5.0)
+        assert line is not None and line.startswith("clear request taken at tick"), line
+        assert _exception_code(client.write_coil(0, True, device_id=UNIT)) == 0x01  # used up
+        assert not client.write_coil(1, True, device_id=UNIT).isError()
+        deadline = time.monotonic() + 30.0  # only ends a hung test
+        while client.read_coils(1, count=1, device_id=UNIT).bits[0] and time.monotonic() < deadline:
+            time.sleep(0.02)  # wait for the window to close (the server's ticks, not ours)
+        assert _exception_code(client.write_coil(0, True, device_id=UNIT)) == 0x01  # expired
+        client.close()
+    finally:
+        code, lines = proc.stop()
+    assert code == 0
+    assert "frames write_not_armed 3" in lines, lines
+

@@ -1,7 +1,10 @@
 // ao_modbus_server: the communications unit of the fan controller (PRO-05, rank 5 of the
 // dispatch order, non-critical; docs/design/protection.md, "Modbus register map"). Serves
 // Modbus TCP on 127.0.0.1 through libmodbus: input registers 0-5 from the ProcessImage, coil
-// 0 as the latch clear request.
+// 0 as the latch clear request, coil 1 as its write enable. Writes are served only to
+// allow-listed client addresses, and a write to coil 0 only within the arm window of a
+// write enable on the same connection (modbus_write_guard.hpp); refusals are answered with
+// exception 01 and counted.
 //
 // Never blocks the tick: every socket is non-blocking, on_tick() polls with timeout 0,
 // accepts at most kModbusMaxConnections clients, and handles at most
@@ -47,7 +50,14 @@ class AoModbusServer final : public CommunicationsUnit {
     std::size_t used{0};
     std::uint32_t frame_start_tick{0};  // tick of the first byte of the buffered frame
     std::uint32_t last_frame_tick{0};   // tick of the last complete frame (or the accept)
+    bool write_allowed{false};          // the peer's address is on the write allow-list
+    bool armed{false};                  // coil 1 written 1: one write to coil 0 allowed ...
+    std::uint32_t armed_tick{0};        // ... until arm_window_ticks after this tick
   };
+  [[nodiscard]] bool armed(const Connection& c) const noexcept {
+    return c.armed && tick_ - c.armed_tick < config_.arm_window_ticks;
+  }
+  [[nodiscard]] bool allowed(std::uint32_t host_address) const noexcept;
 
   void accept_clients() noexcept;
   void receive(Connection& c) noexcept;

@@ -13,7 +13,8 @@
 
 namespace safestate::pro {
 
-// The fan command while protection is active: full cooling (§4, the safe value).
+// The fan command while protection is active: full cooling (§4, the safe value). Together
+// with the equipment permissive off it is the protective output state, outputs_disabled.
 inline constexpr std::uint8_t kSafeFanCommandPercent = 100;
 
 class AoSafety {
@@ -30,6 +31,14 @@ class AoSafety {
   [[nodiscard]] std::uint8_t fan_output(std::uint8_t control_command) const noexcept {
     return ctx_.override_active ? kSafeFanCommandPercent : control_command;
   }
+  // The equipment permissive (§4): removed while the override is active, never by
+  // regulation; with the safe fan command it is outputs_disabled.
+  [[nodiscard]] bool load_enable() const noexcept { return !ctx_.override_active; }
+
+  // EVT_DEGRADED / EVT_RECOVERY (§4a): in degraded mode a clear request is denied; the
+  // recovery ends the degraded mode and leaves the latch as it is.
+  void set_degraded(bool degraded) noexcept { degraded_ = degraded; }
+  [[nodiscard]] bool degraded() const noexcept { return degraded_; }
 
   [[nodiscard]] const SafetyContext& context() const noexcept { return ctx_; }
   [[nodiscard]] ProtectionRow last_row() const noexcept { return last_row_; }
@@ -41,6 +50,7 @@ class AoSafety {
   SafetyContext ctx_{};
   ProtectionRow last_row_{ProtectionRow::p02};
   FaultCause last_fault_{FaultCause::none};
+  bool degraded_{false};
 };
 
 }  // namespace safestate::pro

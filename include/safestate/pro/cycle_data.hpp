@@ -24,6 +24,8 @@ struct CycleData {
   bool clear_pending{false};          // comms -> monitoring's next snapshot
   std::uint8_t control_command{100};  // control -> safety's output gate
   std::uint8_t fan_output{100};       // safety -> the fan driver
+  bool load_enable{false};            // safety -> the equipment permissive (§4)
+  bool outputs_held_safe{false};      // control, from shutdown step 1 on (§9)
   SafetyResult safety_result{SafetyResult::ok};
   ClearOutcome last_clear{ClearOutcome::none};
   ProcessImage image{};  // diagnostics -> comms

@@ -18,7 +18,7 @@ struct DiagnosticCounts {
   std::uint32_t ticks{0};
   std::uint32_t degraded{0};
   std::uint32_t recoveries{0};
-  std::array<std::uint32_t, 6> faults{};  // indexed by FaultCause
+  std::array<std::uint32_t, 7> faults{};  // indexed by FaultCause
 };
 
 class DiagnosticsAo final : public ActiveObject {

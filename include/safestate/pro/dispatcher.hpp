@@ -6,9 +6,11 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "safestate/pro/ao_id.hpp"
 #include "safestate/pro/dispatch_mode.hpp"
+#include "safestate/pro/unit_status.hpp"
 
 namespace safestate::pro {
 
@@ -16,6 +18,18 @@ struct DispatchRecord {
   std::array<AoId, kDispatchOrder.size()> order{};
   std::size_t count{0};
 };
+
+// The dispatcher is a unit too: while it is not READY (not started, failed, stopped) no
+// dispatch cycle runs, whatever the supervisor's state allows (§8; the model's
+// Dispatchable). ProtectionRuntime and the conformance double both go through this.
+[[nodiscard]] constexpr DispatchMode dispatch_gate(DispatchMode mode, UnitStatus dispatcher) noexcept {
+  return dispatcher == UnitStatus::ready ? mode : DispatchMode::none;
+}
+
+// What ao_safety evaluated in a dispatch cycle (§8, the model's safety_input): not
+// dispatched, the snapshot monitoring took earlier in the same cycle, or the snapshot
+// mailbox the runtime empties at the start of every cycle (an invalid sensor to ao_safety).
+enum class SafetyInput : std::uint8_t { none = 0, fresh, empty };
 
 // `ready(ao)` says whether the AO reported READY; `run(ao)` runs its dispatch to completion.
 template <typename Ready, typename Run>
@@ -29,6 +43,15 @@ template <typename Ready, typename Run>
     record.order[record.count++] = ao;
   }
   return record;
+}
+
+[[nodiscard]] constexpr SafetyInput safety_input_of(const DispatchRecord& r) noexcept {
+  bool monitoring = false;
+  for (std::size_t i = 0; i < r.count; ++i) {
+    if (r.order[i] == AoId::monitoring) monitoring = true;
+    if (r.order[i] == AoId::safety) return monitoring ? SafetyInput::fresh : SafetyInput::empty;
+  }
+  return SafetyInput::none;
 }
 
 }  // namespace safestate::pro

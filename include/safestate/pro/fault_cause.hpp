@@ -12,6 +12,7 @@ enum class FaultCause : std::uint8_t {
   under_voltage,
   over_voltage,
   latch_blocked,
+  hazard_detected,  // the event's hazard_detected flag (the fan driver's fault line, §2)
 };
 
 }  // namespace safestate::pro

@@ -8,7 +8,9 @@ namespace safestate::pro {
 
 enum class ModbusException : std::uint8_t {
   none = 0,
-  illegal_function = 0x01,      // the function code is not one this server implements
+  // the function code is not one this server implements, or - the specification's "server
+  // in the wrong state to process a request of this type" - a write not authorised now
+  illegal_function = 0x01,
   illegal_data_address = 0x02,  // the address (range) is not in the addressed table
   illegal_data_value = 0x03,    // bad quantity, byte count, coil value or PDU length
 };

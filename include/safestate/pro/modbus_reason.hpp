@@ -21,8 +21,10 @@ enum class ModbusReason : std::uint8_t {
   bad_mbap_length,       // connection closed: MBAP length outside 2 ... 254
   truncated_frame,       // connection closed: a frame stayed incomplete for the frame timeout
   send_failed,           // connection closed: the reply could not be sent whole (peer gone / not reading)
+  write_not_allowed,     // 01: a write from a client whose address is not on the write allow-list
+  write_not_armed,       // 01: a write to coil 0 without the write-enable handshake (coil 1) just before
 };
 
-inline constexpr std::size_t kModbusReasonCount = static_cast<std::size_t>(ModbusReason::send_failed) + 1;
+inline constexpr std::size_t kModbusReasonCount = static_cast<std::size_t>(ModbusReason::write_not_armed) + 1;
 
 }  // namespace safestate::pro

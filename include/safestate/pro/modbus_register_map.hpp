@@ -13,12 +13,14 @@ namespace safestate::pro {
 
 // The four Modbus data tables. The fan controller populates coils and input registers;
 // discrete inputs and holding registers are empty (every address is illegal there).
-inline constexpr std::uint16_t kModbusCoilCount = 1;           // coil 0: latch clear request
+inline constexpr std::uint16_t kModbusCoilCount = 2;           // coil 0: latch clear, 1: write enable
 inline constexpr std::uint16_t kModbusInputRegisterCount = 6;  // input registers 0..5
 inline constexpr std::uint16_t kModbusDiscreteInputCount = 0;
 inline constexpr std::uint16_t kModbusHoldingRegisterCount = 0;
 
 inline constexpr std::uint16_t kLatchClearCoil = 0;
+// Writing 1 arms one safety write (coil 0) of the same connection for the arm window.
+inline constexpr std::uint16_t kWriteEnableCoil = 1;
 
 // One input register: address, name (as in the design page) and unit.
 struct InputRegisterSpec {

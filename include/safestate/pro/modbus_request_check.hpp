@@ -140,8 +140,9 @@ namespace modbus_check_detail {
   if (std::uint32_t{address} + count > table_size(fc)) {
     return exception(ModbusException::illegal_data_address, ModbusReason::address_out_of_range);
   }
-  const bool clear = (fc == modbus_fc::write_single_coil && be16(pdu + 3) == kCoilOn) ||
-                     (fc == modbus_fc::write_multiple_coils && (pdu[6] & 0x01U) != 0);
+  // Coil 0 := 1 (coil 1, the write enable, requests nothing by itself).
+  const bool clear = address == kLatchClearCoil && ((fc == modbus_fc::write_single_coil && be16(pdu + 3) == kCoilOn) ||
+                                                    (fc == modbus_fc::write_multiple_coils && (pdu[6] & 0x01U) != 0));
   return {ModbusAction::serve, ModbusException::none, ModbusReason::ok, clear};
 }
 

@@ -27,13 +27,17 @@ class ThermalPlant {
 
   void set_heat_load_w(double w) noexcept { heat_w_ = w; }
   void set_supply_dv(std::uint16_t dv) noexcept { supply_dv_ = dv; }
+  // The air the fan draws in (a blocked inlet or a hot room raises it).
+  void set_ambient_c(double c) noexcept { p_.ambient_c = c; }
   // The front end freezes (its frame counter stops): a stuck sensor.
   void set_sensor_stuck(bool stuck) noexcept { stuck_ = stuck; }
 
   // What the controller reads at the start of a tick.
   [[nodiscard]] ControllerInputs inputs() const noexcept;
-  // Advances one tick with the fan command the controller wrote.
-  void step(std::uint8_t fan_command_percent) noexcept;
+  // Advances one tick with the fan command and the equipment permissive the controller
+  // wrote: the heat load dissipates only while the permissive is on.
+  void step(std::uint8_t fan_command_percent, bool load_enable) noexcept;
+  [[nodiscard]] bool load_on() const noexcept { return load_on_; }
 
   [[nodiscard]] double temperature_c() const noexcept { return temperature_c_; }
   [[nodiscard]] std::uint16_t supply_dv() const noexcept { return supply_dv_; }
@@ -49,6 +53,7 @@ class ThermalPlant {
   std::uint16_t supply_dv_{240};
   std::uint8_t sequence_{0};
   bool stuck_{false};
+  bool load_on_{false};
 };
 
 }  // namespace safestate::pro

@@ -18,8 +18,10 @@ struct TickReport {
   DispatchRecord dispatched{};
   SensorSnapshot snapshot{};
   bool safety_ran{false};
+  SafetyInput safety_input{SafetyInput::none};
   SafetyResult safety_result{SafetyResult::ok};
   std::uint8_t fan_output{0};
+  bool load_enable{false};    // the equipment permissive after the tick (§4; false = outputs_disabled)
   std::uint8_t stop_step{0};  // the shutdown step waited for after this tick (0: none)
 };
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "safestate/saf/estop_form.hpp"
 #include "safestate/saf/message_id.hpp"
 #include "safestate/saf/wire_values.hpp"
 
@@ -13,10 +14,14 @@ namespace safestate::saf {
 struct Message {
   MessageId id = MessageId::QueryControl;
   bool emergency = false;                                // Set Estop
+  EstopForm estop_form = EstopForm::Seed;                // Set Estop: which wire form (design §14)
+  std::uint64_t sequence = 0;                            // Set Estop (Sequenced, Authenticated)
   Health health = Health::Normal;                        // Report Health Summary
   ControlResponse response = ControlResponse::Accepted;  // Confirm Control
-  std::uint32_t component_id = 0;  // Report Control: holder (0 = nobody); Request Control: requester
-  std::uint8_t authority = 0;      // Report Control, Request Control
+  // Report Control: holder (0 = nobody); Request Control: requester; Set Estop (Sequenced,
+  // Authenticated): the Safety Client.
+  std::uint32_t component_id = 0;
+  std::uint8_t authority = 0;                                   // Report Control, Request Control
   SubsystemState subsystem_state = SubsystemState::Initialize;  // Report/Set Subsystem State
   ControlAction action = ControlAction::Request;                // Request Control
 

@@ -18,11 +18,15 @@ struct Observable {
   std::uint32_t control_age = 0;
   OutRequest out_request = OutRequest::None;
   OutSetState out_set_state = OutSetState::None;
+  bool alarm = false;         // the authority contest is lost (K03, K06), design §7
+  bool resend = false;        // a re-send of Set Subsystem State(EMERGENCY) is due, design §7
+  std::uint32_t set_age = 0;  // cycles since the last Set Subsystem State(EMERGENCY), to Mi
 
   friend constexpr bool operator==(const Observable& a, const Observable& b) noexcept {
     return a.state == b.state && a.estop == b.estop && a.estop_age == b.estop_age && a.health == b.health &&
            a.health_age == b.health_age && a.control == b.control && a.control_age == b.control_age &&
-           a.out_request == b.out_request && a.out_set_state == b.out_set_state;
+           a.out_request == b.out_request && a.out_set_state == b.out_set_state && a.alarm == b.alarm &&
+           a.resend == b.resend && a.set_age == b.set_age;
   }
 };
 

@@ -44,9 +44,17 @@ class SafetyService {
   [[nodiscard]] bool estop_timed_out() const noexcept;
   [[nodiscard]] bool health_bad() const noexcept;
   [[nodiscard]] bool danger() const noexcept;
+  /// A health summary has been received, is Normal or Warning and is not stale ("no report
+  /// yet" is unknown, not healthy: design §4).
+  [[nodiscard]] bool health_known_good() const noexcept;
 
  private:
-  ControlEvent intake(const InboundBatch& inbound) noexcept;
+  struct Intake {
+    ControlEvent event = ControlEvent::None;
+    bool subsystem_not_emergency = false;  // an accepted Report Subsystem State other than EMERGENCY
+  };
+  Intake intake(const InboundBatch& inbound) noexcept;
+  void resend_step(bool subsystem_not_emergency) noexcept;
   [[nodiscard]] bool state_guard(StateGuard g, bool hardware_fault) const noexcept;
   [[nodiscard]] bool control_guard(ControlGuard g, ControlEvent ev) const noexcept;
   void apply(StateEffect e) noexcept;
@@ -59,7 +67,6 @@ class SafetyService {
   ConfigError config_error_ = ConfigError::None;
   Observable obs_{};
   Diagnostics diag_{};
-  bool resend_emergency_ = false;  // C++ only: Report Subsystem State != EMERGENCY while held
 };
 
 }  // namespace safestate::saf

@@ -19,8 +19,10 @@ enum class ControlStatus : std::uint8_t { Released, Requested, Refused, Held };
 enum class OutRequest : std::uint8_t { None, Request, Release };
 /// The Set Subsystem State sent in a cycle.
 enum class OutSetState : std::uint8_t { None, Operational, Emergency };
-/// The control-related message of a cycle (§5: the last one wins).
-enum class ControlEvent : std::uint8_t { None, Accepted, Refused, Other };
+/// The control-related message of a cycle (§5: the last one wins). Accepted / Refused: a
+/// Confirm Control; Us: a Report Control naming us with our authority; Other: a Report
+/// Control naming another holder or nobody.
+enum class ControlEvent : std::uint8_t { None, Accepted, Refused, Us, Other };
 
 [[nodiscard]] constexpr std::string_view to_string(SafState v) noexcept {
   switch (v) {

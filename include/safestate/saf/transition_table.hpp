@@ -22,10 +22,10 @@ inline constexpr Mask kAnyState = 0x0F;
 enum class StateGuard : std::uint8_t {
   True,
   HardwareFault,  // the cycle's hardware_fault input
-  PairedAndSafe,  // estop != NONE and not danger
+  PairedAndSafe,  // estop != NONE, not danger, a good health summary received
   Danger,         // estop = SET or timed out or health bad
   EstopTimedOut,
-  ClearAndSafe,  // estop = CLEAR and not danger
+  ClearSafeAndTold,  // estop = CLEAR, not danger, good health received, control HELD or REFUSED
 };
 
 enum class StateEffect : std::uint8_t { Stay, EnterFault, LeaveEmergency, EnterEmergency };
@@ -48,21 +48,22 @@ inline constexpr std::array<StateRow, 10> kStateRows{{
     {"O01", bit(SafState::Operational), StateGuard::EstopTimedOut, StateEffect::EnterEmergency, "B"},
     {"O02", bit(SafState::Operational), StateGuard::Danger, StateEffect::EnterEmergency, "C"},
     {"O03", bit(SafState::Operational), StateGuard::True, StateEffect::Stay, "-"},
-    {"M01", bit(SafState::Emergency), StateGuard::ClearAndSafe, StateEffect::LeaveEmergency, "D"},
+    {"M01", bit(SafState::Emergency), StateGuard::ClearSafeAndTold, StateEffect::LeaveEmergency, "D"},
     {"M02", bit(SafState::Emergency), StateGuard::True, StateEffect::Stay, "-"},
 }};
 
 enum class ControlGuard : std::uint8_t {
   True,
-  EventAccepted,
-  EventRefused,
+  Granted,       // Confirm Control(accepted) answering our pending request (REQUESTED), or Report Control(us)
+  EventRefused,  // Confirm Control(refused); the row's mask makes it an answer to a pending request
+  EventUs,
   EventOther,
-  AgeReportDataTimeout,    // control_age >= ReportDataTimeoutCycles
-  AgeMessageInterval,      // control_age >= MessageIntervalCycles
-  EventAcceptedNoRelease,  // ev = ACCEPTED and no release sent yet this cycle
+  AgeReportDataTimeout,  // control_age >= ReportDataTimeoutCycles
+  AgeMessageInterval,    // control_age >= MessageIntervalCycles
+  EventUsNoRelease,      // ev = US and no release sent yet this cycle
 };
 
-enum class ControlEffect : std::uint8_t { Request, Grant, Refuse, Refresh, Tick, ReleaseAgain };
+enum class ControlEffect : std::uint8_t { Request, RequestAlarm, Grant, Refuse, Refresh, Tick, ReleaseAgain };
 
 struct ControlRow {
   std::string_view id;
@@ -81,15 +82,15 @@ inline constexpr Mask kOperational = bit(SafState::Operational);
 // clang-format off
 inline constexpr std::array<ControlRow, 10> kControlRows{{
     {"K01", kRaising, bit(ControlStatus::Released), ControlGuard::True, ControlEffect::Request},
-    {"K02", kRaising, kWaiting, ControlGuard::EventAccepted, ControlEffect::Grant},
+    {"K02", kRaising, kWaiting, ControlGuard::Granted, ControlEffect::Grant},
     {"K03", kRaising, bit(ControlStatus::Requested), ControlGuard::EventRefused, ControlEffect::Refuse},
     {"K04", kRaising, bit(ControlStatus::Requested), ControlGuard::AgeReportDataTimeout, ControlEffect::Request},
     {"K05", kRaising, bit(ControlStatus::Refused), ControlGuard::AgeMessageInterval, ControlEffect::Request},
-    {"K06", kRaising, bit(ControlStatus::Held), ControlGuard::EventOther, ControlEffect::Request},
-    {"K07", kRaising, bit(ControlStatus::Held), ControlGuard::EventAccepted, ControlEffect::Refresh},
+    {"K06", kRaising, bit(ControlStatus::Held), ControlGuard::EventOther, ControlEffect::RequestAlarm},
+    {"K07", kRaising, bit(ControlStatus::Held), ControlGuard::EventUs, ControlEffect::Refresh},
     {"K08", kRaising, bit(ControlStatus::Held), ControlGuard::AgeReportDataTimeout, ControlEffect::Request},
     {"K09", kRaising, kAnyControl, ControlGuard::True, ControlEffect::Tick},
-    {"K10", kOperational, bit(ControlStatus::Released), ControlGuard::EventAcceptedNoRelease, ControlEffect::ReleaseAgain},
+    {"K10", kOperational, bit(ControlStatus::Released), ControlGuard::EventUsNoRelease, ControlEffect::ReleaseAgain},
 }};
 // clang-format on
 

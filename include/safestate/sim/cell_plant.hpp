@@ -13,6 +13,7 @@
 #include "safestate/scan_inputs.hpp"
 #include "safestate/scan_outputs.hpp"
 #include "safestate/selector_reading.hpp"
+#include "safestate/sim/bus_master.hpp"
 #include "safestate/state_id.hpp"
 
 namespace safestate::sim {
@@ -25,12 +26,14 @@ class CellPlant {
     in_.enabling = {EnablePosition::Released, EnablePosition::Released};
     select(SelectorReading::Auto);
     in_.self_test_ok = true;
-    in_.fieldbus_ok = true;
     in_.operator_link_ok = true;
     in_.q = {0.0, -1.2, 1.1, -1.4, -1.57, 0.0};
   }
 
   [[nodiscard]] ScanInputs& inputs() noexcept { return in_; }
+  /// The drives' and the bus's levels; the control loop turns them into the process image
+  /// (bus_image) with the manager's watchdog.
+  [[nodiscard]] BusLevels& bus_levels() noexcept { return levels_; }
   [[nodiscard]] const ScanInputs& inputs() const noexcept { return in_; }
 
   void select(SelectorReading mode) noexcept {
@@ -44,7 +47,7 @@ class CellPlant {
   void react(const ScanOutputs& out, StateId state, const JogSetpoint& jog) noexcept {
     // Drives become ready 3 cycles after power-on.
     powered_cycles_ = out.contactor_closed ? powered_cycles_ + 1 : 0;
-    in_.servo_ready = powered_cycles_ >= 3;
+    levels_.servo_ready = powered_cycles_ >= 3;
     // Robot speed: ramps toward 1 in motion, toward 0 otherwise; brakes stop it at once.
     const bool moving = state == StateId::AutoRunning || state == StateId::ManualJogging;
     if (!out.brake_release) {
@@ -65,6 +68,7 @@ class CellPlant {
 
  private:
   ScanInputs in_{};
+  BusLevels levels_{true, false, false};
   int powered_cycles_{0};
   int speed_{0};
 };

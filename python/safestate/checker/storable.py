@@ -16,11 +16,12 @@ from typing import Any
 
 from ..tla.compile.recursive_functions import RecursiveFunction
 from ..tla.errors import EvalError, Loc, TlaError
-from ..tla.values import FnValue, LazySet, fmt
+from ..tla.values import FilteredSet, FnValue, LazySet, fmt
 
 
 def unstorable(v: Any) -> str | None:
-    """What in `v` has no fingerprint (its printed form), or None if `v` can be stored."""
+    """What in `v` has no fingerprint (its printed form), or None if `v` can be stored;
+    raises TLC's own error where TLC's Java code throws on such a value (exit 255)."""
     t = type(v)
     if t is int or t is str or t is bool:
         return None
@@ -39,6 +40,8 @@ def unstorable(v: Any) -> str | None:
                 return bad
         return None
     if isinstance(v, LazySet):
+        if type(v) is FilteredSet and v.java_error is not None:
+            raise TlaError("general", v.java_error)
         if not v.finite:
             return v.describe()
         try:
@@ -59,7 +62,10 @@ def check_storable(st: tuple, names: list[str], loc: Loc) -> None:
         t = type(v)
         if t is int or t is str or t is bool:
             continue
-        bad = unstorable(v)
+        try:
+            bad = unstorable(v)
+        except TlaError as e:
+            raise TlaError(e.kind, e.message, loc) from None
         if bad is not None:
             try:
                 shown = f" = {fmt(v)}"

@@ -8,6 +8,7 @@ import json
 import sys
 import time
 
+from ..checker.native.engine_choice import ENGINES
 from ..checker.tlc import tlc_jar
 from .generator import GRAMMARS
 from .runner import Runner, stderr_log
@@ -27,6 +28,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--out", metavar="DIR", help="write every (minimised) disagreement here")
     p.add_argument("--json", action="store_true", help="print a JSON summary on stdout")
     p.add_argument("--no-minimise", action="store_true", help="do not shrink disagreements")
+    p.add_argument("--engine", choices=ENGINES, default="python",
+                   help="the engine of safestate check to compare (default python; native refuses what "
+                        "the core does not accept, auto falls back to python there)")
     p.add_argument("--timeout", type=float, default=120, help="seconds per spec and checker (default 120)")
     p.add_argument("--progress", type=int, default=50, metavar="N", help="a progress line every N specs")
     args = p.parse_args(argv)
@@ -35,7 +39,7 @@ def main(argv: list[str] | None = None) -> int:
         stderr_log("TLA2TOOLS_JAR is not set to an existing tla2tools.jar: the comparison with TLC is "
                    "skipped; each spec is only checked by safestate (internal errors are reported).")
     start = time.monotonic()
-    runner = Runner(jar, args.out, not args.no_minimise, args.timeout, stderr_log)
+    runner = Runner(jar, args.out, not args.no_minimise, args.timeout, stderr_log, args.engine)
     try:
         if args.specs:
             runner.run_dir(args.specs, args.progress)
@@ -44,10 +48,11 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         runner.close()
     t = runner.tally
-    summary = {"tlc": jar is not None, "seed": None if args.specs else args.seed,
+    summary = {"tlc": jar is not None, "engine": args.engine, "seed": None if args.specs else args.seed,
                "grammar": None if args.specs else args.grammar, "specs": t.specs,
                "agree": t.agree, "refused": t.refused, "disagree": t.disagree, "timeouts": t.timeouts,
-               "crashes": t.crashes, "tlc_results": t.results, "features": t.features, "seconds": round(time.monotonic() - start, 1),
+               "crashes": t.crashes, "refusals": t.refusals, "tlc_results": t.results,
+               "features": t.features, "seconds": round(time.monotonic() - start, 1),
                "disagreements": [{k: d[k] for k in ("name", "fields", "detail") if k in d}
                                  | ({"repro": d["repro"]} if "repro" in d else {}) for d in t.disagreements]}
     if args.json:

@@ -7,23 +7,27 @@ from __future__ import annotations
 import json
 import os
 import signal
+import sys
 import time
 import traceback
 
 from ..checker import exit_codes
 # Imported before any fork, so that every spec of a run is checked by the same code.
-from ..checker.explore import explore_states
 from ..checker.model import load_model
+from ..checker.native.engine_choice import check
 from ..tla.errors import TlaError
 
 REFUSED = "refused"  # our checker says the construct is unsupported: acceptable, never a wrong number
 
 
-def summary_of(tla_path: str, cfg_path: str) -> dict:
-    """Check in this process; the summary has TLC's fields plus `exit_code`."""
+def summary_of(tla_path: str, cfg_path: str, engine: str = "python") -> dict:
+    """Check in this process with `engine` (`safestate check --engine`); the summary
+    has TLC's fields plus `exit_code`.  With ``native`` a model outside the core's
+    subset is refused; with ``auto`` it is checked by the Python engine, as a user
+    without ``--engine`` gets it."""
     try:
         model = load_model(tla_path, cfg_path)
-        r = explore_states(model)
+        r = check(model, engine)
     except TlaError as e:
         result = REFUSED if e.kind == "unsupported" else "error"
         return {"result": result, "distinct_states": None, "states_generated": None, "depth": None,
@@ -50,14 +54,16 @@ def summary_of(tla_path: str, cfg_path: str) -> dict:
             "violated": r.violated, "exit_code": code, "message": msg, "trace": trace}
 
 
-def run_ours(tla_path: str, cfg_path: str, timeout: float = 120) -> dict:
+def run_ours(tla_path: str, cfg_path: str, timeout: float = 120, engine: str = "python") -> dict:
     """`summary_of` in a forked child; a crash or a time-out is a result too."""
     rfd, wfd = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child
         os.close(rfd)
         try:
-            out = summary_of(tla_path, cfg_path)
+            # The engine's fallback notices would interleave with the run's progress lines.
+            sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - the child exits right after
+            out = summary_of(tla_path, cfg_path, engine)
         except BaseException:  # noqa: BLE001 - reported to the parent as a crash
             out = {"result": "crash", "exit_code": exit_codes.ERROR, "message": traceback.format_exc()[-2000:]}
         with os.fdopen(wfd, "w") as f:

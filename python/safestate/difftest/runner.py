@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -31,6 +32,8 @@ class Tally:
     crashes: int = 0  # our checker raised an internal error (always a defect)
     results: dict[str, int] = field(default_factory=dict)  # TLC's verdicts, for coverage
     disagreements: list[dict] = field(default_factory=list)
+    # What the engine refused, by message without its location: what the subset lacks.
+    refusals: dict[str, int] = field(default_factory=dict)
     # Grammar 3: per construct, how many specs used it and how each one ended.
     features: dict[str, dict[str, int]] = field(default_factory=dict)
 
@@ -41,6 +44,12 @@ class Tally:
 
 
 Source = Iterator[tuple[str, str, str]]  # (name, tla text or path, cfg text or path)
+
+
+def refusal_reason(message: str) -> str:
+    """The refusal without its file:line:col, so that refusals of one construct count together."""
+    first = message.splitlines()[0] if message else "(no message)"
+    return re.sub(r"^\S+:\d+:\d+:\s*", "", first)[:160]
 
 
 def generated(seed: int, count: int, start: int = 0, grammar: int = 2) -> Iterator[GeneratedSpec]:
@@ -61,7 +70,8 @@ def spec_dir(folder: str) -> list[tuple[str, str, str]]:
 
 class Runner:
     def __init__(self, jar: str | None, out_dir: str | None, minimise: bool, timeout: float,
-                 log: Callable[[str], None]) -> None:
+                 log: Callable[[str], None], engine: str = "python") -> None:
+        self.engine = engine
         self.tlc = TlcBatch(jar, timeout) if jar else None
         self.out_dir = out_dir
         self.minimise = minimise
@@ -85,7 +95,7 @@ class Runner:
         return tp, cp
 
     def both(self, tla_path: str, cfg_path: str) -> tuple[dict, TlcSummary | None]:
-        ours = run_ours(tla_path, cfg_path, self.timeout)
+        ours = run_ours(tla_path, cfg_path, self.timeout, self.engine)
         tlc = self.tlc.run(tla_path, cfg_path)[0] if self.tlc else None
         return ours, tlc
 
@@ -112,6 +122,8 @@ class Runner:
         diffs = differences(ours, tlc, states_comparable(Path(cfg_path).read_text(errors="replace")))
         if ours["result"] == REFUSED:
             t.refused += 1
+            why = refusal_reason(ours.get("message") or "")
+            t.refusals[why] = t.refusals.get(why, 0) + 1
             return REFUSED
         if not diffs:
             t.agree += 1

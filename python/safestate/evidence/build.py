@@ -14,7 +14,7 @@ from typing import Any
 
 from ..errors import UsageError
 from ..systems.registry import System, load_all, scan
-from . import diagrams, junit, manifest, render, sources, traces
+from . import diagrams, junit, manifest, model_mutation, render, sources, traces
 from .collect import Runner, StepResult
 from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, build as build_matrix, cfg_invariants, check_ok,
                      check_verdict, conform_summary, proofs_by_invariant)
@@ -159,6 +159,7 @@ def build(opts: Options) -> Result:
     if opts.coverage:
         _coverage(out, root, runner, extras, opts.log)
     _mutation_score(out, root, extras)
+    mutation_gaps = model_mutation.write(out, systems, sys_pages, extras)
     header = {"date": manifest.now(), "tools": manifest.tool_versions(root), "machine": manifest.machine()}
     (out / "index.html").write_text(render.index_html(sys_pages, m, header, extras, test_counts), encoding="utf-8")
     for p in sys_pages:
@@ -175,7 +176,7 @@ def build(opts: Options) -> Result:
     manifest.write(out, root, inputs, {"systems": [s.name for s in systems], "requirements_file": str(opts.requirements),
                                        "gaps": len(m.gaps), "gap_kinds": _kinds(m.gaps), "failures": failures,
                                        "unreachable_rows": [f"{u.why.page} {u.why.id}" for u in m.unreachable],
-                                       "checks": checks, "steps": steps})
+                                       "checks": checks, "steps": steps, "model_mutation_gaps": mutation_gaps})
     return Result(out, len(m.gaps), failures)
 
 

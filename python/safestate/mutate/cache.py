@@ -26,7 +26,7 @@ CACHE_ENV = "SAFESTATE_CACHE_DIR"
 _PACKAGE = Path(__file__).resolve().parent.parent
 # What decides an outcome: the checker, the front end, the classifier and the product
 # search (the mutant's own text is in the key; the report and the CLI are not).
-_SOURCES = ("checker", "tla", "mutate/classify.py", "mutate/product.py")
+_SOURCES = ("checker", "tla", "mutate/classify.py", "mutate/product.py", "mutate/graph.py")
 
 
 def cache_dir() -> Path:

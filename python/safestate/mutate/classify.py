@@ -34,9 +34,10 @@ from typing import Any
 
 from ..checker.itf import value_to_itf
 from ..checker.model import Model, load_model
-from ..tla.errors import TlaError
+from ..tla.errors import TlaError, UnsupportedError
 from ..tla.values import fmt
 from .generate import Mutant
+from .graph import LabelledGraph, confirm, graph_search, native_labelled
 from .product import DiffStep, OriginalSide, Projection, search
 
 KILLING_RESULTS = {"safety failure", "deadlock failure", "liveness failure", "temporal safety failure",
@@ -79,7 +80,8 @@ class Subject:
     max_pairs: int = 2_000_000
     max_memory_mb: int = 3000
     original: Model | None = None  # loaded once, before the workers fork
-    side: OriginalSide | None = None  # its successors, explored once before the fork
+    side: OriginalSide | None = None  # its successors, explored once before the fork (Python engine)
+    graph: LabelledGraph | None = None  # or its labelled graph from the native core (graph.py)
 
     def load_original(self) -> Model:
         if self.original is None:
@@ -126,29 +128,30 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
     start = time.monotonic()
     original = subject.load_original()
     with tempfile.TemporaryDirectory(prefix="safestate-mutant-") as tmp:
+        graph: LabelledGraph | None = None
         try:
             tla, cfg = materialise(subject, mutant, Path(tmp))
             model = load_model(str(tla), str(cfg))
-            result = check_model(model, subject.engine, subject.max_memory_mb)
+            result, graph = _check(subject, model)
         except TlaError as e:
             return Outcome(mutant.id, "error", reason=_where(e, tmp), seconds=time.monotonic() - start)
-        if result.result in KILLING_RESULTS:
-            what = "deadlock" if result.result == "deadlock failure" else (result.violated or result.result)
-            return Outcome(mutant.id, "killed", violated=what, trace_length=len(result.trace or []),
-                           seconds=time.monotonic() - start)
-        if result.result != "success":
-            why = result.error.message if result.error else result.result
-            kind = result.error.kind if result.error else ""
-            if kind == "assert":
-                return Outcome(mutant.id, "killed", violated=f"Assert: {why[:120]}",
-                               trace_length=len(result.trace or []), seconds=time.monotonic() - start)
-            if kind == "memory" or "memory" in why.lower():
-                return Outcome(mutant.id, "timeout", reason=f"check: {why}", seconds=time.monotonic() - start)
-            return Outcome(mutant.id, "error", reason=f"check: {_where(result.error, tmp) if result.error else why}",
-                           seconds=time.monotonic() - start)
+        verdict = _verdict(mutant, result, tmp, start)
+        if verdict is not None:
+            return verdict
         deadline = start + subject.timeout
         try:
-            pr = search(subject.side or original, model, subject.projection, subject.max_pairs, deadline)
+            pr = None
+            if graph is not None and subject.graph is not None:
+                pr = graph_search(subject.graph, graph, subject.projection, subject.max_pairs, deadline)
+                if pr.verdict == "difference" and model.config.view is not None:
+                    steps = confirm(original, model, subject.projection, pr.steps)
+                    if steps is None:
+                        pr = None  # a difference of stored states only (graph.py): the exact search decides
+                    else:
+                        pr.steps = steps
+            if pr is None:
+                side = subject.side or OriginalSide(original)
+                pr = search(side, model, subject.projection, subject.max_pairs, deadline)
         except TlaError as e:
             return Outcome(mutant.id, "error", reason=f"product search: {_where(e, tmp)}",
                            seconds=time.monotonic() - start)
@@ -159,6 +162,45 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
         out.itf = difference_itf(subject.projection, pr.steps, mutant)
         out.reason = f"observables differ after {len(pr.steps) - 1} step(s)"
     return out
+
+
+def _check(subject: Subject, model: Model) -> tuple[Any, LabelledGraph | None]:
+    """The mutant's check; on the native core (where the original's graph was recorded
+    there and the core accepts the mutant) recording its labelled graph for the
+    difference search, else `check_model`'s engine choice."""
+    if subject.graph is None:
+        return check_model(model, subject.engine, subject.max_memory_mb), None
+    try:
+        labelled, graph, _why = native_labelled(model, subject.projection, subject.max_memory_mb)
+    except UnsupportedError:
+        # A mutant outside the core's subset (the original is inside): the Python engine.
+        return check_model(model, subject.engine, subject.max_memory_mb), None
+    if labelled is None:
+        # An evaluation error of the core is not always one of the reference: the
+        # Python engine decides (8 of RuntimeSupervisor's 188 mutants stop the core with
+        # an evaluation error and pass the Python engine's check), and a mutant it
+        # passes is searched exactly (product.py).
+        return check_model(model, "python", subject.max_memory_mb), None
+    return labelled, graph
+
+
+def _verdict(mutant: Mutant, result: Any, tmp: str, start: float) -> Outcome | None:
+    """The outcome a check that did not succeed decides (None: every property held)."""
+    if result.result in KILLING_RESULTS:
+        what = "deadlock" if result.result == "deadlock failure" else (result.violated or result.result)
+        return Outcome(mutant.id, "killed", violated=what, trace_length=len(result.trace or []),
+                       seconds=time.monotonic() - start)
+    if result.result != "success":
+        why = result.error.message if result.error else result.result
+        kind = result.error.kind if result.error else ""
+        if kind == "assert":
+            return Outcome(mutant.id, "killed", violated=f"Assert: {why[:120]}",
+                           trace_length=len(result.trace or []), seconds=time.monotonic() - start)
+        if kind == "memory" or "memory" in why.lower():
+            return Outcome(mutant.id, "timeout", reason=f"check: {why}", seconds=time.monotonic() - start)
+        return Outcome(mutant.id, "error", reason=f"check: {_where(result.error, tmp) if result.error else why}",
+                       seconds=time.monotonic() - start)
+    return None
 
 
 def _where(e: TlaError, tmp: str) -> str:
@@ -195,18 +237,43 @@ def difference_itf(proj: Projection, steps: list[DiffStep], mutant: Mutant) -> d
 
 
 def prepare(subject: Subject) -> None:
-    """Explores the original's successors once (before the workers fork)."""
-    if subject.side is None:
-        subject.side = OriginalSide(subject.load_original())
-        subject.side.explore(time.monotonic() + subject.timeout)
+    """Records the original's labelled graph on the native core where it accepts the
+    model, else explores its successors with the Python engine -- once, before the
+    workers fork."""
+    if subject.side is not None or subject.graph is not None:
+        return
+    original = subject.load_original()
+    if subject.engine != "python":
+        with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
+            tla, cfg = materialise(subject, None, Path(tmp))  # without the invariants it violates
+            try:
+                _result, graph, _why = native_labelled(load_model(str(tla), str(cfg)), subject.projection,
+                                                       subject.max_memory_mb)
+            except UnsupportedError:
+                if subject.engine == "native":
+                    raise
+                graph = None
+        if graph is not None:
+            for i in range(len(graph.offsets) - 1):  # shared by every forked search
+                graph.signature(i)
+            graph.signature(-1)
+            subject.graph = graph
+            return
+    subject.side = OriginalSide(original)
+    subject.side.explore(time.monotonic() + subject.timeout)
 
 
 def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                  on_done: Callable[[Mutant, Outcome], None]) -> None:
     """Classifies every mutant in forked children, at most `workers` at once."""
+    import gc
     prepare(subject)
     todo = list(mutants)
     running: dict[Connection, tuple[Mutant, int, float]] = {}
+    # The original's graph and model are shared with every child: frozen, the children's
+    # collector never walks (and so never copies) their pages.
+    gc.collect()
+    gc.freeze()
     try:
         while todo or running:
             while todo and len(running) < max(1, workers):
@@ -227,6 +294,7 @@ def classify_all(subject: Subject, mutants: list[Mutant], workers: int,
                     on_done(m, Outcome(m.id, "timeout", reason=f"check exceeded {subject.timeout:.0f} s",
                                        seconds=now - t0))
     finally:
+        gc.unfreeze()
         for conn, (_m, pid, _t) in running.items():
             _end(pid)
             conn.close()

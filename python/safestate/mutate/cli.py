@@ -26,9 +26,10 @@ from ..errors import SafestateError, closed_stdout_exit, one_line
 from ..tla.errors import TlaError
 from .cache import Cache
 from .classify import Outcome, Subject, classify_all, materialise, prepare
-from .generate import Mutant, generate
+from .generate import Mutant, dedupe, generate
 from .operators import OPERATORS
 from .product import Projection
+from . import results
 from .report import score, summary, write_text
 
 USAGE = 2
@@ -87,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
         return INTERNAL
 
 
-def _resolve(args: argparse.Namespace) -> tuple[str, Path, Path, Projection]:
+def _resolve(args: argparse.Namespace) -> tuple[Any, str, Path, Path, Projection]:
     from ..systems.registry import find, for_model
     system = None
     if args.target.endswith(".tla"):
@@ -111,7 +112,7 @@ def _resolve(args: argparse.Namespace) -> tuple[str, Path, Path, Projection]:
         raise InputError(f"{where}: inputs and observables must be declared (lists of model variables; "
                          f"docs/adding-a-system.md)")
     name = system.name if system else model.stem
-    return name, model, cfg, Projection(tuple(x.strip() for x in inputs), tuple(x.strip() for x in observables))
+    return system, name, model, cfg, Projection(tuple(x.strip() for x in inputs), tuple(x.strip() for x in observables))
 
 
 def _original(subject: Subject, name: str) -> tuple[str, ...]:
@@ -174,12 +175,17 @@ def _run(args: argparse.Namespace) -> int:
         raise InputError("--workers must be at least 1")
     if args.min_score is not None and not 0 <= args.min_score <= 1:
         raise InputError("--min-score is a fraction between 0 and 1")
-    name, model, cfg, proj = _resolve(args)
+    system, name, model, cfg, proj = _resolve(args)
+    justs = results.justifications(system) if system is not None else []
     from ..checker.cfg import parse_config
     conf = parse_config(str(cfg))
     mutants = generate(model, conf.init.name if conf.init else None, conf.next.name if conf.next else None,
                        conf.specification.name if conf.specification else None, args.operator, proj.inputs)
     generated = len(mutants)
+    try:
+        mutants, duplicates = dedupe(mutants, model.parent)
+    except OSError as e:
+        raise InputError(f"{model.parent}: {e}") from None
     chosen = stratified(mutants, args.sample, args.seed) if args.sample else mutants
     if args.list:
         for m in chosen:
@@ -197,7 +203,7 @@ def _run(args: argparse.Namespace) -> int:
         else:
             todo.append(m)
     if todo:
-        print(f"mutate: {name}: exploring the original's successors once for the product searches",
+        print(f"mutate: {name}: exploring the original once (its graph) for the difference searches",
               file=sys.stderr, flush=True)
         prepare(subject)
     progress = _Progress(len(chosen), len(outcomes), len(todo))
@@ -210,7 +216,13 @@ def _run(args: argparse.Namespace) -> int:
         classify_all(subject, todo, args.workers, done)
     ordered = [outcomes[m.id] for m in chosen]
     s = summary(name, generated, chosen, ordered, time.monotonic() - start, subject.dropped,
-                sampled=len(chosen) < generated)
+                sampled=len(chosen) < len(mutants), duplicates=len(duplicates))
+    s.update(sample=args.sample, seed=args.seed if args.sample else None, selected_operators=args.operator,
+             when=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), cfg=str(cfg))
+    results.justify(s, justs)
+    if system is not None and not args.operator and (
+            args.config is None or Path(args.config).resolve() == system.ci_config.resolve()):
+        results.write(system, s)  # the system's last score (all operators): safestate systems, evidence
     if args.itf_dir:
         _write_itf(Path(args.itf_dir), name, ordered)
     if args.json:

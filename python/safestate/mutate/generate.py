@@ -249,3 +249,24 @@ def _declarative(data: bytes, e: Edit) -> tuple[str, str]:
         hi = len(data) if nhi < 0 else nhi
     patched = data[lo:e.start] + e.replacement.encode("utf-8") + data[e.end:hi]
     return orig.decode("utf-8"), patched.decode("utf-8")
+
+
+def dedupe(mutants: list[Mutant], folder: Path) -> tuple[list[Mutant], dict[str, str]]:
+    """The mutants whose mutated file differs from every earlier one's once runs of
+    white space are collapsed, and {id of a left-out duplicate: id of the mutant with
+    its text} (two operators may write the same change: a duplicate is the same model,
+    classified once and counted once)."""
+    texts: dict[str, bytes] = {}
+    first: dict[tuple[str, bytes], str] = {}
+    unique: list[Mutant] = []
+    dups: dict[str, str] = {}
+    for m in mutants:
+        if m.file not in texts:
+            texts[m.file] = (folder / m.file).read_bytes()
+        norm = hashlib.sha256(b" ".join(m.apply(texts[m.file]).split())).digest()
+        rep = first.setdefault((m.file, norm), m.id)
+        if rep == m.id:
+            unique.append(m)
+        else:
+            dups[m.id] = rep
+    return unique, dups

@@ -19,7 +19,7 @@ def score(outcomes: list[Outcome]) -> float | None:
 
 
 def summary(system: str, generated: int, mutants: list[Mutant], outcomes: list[Outcome], seconds: float,
-            dropped: tuple[str, ...], sampled: bool) -> dict[str, Any]:
+            dropped: tuple[str, ...], sampled: bool, duplicates: int = 0) -> dict[str, Any]:
     by_id = {m.id: m for m in mutants}
     c = Counter(o.status for o in outcomes)
     per_op: dict[str, dict[str, int]] = {}
@@ -27,7 +27,8 @@ def summary(system: str, generated: int, mutants: list[Mutant], outcomes: list[O
         per_op.setdefault(by_id[o.mutant].operator, {s: 0 for s in STATUSES})[o.status] += 1
     s = score(outcomes)
     return {
-        "system": system, "generated": generated, "classified": len(outcomes), "sampled": sampled,
+        "system": system, "generated": generated, "duplicates": duplicates, "classified": len(outcomes),
+        "sampled": sampled,
         "counts": {k: c[k] for k in STATUSES}, "score": None if s is None else round(s, 4),
         "seconds": round(seconds, 1), "cached": sum(1 for o in outcomes if o.cached),
         "not_used_invariants": list(dropped), "operators": per_op,
@@ -42,13 +43,16 @@ def _mutant_json(m: Mutant) -> dict[str, Any]:
 
 def write_text(out: TextIO, s: dict[str, Any], mutants: list[Mutant], outcomes: list[Outcome]) -> None:
     by_id = {m.id: m for m in mutants}
+    why = {d["mutant"]: d["justified"] for d in s.get("mutants", []) if d.get("justified")}
     c = s["counts"]
     sc = "n/a (nothing killed or survived)" if s["score"] is None else f"{100 * s['score']:.1f}%"
     sampled = " (a sample)" if s["sampled"] else ""
     out.write(f"{s['system']}: mutation score {sc} = killed {c['killed']} / (killed {c['killed']} + survived "
-              f"{c['survived']}); {s['classified']} of {s['generated']} mutants classified{sampled}, "
+              f"{c['survived']}); {s['classified']} of {s['generated']} mutants classified{sampled}{_dups(s)}, "
               f"{c['equivalent']} equivalent, {c['timeout']} timeout, {c['error']} error, {s['seconds']} s"
               f" ({s['cached']} from the cache)\n")
+    if s.get("justified"):
+        out.write(f"  {s['justified']} survivor(s) justified by the design page (not gaps), {s.get('gaps')} gap(s)\n")
     if s["not_used_invariants"]:
         out.write(f"  the original violates {', '.join(s['not_used_invariants'])}: left out of the mutants' cfg\n")
     out.write("\n  operator             killed survived equivalent timeout error\n")
@@ -73,7 +77,14 @@ def write_text(out: TextIO, s: dict[str, Any], mutants: list[Mutant], outcomes: 
             out.write(f"  {m.file}:{m.line}:{m.column} [{m.operator}] {m.definition}: {m.what}{extra}\n")
             if status == "survived":
                 out.write(f"    - {_one_line(m.original)}\n    + {_one_line(m.patched)}\n")
+                if o.mutant in why:
+                    out.write(f"    justified ({why[o.mutant]['design']}): {why[o.mutant]['why']}\n")
                 write_trace(out, o, indent="    ")
+
+
+def _dups(s: dict[str, Any]) -> str:
+    n = s.get("duplicates", 0)
+    return f" ({n} duplicate{'' if n == 1 else 's'} of another's text left out)" if n else ""
 
 
 def _one_line(s: str, width: int = 150) -> str:

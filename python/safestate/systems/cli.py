@@ -1,7 +1,9 @@
 """``safestate systems [--json]``: every registered system and the state of its parts.
 
 A part is `ok` when its file exists (binding: importable; adapter: loads and is an
-Adapter), `missing` when named but absent, `-` when the manifest names none.
+Adapter), `missing` when named but absent, `-` when the manifest names none.  The
+mutation score is the last `safestate mutate SYSTEM` result (build/mutate/SYSTEM.json),
+with what it was measured on and when; `-` when never measured.
 """
 
 from __future__ import annotations
@@ -42,6 +44,26 @@ def _mutant_count(s: System) -> str:
         return f"error ({e})"
 
 
+def _mutation(s: System) -> dict[str, Any] | None:
+    """The system's last `safestate mutate` result (mutate/results.py), None if never measured."""
+    from ..mutate import results
+
+    d = results.read(s)
+    if d is None:
+        return None
+    keys = ("score", "counts", "generated", "classified", "sampled", "sample", "seed", "when", "seconds", "gaps",
+            "justified")
+    return {k: d.get(k) for k in keys}
+
+
+def _mutation_cell(m: dict[str, Any] | None) -> str:
+    if m is None:
+        return "-"
+    sc = "n/a" if m.get("score") is None else f"{100 * m['score']:.1f}%"
+    what = f"sample {m.get('classified')} seed {m.get('seed')}" if m.get("sampled") else "all"
+    return f"{sc} ({what} of {m.get('generated')}, {str(m.get('when', '?'))[:10]})"
+
+
 def status(s: System) -> dict[str, Any]:
     from ..conform.adapter import Adapter
 
@@ -50,7 +72,7 @@ def status(s: System) -> dict[str, Any]:
         "design": _file(s.design), "model": _file(s.model),
         "configs": "ok" if all(c.is_file() for c in s.configs) else "missing",
         "proofs": _file(s.proofs), "mutants": _mutant_count(s),
-        "requirements": s.requirements,
+        "requirements": s.requirements, "mutation": _mutation(s),
     }
     if s.conformance is None:
         out["binding"] = out["adapter"] = "-"
@@ -90,7 +112,9 @@ def _listing(args: argparse.Namespace, systems: list[System]) -> int:
     if args.json:
         print(json.dumps({"registry": str(registry_dir()), "systems": rows}))
         return 0
-    cols = ("name", "model", "configs", "proofs", "mutants", "binding", "adapter")
+    cols = ("name", "model", "configs", "proofs", "mutants", "binding", "adapter", "mutation score")
+    for r in rows:
+        r["mutation score"] = _mutation_cell(r["mutation"])
     print(f"registry: {registry_dir()}")
     w = {c: max([len(c)] + [len(str(r[c])) for r in rows]) for c in cols}
     print("  ".join(f"{c:<{w[c]}}" for c in cols) + "  requirements")

@@ -68,6 +68,12 @@ def eq_code(a: Code, b: Code, loc: Loc, negate: bool) -> Code | None:
         other = b
         if c is NO_VALUE or type(c) not in _SIMPLE:
             return None
+        # TLC's error names the left operand first: 1 = <<1>> is "integer 1 with non-integer".
+        def slow(x: Any) -> bool:
+            return _eq_error(c, x, loc)
+    else:
+        def slow(x: Any) -> bool:
+            return _eq_error(x, c, loc)
     ct = type(c)
     slot = getattr(other, "slot", None)
     if slot is not None:
@@ -76,28 +82,28 @@ def eq_code(a: Code, b: Code, loc: Loc, negate: bool) -> Code | None:
                 x = L[slot]
                 if type(x) is ct:
                     return x != c
-                return not _eq_error(x, c, loc)
+                return not slow(x)
             return neq_slot
 
         def eq_slot(s: Any, t: Any, L: list) -> bool:
             x = L[slot]
             if type(x) is ct:
                 return x == c
-            return _eq_error(x, c, loc)
+            return slow(x)
         return eq_slot
     if negate:
         def neq_const(s: Any, t: Any, L: list) -> bool:
             x = other(s, t, L)
             if type(x) is ct:
                 return x != c
-            return not _eq_error(x, c, loc)
+            return not slow(x)
         return neq_const
 
     def eq_const(s: Any, t: Any, L: list) -> bool:
         x = other(s, t, L)
         if type(x) is ct:
             return x == c
-        return _eq_error(x, c, loc)
+        return slow(x)
     return eq_const
 
 

@@ -19,6 +19,7 @@ from .tlcget import tlc_get, tlc_set
 from .values import (
     INT, NAT, FilteredSet, check_same_kind_sets, FnValue, IntervalSet, LazySet, SeqSet, Value, as_set, finite_subseteq, fmt,
     is_finite, iter_set, kind, make_fn, member, set_size, sorted_elems, values_equal, is_set, ModelValue,
+    tlc_equals, tlc_fn_items,
 )
 
 
@@ -117,6 +118,8 @@ def div(a: Value, b: Value) -> int:
     a, b = _int(a, "\\div"), _int(b, "\\div")
     if b == 0:
         raise ModuleEvalError("The second argument of \\div is 0.")
+    if a == TLC_MIN_INT and b == -1:  # the one quotient outside 32 bits (Integers.Divide)
+        raise ModuleEvalError(f"Overflow when computing {a} \\div {b}")
     return a // b
 
 
@@ -138,7 +141,10 @@ def interval(a: Value, b: Value) -> IntervalSet:
 
 
 def negate(a: Value) -> int:
-    return -_int(a, "-")
+    n = _int(a, "-")
+    if n == TLC_MIN_INT:  # TLC's Integers.Neg: the message as TLC writes it
+        raise ModuleEvalError(f"Overflow when computing -{n}")
+    return -n
 
 
 NATURALS = {
@@ -282,17 +288,32 @@ def single_fn(k: Value, v: Value) -> Value:
     return make_fn({k: v})
 
 
-def fn_items(f: Value) -> dict:
+def fn_items(f: Value, which: str = "first") -> dict:
     if type(f) is tuple:
         return {i + 1: x for i, x in enumerate(f)}
     if type(f) is FnValue:
         return f.d
-    raise EvalError(f"Attempted to apply @@ to the non-function {fmt(f)}")
+    raise ModuleEvalError(f"The {which} argument of @@ should be a function, but instead it is:\n{fmt(f)}")
+
+
+_PLAIN_KEYS = (int, str)
 
 
 def merge_fn(f: Value, g: Value) -> Value:
-    d = dict(fn_items(g))
-    d.update(fn_items(f))
+    """TLC's CombineFcn: f's keys, then each key of g that equals none of them, looked
+    up with TLC's ``equals`` (an error for keys of incomparable kinds: ``(TRUE :> 1) @@
+    (1 :> 2)``, which a Python dict would merge)."""
+    d1, d2 = fn_items(f), fn_items(g, "second")
+    types = set(map(type, d1)) | set(map(type, d2))
+    if len(types) == 1 and types <= set(_PLAIN_KEYS):
+        d = dict(d2)
+        d.update(d1)
+        return make_fn(d)
+    keys1 = [k for k, _ in tlc_fn_items(f)]
+    d = dict(d1)
+    for k2, v2 in tlc_fn_items(g):
+        if not any(tlc_equals(k2, k1) for k1 in keys1):
+            d[k2] = v2
     return make_fn(d)
 
 
@@ -562,7 +583,8 @@ def union(s: Value) -> Value:
     if any(_infinite(x) for x in parts):
         # UNION {[D -> Int]}: only membership can be tested, as TLC's UnionValue.
         return FilteredSet(lambda v: any(member(v, x) for x in parts), "UNION {" + ", ".join(
-            x.describe() if isinstance(x, LazySet) else fmt(x) for x in parts) + "}")
+            x.describe() if isinstance(x, LazySet) else fmt(x) for x in parts) + "}",
+            "Attempted to enumerate UNION(s), but some element of s is nonenumerable.")
     out: set = set()
     for x in parts:
         out |= as_set(x)

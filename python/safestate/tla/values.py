@@ -29,7 +29,7 @@ would make two different TLA+ values one, the kind is checked explicitly:
 from __future__ import annotations
 
 import itertools
-from itertools import compress
+from itertools import chain, compress
 from operator import is_, is_not
 from typing import Any, Callable, Iterable, Iterator
 
@@ -411,10 +411,13 @@ class ProductSet(LazySet):
 class FilteredSet(LazySet):
     """An infinite set combined with another set: ``Nat \\ {0}``, ``Int \\cup {..}``..."""
 
-    __slots__ = ("test", "text", "finite")
+    __slots__ = ("test", "text", "finite", "java_error")
 
-    def __init__(self, test: Any, text: str) -> None:
+    def __init__(self, test: Any, text: str, java_error: str | None = None) -> None:
         self.test, self.text, self.finite = test, text, False
+        # TLC's message where its Java code throws instead of reporting (UNION {Nat}
+        # held in a state: "TLC threw an unexpected exception", exit 255).
+        self.java_error = java_error
 
     def contains(self, v: Value) -> bool:
         return self.test(v)
@@ -735,7 +738,7 @@ def _unequal_plainly(a: Value, b: Value, t: type) -> bool:
     if t is FnValue:
         da, db = a.d, b.d
         if len(da) != len(db):
-            return True
+            return not _record_against_non_record(a, b)
         if type(next(iter(da), "")) is str and list(da) == list(db):
             va, vb = da.values(), db.values()
             return _SIMPLE_SET.issuperset(map(type, va)) and list(map(type, va)) == list(map(type, vb))
@@ -747,8 +750,15 @@ def _unequal_plainly(a: Value, b: Value, t: type) -> bool:
 
 
 def _equality_error(a: Value, b: Value) -> EvalError:
-    """TLC's message where ``a.equals(b)`` meets values of incomparable kinds."""
+    """TLC's message where ``a.equals(b)`` meets values of incomparable kinds (each
+    value class of TLC words it its own way)."""
     ka = kind(a)
+    if ka == "function":
+        if type(a) is FnValue and a.d and all(type(k) is str for k in a.d):
+            return EvalError(f"Attempted to check equality of record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
+        return EvalError(f"Attempted to check equality of the function {fmt(a)} with the value:\n{fmt(b)}")
+    if ka == "set":
+        return EvalError(f"Attempted to check equality of the set {fmt(a)} with the value:\n{fmt(b)}")
     verb = "compare equality" if ka == "boolean" else "check equality"
     return EvalError(f"Attempted to {verb} of {ka} {fmt(a)} with non-{ka}:\n{fmt(b)}")
 
@@ -764,7 +774,7 @@ def _compare_error(a: Value, b: Value) -> EvalError:
     return EvalError(f"Attempted to compare the set {fmt(a)} with the value:\n{fmt(b)}")
 
 
-def _fn_items(f: Value) -> list:
+def tlc_fn_items(f: Value) -> list:
     """A function's (key, value) pairs in TLC's order of its domain."""
     if type(f) is tuple:
         return list(zip(range(1, len(f) + 1), f))
@@ -793,7 +803,9 @@ def tlc_equals(a: Value, b: Value) -> bool:
         return all(tlc_equals(x, y) for x, y in zip(sorted_elems(a), sorted_elems(b)))
     if ta is tuple and tb is tuple:
         return len(a) == len(b) and all(tlc_equals(x, y) for x, y in zip(a, b))
-    ia, ib = _fn_items(a), _fn_items(b)
+    if _record_against_non_record(a, b):
+        raise EvalError(f"Attempted to check equality of record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
+    ia, ib = tlc_fn_items(a), tlc_fn_items(b)
     if len(ia) != len(ib):
         return False
     if ta is FnValue and tb is FnValue and all(type(k) is str for k, _ in ia):
@@ -805,6 +817,16 @@ def tlc_equals(a: Value, b: Value) -> bool:
             if not tlc_equals(x, y):
                 return False
     return all(tlc_equals(x, y) for (_, x), (_, y) in zip(ia, ib))
+
+
+def _record_against_non_record(a: Value, b: Value) -> bool:
+    """TLC's RecordValue.equals(b): `a` a record and `b` a function that is not one (a
+    domain other than field names), an error whatever the sizes; ``<<>>`` is the empty record."""
+    if type(a) is not FnValue or not a.d or not all(type(k) is str for k in a.d):
+        return False
+    if type(b) is tuple:
+        return len(b) > 0
+    return type(b) is FnValue and not all(type(k) is str for k in b.d)
 
 
 def same_kinds(a: Value, b: Value) -> bool:
@@ -922,17 +944,51 @@ def exact_key(v: Value) -> Any:
     return v
 
 
+def kind_signature(v: Value) -> Any:
+    """The kinds inside `v`, position by position: two values with one signature are
+    compared by TLC (sorting, ``=``) without meeting values of incomparable kinds.  None
+    where that cannot be told this way (model values, lazy sets, a set whose elements
+    differ in shape, a function over compound values)."""
+    t = type(v)
+    if t is int or t is str or t is bool:
+        return t
+    if t is tuple:
+        return (tuple, tuple(map(kind_signature, v)))
+    if t is FnValue:
+        d = v.d
+        kt = set(map(type, d))
+        if kt == {str}:  # a record: its fields by name
+            return (FnValue, frozenset((k, kind_signature(x)) for k, x in d.items()))
+        if kt == {int} or kt == {bool}:  # TLC compares the domains in this order
+            return (FnValue, tuple((type(k), kind_signature(d[k])) for k in sorted(d)))
+        return None
+    if t is frozenset:
+        inner = set(map(kind_signature, v))
+        if len(inner) > 1 or None in inner:
+            return None
+        return (frozenset, inner.pop() if inner else ())
+    return None
+
+
+def uniform_kinds(elems: Iterable[Value]) -> bool:
+    """True when all `elems` have one (known) kind signature: any comparison TLC makes
+    between them pairs values of one kind."""
+    sigs = set(map(kind_signature, elems))
+    return len(sigs) <= 1 and None not in sigs
+
+
 def check_set_kinds(elems: list, s: frozenset) -> frozenset:
     """The set `s` built from `elems`, or TLC's error where sorting them (TLC normalises
     every set it compares, stores or counts) compares values of incomparable kinds:
-    ``{1, TRUE}`` is an error, not a one-element set.  Sets of functions or sets are
-    checked when Python merged two of their elements (``{<<1>>, <<TRUE>>}``)."""
+    ``{1, TRUE}`` is an error, not a one-element set, and so are ``{<<1>>, <<TRUE>>}``
+    (which Python merges) and ``{[a |-> 1], (2 :> 1)}`` (a field name against 2).
+    Compounds of one kind signature need no sorting."""
     types = set(map(type, elems))
     if len(types) == 1:
         t = types.pop()
-        if t in _SIMPLE or t is ModelValue or len(s) == len(elems):
+        if t in _SIMPLE or t is ModelValue or len(elems) < 2:
             return s
-        if len(set(map(exact_key, elems))) == len(s):
+        if (len(s) == len(elems) or len(set(map(exact_key, elems))) == len(s)) and uniform_kinds(elems):
             return s
     else:
         types.discard(ModelValue)
@@ -948,8 +1004,12 @@ def check_same_kind_sets(a: frozenset, b: frozenset, op: str) -> None:
     if not a or not b:
         return
     ta, tb = type(next(iter(a))), type(next(iter(b)))
-    if ta is tb or ta is ModelValue or tb is ModelValue or (ta in _CONTAINERS and tb in _CONTAINERS
-                                                             and (ta is frozenset) is (tb is frozenset)):
+    if ta is ModelValue or tb is ModelValue:
+        return
+    if ta is tb and ta not in _CONTAINERS:
+        return
+    if (ta in _CONTAINERS and tb in _CONTAINERS and (ta is frozenset) is (tb is frozenset)
+            and uniform_kinds(chain(a, b))):
         return
     # TLC looks each element of one set up in the other (`x.equals(y)` along a set
     # literal, which it keeps unsorted): for \\cup an element of `b` in `a`, for \\cap
@@ -982,7 +1042,9 @@ def _tlc_compare(a: Value, b: Value) -> int:
                 return c
         return 0
     if ka == "function":
-        ia, ib = _fn_items(a), _fn_items(b)
+        if _record_against_non_record(a, b):  # RecordValue.compareTo, whatever the sizes
+            raise EvalError(f"Attempted to compare record:\n{fmt(a)}\nwith non-record\n{fmt(b)}")
+        ia, ib = tlc_fn_items(a), tlc_fn_items(b)
         if len(ia) != len(ib):
             return len(ia) - len(ib)
         for (x, _), (y, _) in zip(ia, ib):

@@ -1,5 +1,7 @@
 #include "safestate/pro/ao_modbus_server.hpp"
 
+#include "safestate/pro/modbus_write_guard.hpp"
+
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <modbus/modbus.h>
@@ -71,10 +73,19 @@ void AoModbusServer::close_connection(Connection& c) noexcept {
   ++counters_.connections_closed;
 }
 
+bool AoModbusServer::allowed(std::uint32_t host_address) const noexcept {
+  for (std::size_t i = 0; i < config_.write_allowlist_size && i < config_.write_allowlist.size(); ++i) {
+    if (config_.write_allowlist[i] == host_address) return true;
+  }
+  return false;
+}
+
 void AoModbusServer::accept_clients() noexcept {
   // At most one accept per slot and tick, plus one to refuse: bounded work.
   for (std::size_t attempt = 0; attempt <= kModbusMaxConnections; ++attempt) {
-    const int fd = accept4(listen_fd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    sockaddr_in peer{};
+    socklen_t peer_len = sizeof peer;
+    const int fd = accept4(listen_fd_, reinterpret_cast<sockaddr*>(&peer), &peer_len, SOCK_NONBLOCK | SOCK_CLOEXEC);
     if (fd < 0) return;  // EAGAIN: nobody waiting (other errors: retried next tick)
     Connection* slot = nullptr;
     for (Connection& c : connections_) {
@@ -93,6 +104,8 @@ void AoModbusServer::accept_clients() noexcept {
     slot->fd = fd;
     slot->used = 0;
     slot->last_frame_tick = tick_;
+    slot->write_allowed = peer.sin_family == AF_INET && allowed(ntohl(peer.sin_addr.s_addr));
+    slot->armed = false;
     ++counters_.connections_accepted;
   }
 }
@@ -120,15 +133,31 @@ bool AoModbusServer::handle_frame(Connection& c, const ProcessImage& image) noex
   const std::size_t size = 6U + length;
   if (c.used < size) return false;
 
-  const ModbusVerdict verdict = check_modbus_request(c.buffer.data(), size, config_.unit_id);
+  ModbusVerdict verdict = check_modbus_request(c.buffer.data(), size, config_.unit_id);
+  ModbusWrite write{};
+  if (verdict.action == ModbusAction::serve) {
+    write = classify_write(c.buffer.data());
+    const ModbusReason refusal = authorize_write(write, c.write_allowed, armed(c));
+    if (refusal != ModbusReason::ok)
+      verdict = {ModbusAction::reply_exception, ModbusException::illegal_function, refusal, false};
+  }
   modbus_set_socket(ctx_, c.fd);
   int sent = 0;
   switch (verdict.action) {
     case ModbusAction::serve:
       // Coil 0 reads back 1 while a clear request is pending (here or in the controller).
       mapping_->tab_bits[kLatchClearCoil] = (clear_requested_ || image.latch_clear_request != 0) ? 1 : 0;
+      mapping_->tab_bits[kWriteEnableCoil] = armed(c) ? 1 : 0;  // reads back this connection's arm
       sent = modbus_reply(ctx_, c.buffer.data(), static_cast<int>(size), mapping_);
-      if (verdict.requests_latch_clear && sent > 0) clear_requested_ = true;
+      if (sent > 0) {
+        if (verdict.requests_latch_clear) clear_requested_ = true;
+        if (write.latch_coil) c.armed = false;  // one write per handshake
+        if (write.arm) {
+          c.armed = true;
+          c.armed_tick = tick_;
+        }
+        if (write.disarm) c.armed = false;
+      }
       break;
     case ModbusAction::reply_exception:
       sent = modbus_reply_exception(ctx_, c.buffer.data(), static_cast<unsigned>(verdict.exception));

@@ -5,6 +5,8 @@
 // Prints `listening 127.0.0.1:<port>` once bound, `clear request taken at tick <n>` for
 // every latch clear request handed over, and on SIGTERM/SIGINT stops the server (socket
 // closed, clients disconnected) and prints `stopped` and the frame counters.
+#include <arpa/inet.h>
+
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -24,7 +26,8 @@ constexpr const char* kUsage =
     "usage: pro_modbus_serve [--port N] [--unit-id N] [--tick-ms N] [--frame-timeout-ticks N]\n"
     "                        [--idle-timeout-ticks N] [--temperature-c N] [--voltage-dv N]\n"
     "                        [--fan-percent N] [--protection-state N] [--supervisor-state N]\n"
-    "                        [--last-clear-result N]\n";
+    "                        [--last-clear-result N] [--allow-writes-from A.B.C.D]...\n"
+    "                        [--arm-window-ticks N]\n";
 
 constexpr const char* kReasonNames[] = {"ok",
                                         "unsupported_function",
@@ -38,7 +41,9 @@ constexpr const char* kReasonNames[] = {"ok",
                                         "reserved_function",
                                         "bad_mbap_length",
                                         "truncated_frame",
-                                        "send_failed"};
+                                        "send_failed",
+                                        "write_not_allowed",
+                                        "write_not_armed"};
 static_assert(sizeof kReasonNames / sizeof kReasonNames[0] == safestate::pro::kModbusReasonCount);
 
 // Parses `text` as an integer in [lo, hi]; false (with a one-line error) otherwise.
@@ -61,6 +66,7 @@ int main(int argc, char** argv) {
   ModbusServerConfig config;
   ProcessImage image;
   long tick_ms = 100;
+  std::size_t allow_given = 0;
   for (int i = 1; i < argc; ++i) {
     const char* opt = argv[i];
     if (i + 1 >= argc) {
@@ -91,6 +97,17 @@ int main(int argc, char** argv) {
       ok = parse(opt, val, 0, 1, v) && ((image.protection_state = static_cast<std::uint16_t>(v)), true);
     } else if (!std::strcmp(opt, "--supervisor-state")) {
       ok = parse(opt, val, 0, 4, v) && ((image.supervisor_state = static_cast<std::uint16_t>(v)), true);
+    } else if (!std::strcmp(opt, "--allow-writes-from")) {
+      in_addr a{};
+      if (inet_pton(AF_INET, val, &a) != 1 || allow_given >= config.write_allowlist.size()) {
+        std::fprintf(stderr, "pro_modbus_serve: %s: expected an IPv4 address (at most %zu), got '%s'\n", opt,
+                     config.write_allowlist.size(), val);
+        return 2;
+      }
+      config.write_allowlist[allow_given++] = ntohl(a.s_addr);
+      config.write_allowlist_size = allow_given;
+    } else if (!std::strcmp(opt, "--arm-window-ticks")) {
+      ok = parse(opt, val, 1, 1000000, v) && ((config.arm_window_ticks = static_cast<std::uint32_t>(v)), true);
     } else if (!std::strcmp(opt, "--last-clear-result")) {
       ok = parse(opt, val, 0, 3, v) && ((image.last_clear_result = static_cast<std::uint16_t>(v)), true);
     } else {

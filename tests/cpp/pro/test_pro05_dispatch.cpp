@@ -39,4 +39,34 @@ TEST(PRO05_Dispatch, AnAoNotReadyIsSkippedWithoutChangingTheOrder) {
 
 TEST(PRO05_Dispatch, NothingIsDispatchedBeforeRunOrAfterShutdown) { EXPECT_TRUE(run(DispatchMode::none).empty()); }
 
+// Issue 31 item 4: the dispatcher gate exactly as the runtime applies it, and what
+// ao_safety evaluated in a cycle.
+TEST(PRO05_Dispatch, NoDispatchCycleWhileTheDispatcherIsNotReady) {
+  using safestate::pro::dispatch_gate;
+  using safestate::pro::UnitStatus;
+  for (const DispatchMode m : {DispatchMode::all, DispatchMode::critical_only, DispatchMode::none}) {
+    EXPECT_EQ(dispatch_gate(m, UnitStatus::ready), m);
+    EXPECT_EQ(dispatch_gate(m, UnitStatus::init), DispatchMode::none);
+    EXPECT_EQ(dispatch_gate(m, UnitStatus::failed), DispatchMode::none);
+    EXPECT_EQ(dispatch_gate(m, UnitStatus::stopped), DispatchMode::none);
+  }
+}
+
+TEST(PRO04_Dispatch, SafetyEvaluatesAFreshSnapshotOnlyWithMonitoringBeforeItInTheCycle) {
+  using safestate::pro::DispatchRecord;
+  using safestate::pro::safety_input_of;
+  using safestate::pro::SafetyInput;
+  DispatchRecord r;
+  EXPECT_EQ(safety_input_of(r), SafetyInput::none);
+  r.order[r.count++] = AoId::monitoring;
+  r.order[r.count++] = AoId::control;
+  EXPECT_EQ(safety_input_of(r), SafetyInput::none);
+  r.order[r.count++] = AoId::safety;
+  EXPECT_EQ(safety_input_of(r), SafetyInput::fresh);
+  DispatchRecord blind;
+  blind.order[blind.count++] = AoId::control;
+  blind.order[blind.count++] = AoId::safety;
+  EXPECT_EQ(safety_input_of(blind), SafetyInput::empty);
+}
+
 }  // namespace

@@ -22,7 +22,7 @@ struct Loop {
   explicit Loop(bool comms_fails = false, RuntimeConfig cfg = {}) : panel(comms_fails), rt(panel, cfg) {}
   TickReport tick() {
     const TickReport r = rt.tick(plant.inputs());
-    plant.step(r.fan_output);
+    plant.step(r.fan_output, r.load_enable);
     return r;
   }
   ProtectionState prot() const { return rt.safety().context().protection_state; }
@@ -123,14 +123,16 @@ TEST(PRO04_Response, OverTemperatureInTheClosedLoopIsProtectedWithinTheBudget) {
 
 TEST(PRO02_Latch, ClearDeniedWhileHotAcceptedWhenCoolThroughTheCommsSlot) {
   Loop l;
-  l.plant.set_heat_load_w(1800);
+  // A blocked air inlet: hot even with the equipment disabled, so the hazard persists.
+  l.plant.set_heat_load_w(600);
+  l.plant.set_ambient_c(95);
   for (int i = 0; i < 300 && l.prot() == ProtectionState::normal; ++i) l.tick();
   ASSERT_EQ(l.prot(), ProtectionState::protection);
   l.panel.request_clear();
   l.tick();
   EXPECT_EQ(l.tick().safety_result, SafetyResult::latch_blocked);
   EXPECT_EQ(l.rt.data().image.last_clear_result, 2U);
-  l.plant.set_heat_load_w(200);
+  l.plant.set_ambient_c(25);
   for (int i = 0; i < 400 && l.plant.temperature_c() > 60; ++i) l.tick();
   EXPECT_EQ(l.prot(), ProtectionState::protection);  // latched while cool
   l.panel.request_clear();
@@ -204,6 +206,78 @@ TEST(PRO03_Control, ThePiControllerRegulatesTowardsItsSetpointAndSaturates) {
   for (int i = 0; i < 600; ++i) l.tick();
   EXPECT_NEAR(l.plant.temperature_c(), 55.0, 2.0);  // settles at the setpoint
   EXPECT_EQ(l.prot(), ProtectionState::normal);
+}
+
+// Issue 31 item 5: the protective state changes the outputs (outputs_disabled), the fan
+// driver's fault line is the event's hazard_detected, and the fail-safe defaults of a
+// dispatch cycle (docs/design/protection.md §2, §4, §4a, §13).
+TEST(PRO03_OutputsDisabled, OverTemperatureRemovesThePermissiveAndTheTemperatureFalls) {
+  Loop l;
+  l.plant.set_heat_load_w(1800);
+  TickReport r;
+  for (int i = 0; i < 300 && l.prot() == ProtectionState::normal; ++i) {
+    r = l.tick();
+    if (l.prot() == ProtectionState::normal) {
+      ASSERT_TRUE(r.load_enable);  // regulation keeps it on, fan at 100 % or not
+    }
+  }
+  ASSERT_EQ(l.prot(), ProtectionState::protection);
+  EXPECT_FALSE(r.load_enable);
+  EXPECT_FALSE(l.plant.load_on());
+  const double at_entry = l.plant.temperature_c();
+  for (int i = 0; i < 50; ++i) EXPECT_FALSE(l.tick().load_enable);  // latched: still disabled
+  EXPECT_LT(l.plant.temperature_c(), at_entry - 5.0);               // the heat source is off: it cools
+}
+
+TEST(PRO01_HazardDetected, AFanDriverFaultAloneProtectsDegradesAndStaysLatchedThroughRecovery) {
+  Loop l;
+  PlantParameters p;
+  p.driver_lockout_dv = 200;  // the driver cuts out at 20 V: a supply of 19 V is no under-voltage hazard
+  l.plant = ThermalPlant(p);
+  l.plant.set_heat_load_w(500);
+  for (int i = 0; i < 5; ++i) ASSERT_EQ(l.tick().state, SupervisorState::run);
+  l.plant.set_supply_dv(190);
+  TickReport r = l.tick();
+  EXPECT_EQ(r.safety_result, SafetyResult::protection_entered);
+  EXPECT_EQ(l.rt.diagnostics().last_fault(), FaultCause::hazard_detected);
+  EXPECT_EQ(r.state, SupervisorState::degraded);
+  EXPECT_FALSE(r.load_enable);
+  EXPECT_TRUE(l.rt.safety().degraded());  // EVT_DEGRADED reached ao_safety after the dispatch cycle
+  l.plant.set_supply_dv(240);
+  r = l.tick();
+  EXPECT_EQ(std::string(r.row->id), "D01");
+  EXPECT_FALSE(l.rt.safety().degraded());            // EVT_RECOVERY
+  EXPECT_EQ(l.prot(), ProtectionState::protection);  // recovery is no clear
+  EXPECT_FALSE(l.tick().load_enable);
+  l.panel.request_clear();
+  l.tick();
+  EXPECT_TRUE(l.tick().load_enable);
+  EXPECT_EQ(l.prot(), ProtectionState::normal);
+}
+
+TEST(PRO05_FailSafe, ShutdownKeepsThePermissiveOffFromStepOneToTheEnd) {
+  Loop l;
+  l.plant.set_heat_load_w(500);
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(l.tick().load_enable);
+  l.rt.request_shutdown();
+  for (int i = 0; i < 20 && l.rt.supervisor().state() != SupervisorState::stopped; ++i) {
+    const TickReport r = l.tick();
+    if (l.rt.supervisor().outputs_safe()) {
+      EXPECT_FALSE(r.load_enable);
+      EXPECT_EQ(r.fan_output, kSafeFanCommandPercent);
+    }
+    if (r.safety_ran) {
+      EXPECT_EQ(r.safety_input, SafetyInput::fresh);  // monitoring stops after safety
+    }
+  }
+  EXPECT_EQ(l.rt.supervisor().state(), SupervisorState::stopped);
+}
+
+TEST(PRO05_FailSafe, DegradedFromTheFirstTickKeepsProtectionOnAFreshSnapshot) {
+  Loop l(true);  // comms cannot start: Degraded from the first tick, comms never dispatched
+  const TickReport r = l.tick();
+  EXPECT_EQ(r.safety_input, SafetyInput::fresh);
+  EXPECT_TRUE(r.load_enable);  // Degraded keeps the protective chain running and regulating
 }
 
 }  // namespace

@@ -97,3 +97,52 @@ TEST(PRO04_Response, ProtectionInTheTickOfTheFirstHazardousSnapshot) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 31 item 5: the event's hazard_detected, the outputs_disabled state and the
+// degraded mode (docs/design/protection.md §2-§4a).
+TEST(PRO01_HazardDetected, TheEventsHazardFlagAloneEntersProtectionWithItsCause) {
+  AoSafety safety;
+  SensorSnapshot s = kNominal;
+  s.hazard_detected = true;
+  EXPECT_EQ(safety.hazard_cause(s), FaultCause::hazard_detected);
+  EXPECT_EQ(safety.dispatch(s, 1), SafetyResult::protection_entered);
+  EXPECT_EQ(safety.last_fault_event(), FaultCause::hazard_detected);
+  s.temperature_c = 90;  // a measured cause is reported before the flag
+  EXPECT_EQ(safety.hazard_cause(s), FaultCause::over_temperature);
+}
+
+TEST(PRO03_OutputsDisabled, ProtectionRemovesThePermissiveAndForcesTheSafeFanValue) {
+  AoSafety safety;
+  ASSERT_EQ(safety.dispatch(kNominal, 1), SafetyResult::ok);
+  EXPECT_TRUE(safety.load_enable());
+  EXPECT_EQ(safety.fan_output(40), 40);
+  ASSERT_EQ(safety.dispatch(reading(90, 240), 2), SafetyResult::protection_entered);
+  EXPECT_FALSE(safety.load_enable());
+  EXPECT_EQ(safety.fan_output(100), safestate::pro::kSafeFanCommandPercent);  // regulation's own 100 % is no protection
+  EXPECT_EQ(safety.fan_output(40), safestate::pro::kSafeFanCommandPercent);
+}
+
+TEST(PRO02_Latch, InDegradedAClearWithoutAHazardIsDeniedAndRecoveryDoesNotClear) {
+  AoSafety safety;
+  ASSERT_EQ(safety.dispatch(reading(90, 240), 1), SafetyResult::protection_entered);
+  safety.set_degraded(true);  // EVT_DEGRADED
+  EXPECT_EQ(safety.dispatch(reading(40, 240, true, true), 2), SafetyResult::latch_blocked);
+  EXPECT_EQ(safety.last_fault_event(), FaultCause::latch_blocked);
+  safety.set_degraded(false);  // EVT_RECOVERY
+  EXPECT_EQ(safety.dispatch(kNominal, 3), SafetyResult::ok);
+  EXPECT_EQ(safety.context().protection_state, ProtectionState::protection);  // still latched
+  EXPECT_FALSE(safety.load_enable());
+  EXPECT_EQ(safety.dispatch(reading(40, 240, true, true), 4), SafetyResult::ok);
+  EXPECT_EQ(safety.context().protection_state, ProtectionState::normal);
+  EXPECT_TRUE(safety.load_enable());
+}
+
+TEST(PRO01_HazardDetected, InDegradedAHazardStillEntersProtection) {
+  AoSafety safety;
+  safety.set_degraded(true);
+  EXPECT_EQ(safety.dispatch(reading(40, 170), 1), SafetyResult::protection_entered);
+}
+
+}  // namespace

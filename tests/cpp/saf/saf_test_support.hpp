@@ -14,10 +14,25 @@ namespace safestate::saf::test {
 inline constexpr Timing kSmall{2, 3, 2, 3};
 inline constexpr std::uint32_t kOtherComponent = 0x0009'0909;
 
+/// The peer a message of this kind comes from (a transport that binds senders, design §5).
+inline Sender peer_of(const Message& m) { return m.id == MessageId::SetEstop ? Sender::Client : Sender::Subsystem; }
+
+/// The messages of one cycle, each from the peer of its kind and fresh.
 inline InboundBatch batch(std::initializer_list<Message> messages) {
   InboundBatch b{};
-  for (const Message& m : messages) EXPECT_TRUE(b.push(encode(m)));
+  for (const Message& m : messages) EXPECT_TRUE(b.push(encode(m), peer_of(m), true));
   return b;
+}
+
+/// Tags every datagram of a received batch as from the peer of its kind, fresh: the
+/// in-process rigs have one sender per kind and no sender binding of their own.
+inline void tag_by_kind(InboundBatch& b) {
+  for (std::size_t i = 0; i < b.count; ++i) {
+    Datagram& d = b.items[i];
+    const DecodeResult r = decode(d.bytes.data(), d.size);
+    d.from = r.ok() && r.message.id == MessageId::SetEstop ? Sender::Client : Sender::Subsystem;
+    d.fresh = true;
+  }
 }
 
 inline CycleResult run(SafetyService& s, std::initializer_list<Message> messages, bool hw = false) {

@@ -8,7 +8,9 @@ namespace {
 
 TEST(SAF01_States, ConstructedInPairingWithNothingReceived) {
   SafetyService s{kSmall, 225};
-  EXPECT_EQ(s.observe(), Observable{});
+  Observable constructed{};
+  constructed.set_age = kSmall.message_interval;  // no Set Subsystem State(EMERGENCY) sent yet
+  EXPECT_EQ(s.observe(), constructed);
   EXPECT_EQ(s.observe().state, SafState::Pairing);
 }
 

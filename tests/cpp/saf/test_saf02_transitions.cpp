@@ -32,9 +32,8 @@ TEST(SAF02_TransitionA, FirstSetEstopWithEmergencyEntersEmergency) {
 TEST(SAF02_TransitionB, SetEstopTimeoutAfterEstopTimeoutCycles) {
   SafetyService s = operational();  // EstopTimeoutCycles = 2
   (void)run(s, {});
-  (void)run(s, {});
-  EXPECT_EQ(s.observe().state, SafState::Operational);  // 2 cycles without: tolerated
-  CycleResult r = run(s, {});
+  EXPECT_EQ(s.observe().state, SafState::Operational);  // 1 cycle without: tolerated
+  CycleResult r = run(s, {});                           // ESTOPTIMEOUT = 2 cycles without a Set Estop: B
   EXPECT_EQ(r.state_row, "O01");
   EXPECT_EQ(s.observe().state, SafState::Emergency);
   EXPECT_EQ(r.control_row, "K01");
@@ -190,10 +189,11 @@ TEST(SAF02_InvSafEmergency, HoldsOnRandomMessageSequences) {
     for (int i = 0; i < 500; ++i) {
       InboundBatch b{};
       const unsigned pick = rng();
-      if (pick % 3 == 1) (void)b.push(encode(Message::set_estop(pick % 7 == 0)));
-      if (pick % 5 == 1) (void)b.push(encode(health(static_cast<Health>(rng() % 4))));
-      if (pick % 4 == 1) (void)b.push(encode(rng() % 2 ? accepted() : refused()));
-      if (pick % 11 == 1) (void)b.push(encode(taken_by_other()));
+      if (pick % 3 == 1) (void)b.push(encode(Message::set_estop(pick % 7 == 0)), Sender::Client);
+      if (pick % 5 == 1) (void)b.push(encode(health(static_cast<Health>(rng() % 4))), Sender::Subsystem);
+      if (pick % 4 == 1) (void)b.push(encode(rng() % 2 ? accepted() : refused()), Sender::Subsystem);
+      if (pick % 11 == 1) (void)b.push(encode(taken_by_other()), Sender::Subsystem);
+      if (pick % 17 == 1) (void)b.push(encode(clear()), Sender::Other);  // spoofed: rejected
       if (pick % 13 == 1) {
         const std::uint8_t junk[12] = {0x3C, 1, 0, 0, 1, 0, 0, 0, 1, 0, 9, 9};
         (void)b.push(junk, sizeof junk);

@@ -124,7 +124,7 @@ TEST(SAF03_Service, RejectedDatagramsChangeNothingButTheirCounter) {
   garbage[3][10] = 7;  // FIELD_RANGE, an emergency flag of 7
   for (int i = 0; i < 2; ++i) {
     InboundBatch with{};
-    ASSERT_TRUE(with.push(encode(clear())));
+    ASSERT_TRUE(with.push(encode(clear()), Sender::Client));
     for (const auto& g : garbage) ASSERT_TRUE(with.push(g.data(), g.size()));
     const CycleResult ra = a.cycle(with, false);
     const CycleResult rb = run(b, {clear()});

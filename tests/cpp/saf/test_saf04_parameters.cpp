@@ -55,10 +55,9 @@ TEST(SAF04_Parameters, DefaultEstopTimeoutIsTwoCyclesOfFiftyMs) {
   (void)run(s, {clear(), health(Health::Normal)});
   EXPECT_EQ(s.observe().state, SafState::Operational);
   (void)run(s, {});
+  EXPECT_EQ(s.observe().state, SafState::Operational);  // 50 ms without Set Estop
   (void)run(s, {});
-  EXPECT_EQ(s.observe().state, SafState::Operational);
-  (void)run(s, {});
-  EXPECT_EQ(s.observe().state, SafState::Emergency);  // 150 ms > 100 ms without Set Estop
+  EXPECT_EQ(s.observe().state, SafState::Emergency);  // 100 ms = ESTOPTIMEOUT without Set Estop
 }
 
 TEST(SAF04_Parameters, QueryHealthEveryMessageIntervalQueryControlEveryCheckInterval) {

@@ -43,7 +43,8 @@ TEST(SAF03_NoHeap, CycleNeverAllocates) {
         for (std::uint8_t& x : junk) x = static_cast<std::uint8_t>(rng());
         (void)b.push(junk, 1 + rng() % sizeof junk);
       } else {
-        (void)b.push(valid[rng() % valid.size()]);
+        const std::size_t v = rng() % valid.size();
+        (void)b.push(valid[v], v < 2 ? Sender::Client : Sender::Subsystem);
       }
     }
     (void)s.cycle(b, rng() % 50000 == 0);

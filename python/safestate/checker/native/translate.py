@@ -39,6 +39,24 @@ _BUILTIN_APPLY = {"Append": (Op.APPEND, 2), "Head": (Op.HEAD, 1), "Tail": (Op.TA
                   "SubSeq": (Op.SUBSEQ, 3), "Cardinality": (Op.CARD, 1)}
 
 
+def _tlc_function_definition(e: A.Binary) -> A.Expr:
+    """``d :> e`` and ``f @@ g`` as the TLC module defines them, for the core's function
+    constructor: ``[x \\in {d} |-> e]`` and ``LET F == f  G == g IN [x \\in DOMAIN F \\cup
+    DOMAIN G |-> IF x \\in DOMAIN F THEN F[x] ELSE G[x]]``.  An argument that is not a
+    function, or keys of incomparable kinds, stop the core at an evaluation error, and
+    the Python engine reports TLC's CombineFcn message.  The names cannot clash: no
+    TLA+ identifier contains a space."""
+    loc = e.loc
+    x = A.Name(loc, "tlc fn key")
+    if e.op == ":>":
+        return A.FnLit(loc, [A.Bound([x.name], False, A.SetEnum(loc, [e.lhs]))], e.rhs)
+    f, g = A.Name(loc, "tlc fn left"), A.Name(loc, "tlc fn right")
+    dom_f, dom_g = A.Unary(loc, "DOMAIN", f), A.Unary(loc, "DOMAIN", g)
+    body = A.If(loc, A.Binary(loc, "\\in", x, dom_f), A.FnApp(loc, f, [x]), A.FnApp(loc, g, [x]))
+    fn = A.FnLit(loc, [A.Bound([x.name], False, A.Binary(loc, "\\cup", dom_f, dom_g))], body)
+    return A.Let(loc, [A.OpDef(f.name, [], e.lhs, loc), A.OpDef(g.name, [], e.rhs, loc)], fn)
+
+
 @dataclass(frozen=True)
 class TEnv:
     scope: Scope
@@ -396,6 +414,8 @@ class Translator:
             return self.node(Op.AND, e.loc, kids=(self.expr(e.lhs, env), self.expr(e.rhs, env)))
         if op == "\\/":
             return self.node(Op.OR, e.loc, kids=(self.expr(e.lhs, env), self.expr(e.rhs, env)))
+        if op in (":>", "@@") and isinstance(sym, BuiltinSym) and sym.builtin.module == "TLC":
+            return self.expr(_tlc_function_definition(e), env)
         code = _CORE_BINARY.get(op)
         if code is None and isinstance(sym, BuiltinSym) and sym.builtin.module in _NATIVE_MODULES:
             code = _INT_BINARY.get(op)

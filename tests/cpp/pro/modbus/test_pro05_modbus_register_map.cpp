@@ -12,8 +12,9 @@ using namespace safestate::pro;
 
 TEST(PRO05_ModbusRegisterMap, AddressesAreConsecutiveFromZero) {
   for (std::uint16_t i = 0; i < kInputRegisters.size(); ++i) EXPECT_EQ(kInputRegisters[i].address, i);
-  EXPECT_EQ(kModbusCoilCount, 1);
+  EXPECT_EQ(kModbusCoilCount, 2);
   EXPECT_EQ(kLatchClearCoil, 0);
+  EXPECT_EQ(kWriteEnableCoil, 1);
   EXPECT_EQ(kModbusDiscreteInputCount, 0);
   EXPECT_EQ(kModbusHoldingRegisterCount, 0);
 }

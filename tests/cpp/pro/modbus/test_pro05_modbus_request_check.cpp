@@ -41,6 +41,8 @@ TEST(PRO05_ModbusRequestCheck, WritingOneToCoilZeroRequestsALatchClear) {
   EXPECT_TRUE(check(frame(kUnit, {0x0F, 0, 0, 0, 1, 1, 0x01})).requests_latch_clear);
   EXPECT_FALSE(check(frame(kUnit, {0x0F, 0, 0, 0, 1, 1, 0x00})).requests_latch_clear);
   EXPECT_FALSE(check(frame(kUnit, {0x05, 0, 0, 0x00, 0x00})).requests_latch_clear);
+  EXPECT_FALSE(check(frame(kUnit, {0x05, 0, 1, 0xFF, 0x00})).requests_latch_clear);  // the write enable
+  EXPECT_FALSE(check(frame(kUnit, {0x0F, 0, 1, 0, 1, 1, 0x01})).requests_latch_clear);
 }
 
 TEST(PRO05_ModbusRequestCheck, UnsupportedFunctionsAreIllegalFunction) {
@@ -57,9 +59,9 @@ TEST(PRO05_ModbusRequestCheck, AddressesOutsideATableAreIllegalDataAddress) {
   expect_exception(frame(kUnit, {0x04, 0, 6, 0, 1}), code, reason);        // past register 5
   expect_exception(frame(kUnit, {0x04, 0, 1, 0, 6}), code, reason);        // 1..6 crosses the end
   expect_exception(frame(kUnit, {0x04, 0xFF, 0xFF, 0, 1}), code, reason);  // no 16-bit wrap
-  expect_exception(frame(kUnit, {0x01, 0, 1, 0, 1}), code, reason);        // coil 1
-  expect_exception(frame(kUnit, {0x01, 0, 0, 0, 2}), code, reason);        // coils 0..1
-  expect_exception(frame(kUnit, {0x05, 0, 1, 0xFF, 0}), code, reason);     // write coil 1
+  expect_exception(frame(kUnit, {0x01, 0, 2, 0, 1}), code, reason);        // coil 2
+  expect_exception(frame(kUnit, {0x01, 0, 0, 0, 3}), code, reason);        // coils 0..2
+  expect_exception(frame(kUnit, {0x05, 0, 2, 0xFF, 0}), code, reason);     // write coil 2
   expect_exception(frame(kUnit, {0x02, 0, 0, 0, 1}), code, reason);        // no discrete inputs
   expect_exception(frame(kUnit, {0x03, 0, 0, 0, 1}), code, reason);        // no holding registers
 }

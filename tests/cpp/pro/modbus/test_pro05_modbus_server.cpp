@@ -94,6 +94,8 @@ TEST_F(PRO05_ModbusServer, ReadInputRegistersReturnsTheProcessImage) {
 
 TEST_F(PRO05_ModbusServer, ACoilWriteIsHandedOverExactlyOnce) {
   const int fd = connect_to(server_->port());
+  send_all(fd, frame(1, {0x05, 0, 1, 0xFF, 0x00}));  // the write enable first
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x05, 0, 1, 0xFF, 0x00}));
   send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));
   EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x05, 0, 0, 0xFF, 0x00}));  // echo
   // Until taken, coil 0 reads back 1.
@@ -256,9 +258,13 @@ TEST_F(PRO05_ModbusServer, RandomFramesNeverStopItServingACleanClient) {
   std::uint32_t handled = 0;
   for (const std::uint32_t n : c.frames) handled += n;
   EXPECT_GE(handled, 2500U);  // the rest were glued into streams that lost their framing
-  // Every rule of the check was exercised (a reply that cannot be sent needs a full socket).
+  // Every rule of the check was exercised (a reply that cannot be sent needs a full socket;
+  // the write guard's refusals need a client off the allow-list or a well-formed write to
+  // coil 0, which random frames rarely are: they have tests of their own below).
   for (std::size_t r = 0; r < kModbusReasonCount; ++r) {
-    if (static_cast<ModbusReason>(r) != ModbusReason::send_failed) {
+    const auto reason = static_cast<ModbusReason>(r);
+    if (reason != ModbusReason::send_failed && reason != ModbusReason::write_not_allowed &&
+        reason != ModbusReason::write_not_armed) {
       EXPECT_GT(c.frames[r], 0U) << "reason " << r;
     }
   }
@@ -277,6 +283,66 @@ TEST_F(PRO05_ModbusServer, StopDisconnectsClientsAndClosesTheListeningSocket) {
   EXPECT_LT(connect_to(port), 0);    // nobody listens any more
   server_->on_tick(image_);          // a tick after stop serves nothing and does not crash
   EXPECT_EQ(server_->status(), UnitStatus::stopped);
+  close(fd);
+}
+
+// Issue 31 item 6: writes that change safety state only from an allow-listed client and
+// only within the arm window of the write-enable coil; refusals answered with exception 01
+// and counted.
+TEST_F(PRO05_ModbusServer, AClearWithoutTheWriteEnableIsRefusedWithExceptionOneAndCounted) {
+  const int fd = connect_to(server_->port());
+  send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x85, 0x01}));
+  send_all(fd, frame(1, {0x0F, 0, 0, 0, 2, 1, 0x03}));  // clear and enable in one frame: no handshake
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x8F, 0x01}));
+  EXPECT_FALSE(server_->take_requests().latch_clear_request);
+  EXPECT_EQ(server_->counters().count(ModbusReason::write_not_armed), 2U);
+  close(fd);
+}
+
+TEST_F(PRO05_ModbusServer, TheWriteEnableArmsOneWriteOfTheSameConnectionForTheWindow) {
+  const int fd = connect_to(server_->port());
+  const int other = connect_to(server_->port());
+  send_all(fd, frame(1, {0x05, 0, 1, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x05, 0, 1, 0xFF, 0x00}));
+  send_all(fd, frame(1, {0x01, 0, 1, 0, 1}));  // coil 1 reads back the arm
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x01, 1, 0x01}));
+  send_all(other, frame(1, {0x05, 0, 0, 0xFF, 0x00}));  // another connection is not armed
+  EXPECT_EQ(tick_until_reply(*server_, image_, other), frame(1, {0x85, 0x01}));
+  send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x05, 0, 0, 0xFF, 0x00}));
+  EXPECT_TRUE(server_->take_requests().latch_clear_request);
+  send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));  // the arm was consumed
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x85, 0x01}));
+  // An arm expires after arm_window_ticks.
+  send_all(fd, frame(1, {0x05, 0, 1, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x05, 0, 1, 0xFF, 0x00}));
+  for (std::uint32_t i = 0; i < config_.arm_window_ticks; ++i) server_->on_tick(image_);
+  send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(*server_, image_, fd), frame(1, {0x85, 0x01}));
+  EXPECT_FALSE(server_->take_requests().latch_clear_request);
+  EXPECT_EQ(server_->counters().count(ModbusReason::write_not_armed), 3U);
+  close(fd);
+  close(other);
+}
+
+TEST(PRO05_ModbusWriteAllowList, AClientNotOnTheAllowListCanReadButNotWrite) {
+  ModbusServerConfig config;
+  config.port = 0;
+  config.write_allowlist[0] = 0x7F000002;  // 127.0.0.2 only: the test's 127.0.0.1 is not on it
+  AoModbusServer server(config);
+  ASSERT_EQ(server.start(), UnitStatus::ready);
+  ProcessImage image;
+  image.voltage_dv = 240;
+  const int fd = connect_to(server.port());
+  send_all(fd, frame(1, {0x04, 0, 1, 0, 1}));
+  EXPECT_EQ(tick_until_reply(server, image, fd), frame(1, {0x04, 2, 0, 240}));
+  send_all(fd, frame(1, {0x05, 0, 1, 0xFF, 0x00}));  // not even the write enable
+  EXPECT_EQ(tick_until_reply(server, image, fd), frame(1, {0x85, 0x01}));
+  send_all(fd, frame(1, {0x05, 0, 0, 0xFF, 0x00}));
+  EXPECT_EQ(tick_until_reply(server, image, fd), frame(1, {0x85, 0x01}));
+  EXPECT_FALSE(server.take_requests().latch_clear_request);
+  EXPECT_EQ(server.counters().count(ModbusReason::write_not_allowed), 2U);
   close(fd);
 }
 

@@ -25,7 +25,7 @@ struct Loop {
   ThermalPlant plant;
   TickReport tick() {
     const TickReport r = rt.tick(plant.inputs());
-    plant.step(r.fan_output);
+    plant.step(r.fan_output, r.load_enable);
     return r;
   }
   ProtectionState prot() const { return rt.safety().context().protection_state; }
@@ -48,7 +48,8 @@ ClientResult session(Loop& l, bool write_clear) {
     modbus_set_response_timeout(c, 10, 0);
     if (modbus_connect(c) == 0) {
       out.read = modbus_read_input_registers(c, 0, 6, out.registers.data());
-      if (write_clear) out.write = modbus_write_bit(c, 0, 1);
+      // The write-enable handshake, then the clear (design page, Modbus register map).
+      if (write_clear && modbus_write_bit(c, 1, 1) == 1) out.write = modbus_write_bit(c, 0, 1);
       modbus_close(c);
     }
     modbus_free(c);
@@ -66,7 +67,9 @@ TEST(PRO05_RuntimeModbus, AClientReadsTheRuntimesRegistersAndItsClearRequestReac
   Loop l;
   ASSERT_EQ(l.tick().state, SupervisorState::run);  // the server started: every gate passed
   ASSERT_NE(l.server.port(), 0);
-  l.plant.set_heat_load_w(1800);
+  // A blocked air inlet: the hazard persists with the equipment disabled.
+  l.plant.set_heat_load_w(600);
+  l.plant.set_ambient_c(95);
   for (int i = 0; i < 400 && l.prot() == ProtectionState::normal; ++i) (void)l.tick();
   ASSERT_EQ(l.prot(), ProtectionState::protection);
 
@@ -83,7 +86,7 @@ TEST(PRO05_RuntimeModbus, AClientReadsTheRuntimesRegistersAndItsClearRequestReac
   EXPECT_EQ(l.rt.data().last_clear, ClearOutcome::denied);
 
   // Cool: the same request is accepted and regulation resumes.
-  l.plant.set_heat_load_w(200);
+  l.plant.set_ambient_c(25);
   for (int i = 0; i < 2000 && l.plant.temperature_c() > 60.0; ++i) (void)l.tick();
   ClientResult cool = session(l, true);
   ASSERT_EQ(cool.write, 1);

@@ -1,0 +1,80 @@
+"""`safestate saf serve`: the Safety service as a process. The C++ ServiceHost (sockets,
+intake, core) runs one scan cycle per CYCLEINTERVAL; this loop logs every state change
+and every rejected datagram (one line each) and stops cleanly on SIGTERM or SIGINT,
+printing its counters. A stopped service holds the subsystem in nothing: the subsystem
+notices the silence (design §14) and goes to EMERGENCY."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from ..errors import UsageError
+from .config import SafConfig, load, load_key
+from .events import EventLog
+from .ticker import Ticker
+
+
+def make_host(cfg: SafConfig) -> Any:
+    from .._saf_net import ServiceHost, validate_parameters  # type: ignore[import-not-found]
+
+    verdict = validate_parameters(cfg.binding_parameters())
+    if verdict != "NONE":
+        raise UsageError(f"{cfg.path}: [parameters]: {verdict} (each time > 0 and at most 65,535 cycles)")
+    host = ServiceHost(
+        address=cfg.service.address,
+        client_port=cfg.service.port,
+        subsystem_port=cfg.service_subsystem_port,
+        component_id=cfg.service.component_id,
+        client_address=cfg.client.address,
+        client_peer_port=cfg.client.port,
+        client_component_id=cfg.client.component_id,
+        subsystem_address=cfg.subsystem.address,
+        subsystem_peer_port=cfg.subsystem.port,
+        parameters=cfg.binding_parameters(),
+        require_sequence=cfg.require_sequence,
+        replay_window=cfg.replay_window,
+        key=load_key(cfg),
+    )
+    try:
+        host.open()
+    except ValueError as e:
+        raise UsageError(
+            f"{cfg.path}: [service] {cfg.service.address} ports {cfg.service.port}/{cfg.service_subsystem_port}: {e}"
+        ) from None
+    return host
+
+
+def run(args: argparse.Namespace) -> int:
+    cfg = load(args.config)
+    host = make_host(cfg)
+    log = EventLog("service", args.json)
+    auth = "HMAC-SHA256" if cfg.key_file else ("sequence" if cfg.require_sequence else "none")
+    log.emit(
+        "started",
+        f"client port {host.client_port}, subsystem socket {host.subsystem_port} -> "
+        f"{cfg.subsystem.address}:{cfg.subsystem.port}, Set Estop accepted from "
+        f"{cfg.client.address}:{cfg.client.port} id {cfg.client.component_id:#010x}, freshness {auth}",
+        client_port=host.client_port, subsystem_port=host.subsystem_port, state=host.state, freshness=auth,
+    )
+    ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
+    cycles = args.cycles
+    while ticker.running and (cycles is None or ticker.cycle < cycles):
+        c = host.step()
+        if c["before"] != c["after"]:
+            log.emit("state", f"{c['before']} -> {c['after']} (row {c['state_row']})",
+                     before=c["before"], after=c["after"], row=c["state_row"], sent=c["sent"])
+        for r in c["rejected"]:
+            what = f" {r['message']}" if r["message"] else ""
+            log.emit("rejected", f"{r['reason']}{what} from {r['source']} on the {r['socket']} socket", **r)
+        if c["kernel_dropped"]:
+            log.emit("dropped", f"the kernel dropped {c['kernel_dropped']} datagrams (receive buffer full)",
+                     count=c["kernel_dropped"])
+        ticker.wait()
+    counters = host.counters()
+    rejected = {k: v for k, v in counters["rejected"].items() if v}
+    log.emit("stopped", f"state {host.state}, {counters['cycles']} cycles ({ticker.late} late), "
+             f"accepted {counters['accepted']}, rejected {rejected or 'none'}, "
+             f"kernel drops {counters['kernel_dropped']}",
+             state=host.state, late_cycles=ticker.late, **counters)
+    return 0

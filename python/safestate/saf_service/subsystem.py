@@ -1,0 +1,125 @@
+"""`safestate saf subsystem`: the subsystem simulator as a process: the Subsystem State
+service with its access control and the health summary the Safety service queries. It
+expects the Safety service's messages (its Query Health Summary every MESSAGEINTERVAL is
+the heartbeat): when nothing came from the service's socket for [subsystem]
+service_timeout it goes to EMERGENCY on its own (design §14, a dead Safety service must
+not leave the subsystem running), and only the control holder's Set Subsystem State
+(OPERATIONAL) releases it. Commands on stdin: `health NORMAL|WARNING|ERROR|FATAL`, `quit`."""
+
+from __future__ import annotations
+
+import argparse
+import socket
+import time
+
+from ..errors import UsageError
+from . import wire
+from .config import load
+from .events import EventLog
+from .ticker import Ticker
+
+
+class Subsystem:
+    def __init__(self, sock: socket.socket, service: tuple[str, int], timeout_s: float, log: EventLog) -> None:
+        self.sock, self.service, self.timeout, self.log = sock, service, timeout_s, log
+        self.state = "OPERATIONAL"
+        self.health = "NORMAL"
+        self.holder, self.holder_authority = 0, 0
+        self.holder_addr: tuple[str, int] | None = None
+        self.last_heard = time.monotonic()  # the grace of one timeout from the start
+        self.silent = False
+
+    def set_state(self, new: str, why: str) -> None:
+        if new != self.state:
+            old, self.state = self.state, new
+            self.log.emit("state", f"{old} -> {new} ({why})", before=old, after=new, why=why)
+
+    def handle(self, data: bytes, sender: tuple[str, int]) -> None:
+        if sender == self.service:
+            self.last_heard = time.monotonic()
+            if self.silent:
+                self.silent = False
+                self.log.emit("service-back", "the Safety service is heard again")
+        m = wire.decode_outgoing(data)
+        if m is None:
+            return
+        if m.kind == "REQUEST_CONTROL":
+            if m.action == wire.ACTION_RELEASE:
+                if self.holder == m.component_id:
+                    self.holder, self.holder_authority, self.holder_addr = 0, 0, None
+                    self.log.emit("control", f"released by {m.component_id:#010x}", holder=0)
+                return
+            if self.holder in (0, m.component_id) or m.authority >= self.holder_authority:
+                if self.holder != m.component_id:
+                    self.log.emit("control", f"granted to {m.component_id:#010x} ({m.authority})",
+                                  holder=m.component_id, authority=m.authority)
+                self.holder, self.holder_authority, self.holder_addr = m.component_id, m.authority, sender
+                self.sock.sendto(wire.confirm_control(wire.CONTROL_ACCEPTED), sender)
+            else:
+                self.sock.sendto(wire.confirm_control(wire.INSUFFICIENT_AUTHORITY), sender)
+        elif m.kind == "QUERY_CONTROL":
+            self.sock.sendto(wire.report_control(self.holder, self.holder_authority), sender)
+        elif m.kind == "QUERY_HEALTH_SUMMARY":
+            self.sock.sendto(wire.report_health(self.health), sender)
+        elif m.kind == "SET_SUBSYSTEM_STATE":
+            if self.holder != 0 and sender == self.holder_addr and m.state in ("OPERATIONAL", "EMERGENCY"):
+                self.set_state(m.state, f"Set Subsystem State from {sender[0]}:{sender[1]}")
+                self.sock.sendto(wire.report_subsystem_state(self.state), sender)
+
+    def receive(self) -> None:
+        """Handles every waiting datagram."""
+        while True:
+            try:
+                data, sender = self.sock.recvfrom(256)
+            except BlockingIOError:
+                break
+            except OSError:  # an ICMP error of an earlier send (the service is gone)
+                continue
+            try:
+                self.handle(data, (sender[0], sender[1]))
+            except OSError:
+                pass  # the answer could not be sent: the service will ask again
+
+    def step(self) -> None:
+        """One cycle: what is waiting, then the watchdog of the service."""
+        self.receive()
+        silence = time.monotonic() - self.last_heard
+        if silence > self.timeout and not self.silent:
+            self.silent = True
+            self.log.emit("service-silent", f"nothing from the Safety service for {silence:.2f} s", silence=silence)
+            self.set_state("EMERGENCY", "the Safety service is silent")
+
+
+def run(args: argparse.Namespace) -> int:
+    cfg = load(args.config)
+    log = EventLog("subsystem", args.json)
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    try:
+        sock.bind((cfg.subsystem.address, cfg.subsystem.port))
+    except OSError as e:
+        raise UsageError(
+            f"{cfg.path}: [subsystem] {cfg.subsystem.address}:{cfg.subsystem.port}: {e.strerror or e}"
+        ) from None
+    sock.setblocking(False)
+    sub = Subsystem(sock, (cfg.service.address, cfg.service_subsystem_port), cfg.service_timeout_s, log)
+    quit_requested = False
+
+    def command(line: str) -> None:
+        nonlocal quit_requested
+        words = line.split()
+        if words == ["quit"]:
+            quit_requested = True
+        elif len(words) == 2 and words[0] == "health" and words[1].upper() in wire.HEALTH:
+            sub.health = words[1].upper()
+            log.emit("health", sub.health, health=sub.health)
+        elif words:
+            log.emit("error", f"unknown command {line!r} (health NORMAL|WARNING|ERROR|FATAL, quit)", command=line)
+
+    log.emit("started", f"{cfg.subsystem.address}:{cfg.subsystem.port}, state {sub.state}, expects the service "
+             f"from {sub.service[0]}:{sub.service[1]} at least every {sub.timeout:.2f} s", state=sub.state)
+    ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
+    while ticker.running and not quit_requested:
+        sub.step()
+        ticker.wait(command, sock, sub.receive)
+    log.emit("stopped", f"state {sub.state}", state=sub.state)
+    return 0
