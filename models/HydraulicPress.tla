@@ -98,21 +98,40 @@ pressure == IF "press_valve" \in outputs THEN Pressure[mode] ELSE 0
 speed == IF "fast_valve" \in outputs THEN Speed[mode] ELSE 0
 StrokeOn(outs) == outs \cap StrokeOutputs # {}
 
-\* §4: the request the run functions make for input e (none: <<>>).
+\* §4: the request the run function of the reacting state makes for input e in mode m,
+\* first matching arm wins. Written as actions over the concrete states of mode m (and
+\* of each stroke position) rather than as a value <<src, dst>>: the same steps for TLC,
+\* but the prover then translates each Request with a constant source and target, whose
+\* exit walk is over one known subtree (docs/prove.md, "Cost").
 InputMode(e) == CASE e = "mode1" -> 1 [] e = "mode2" -> 2 [] e = "mode3" -> 3 [] OTHER -> 0
-StepPos == CHOOSE k \in 1..9 : k <= Len(StrokeSeq[mode]) /\ StrokeSeq[mode][k] \in active
-NextStep(k) == IF k < Len(StrokeSeq[mode]) THEN k + 1 ELSE IF continuous THEN 2 ELSE 1
-Reaction(e) ==
-    CASE e = "motor_on" /\ OffOf[mode] \in active -> <<OffOf[mode], OnOf[mode]>>
-      [] e = "motor_off" /\ OnOf[mode] \in active -> <<OnOf[mode], OffOf[mode]>>
-      [] InputMode(e) \notin {0, mode} -> <<ModeOf[mode], ModeOf[InputMode(e)]>>
-      [] e = "ret" /\ step # "none" -> <<StrokeOf[mode], StrokeOf[mode]>>
-      [] e = "start" /\ step = "Ready" -> <<StepState(mode, 1), StepState(mode, 2)>>
-      [] e = "step_done" /\ step \notin {"none", "Ready"} ->
-            <<StepState(mode, StepPos), StepState(mode, NextStep(StepPos))>>
-      [] e = "temp_high" /\ CoolIdleOf[mode] \in active -> <<CoolIdleOf[mode], CoolingOf[mode]>>
-      [] e = "temp_ok" /\ CoolingOf[mode] \in active -> <<CoolingOf[mode], CoolIdleOf[mode]>>
-      [] OTHER -> <<>>
+NoReaction == /\ log' = <<>> /\ result' = "ok" /\ UNCHANGED <<active, request>>
+StepIn(m, k) == k <= Len(StrokeSeq[m]) /\ StepState(m, k) \in active
+\* The stroke position k of mode m is done: the next one, after the last Ready (or Feed in
+\* continuous operation).
+StepFrom(m, k) ==
+    IF k < Len(StrokeSeq[m]) THEN Request(StepState(m, k), StepState(m, k + 1))
+    ELSE IF continuous THEN Request(StepState(m, k), StepState(m, 2))
+    ELSE Request(StepState(m, k), StepState(m, 1))
+StepDone(m) ==
+    IF StepIn(m, 1) THEN StepFrom(m, 1) ELSE IF StepIn(m, 2) THEN StepFrom(m, 2)
+    ELSE IF StepIn(m, 3) THEN StepFrom(m, 3) ELSE IF StepIn(m, 4) THEN StepFrom(m, 4)
+    ELSE IF StepIn(m, 5) THEN StepFrom(m, 5) ELSE IF StepIn(m, 6) THEN StepFrom(m, 6)
+    ELSE IF StepIn(m, 7) THEN StepFrom(m, 7) ELSE IF StepIn(m, 8) THEN StepFrom(m, 8)
+    ELSE StepFrom(m, 9)
+ModeChange(m, e) ==
+    IF InputMode(e) = 1 THEN Request(ModeOf[m], ModeOf[1])
+    ELSE IF InputMode(e) = 2 THEN Request(ModeOf[m], ModeOf[2])
+    ELSE Request(ModeOf[m], ModeOf[3])
+Reaction(e, m) ==
+    IF e = "motor_on" /\ OffOf[m] \in active THEN Request(OffOf[m], OnOf[m])
+    ELSE IF e = "motor_off" /\ OnOf[m] \in active THEN Request(OnOf[m], OffOf[m])
+    ELSE IF InputMode(e) \notin {0, m} THEN ModeChange(m, e)
+    ELSE IF e = "ret" /\ step # "none" THEN Request(StrokeOf[m], StrokeOf[m])
+    ELSE IF e = "start" /\ step = "Ready" THEN Request(StepState(m, 1), StepState(m, 2))
+    ELSE IF e = "step_done" /\ step \notin {"none", "Ready"} THEN StepDone(m)
+    ELSE IF e = "temp_high" /\ CoolIdleOf[m] \in active THEN Request(CoolIdleOf[m], CoolingOf[m])
+    ELSE IF e = "temp_ok" /\ CoolingOf[m] \in active THEN Request(CoolingOf[m], CoolIdleOf[m])
+    ELSE NoReaction
 
 ApplyLog(outs, lg) ==
     (outs \ {Out(lg[i].state) : i \in {j \in DOMAIN lg : lg[j].kind = "exit"}})
@@ -130,9 +149,10 @@ Init ==
     /\ motorCmd = FALSE
 
 Scan(e) ==
-    LET r == Reaction(e) IN
-    /\ IF r = <<>> THEN /\ log' = <<>> /\ result' = "ok" /\ UNCHANGED <<active, request>>
-                     ELSE Request(r[1], r[2])
+    \* exactly one mode state is active (SCH-01): one disjunct applies
+    /\ \/ mode = 1 /\ Reaction(e, 1)
+       \/ mode = 2 /\ Reaction(e, 2)
+       \/ mode = 3 /\ Reaction(e, 3)
     /\ outputs' = ApplyLog(outputs, log')
     /\ continuous' = CASE e = "continuous_on" -> TRUE [] e = "continuous_off" -> FALSE [] OTHER -> continuous
     /\ restarted' = (e = "motor_on" /\ ~motor)
