@@ -177,7 +177,7 @@ INV_PRESS ==
 \* SCH-05: the energised outputs are exactly those of the active states.
 INV_PRESS_OUTPUTS_OF_ACTIVE == outputs = {Out(s) : s \in active} \ {"none"}
 
-\* The hazard properties of docs/design/hydraulic-press.md §7 (UCA-1 .. UCA-6): over the
+\* The hazard properties of docs/design/hydraulic-press.md §7 (UCA-1 .. UCA-7): over the
 \* inputs (event, and the history above) and the outputs, across scans.
 \* UCA-1: no stroke output unless Start began the work cycle it belongs to: after a
 \* motor stop, a RET or a mode change, none until the next Start, whatever sensor edges come.
@@ -197,9 +197,19 @@ UCA5_CYCLE_IN_SELECTED_MODE ==
     /\ "fast_valve" \in outputs => speed = Speed[selector]
 \* UCA-6: the motor runs only after a motor-start with no motor-stop since.
 UCA6_MOTOR_ONLY_AFTER_MOTOR_START == motor => motorCmd
+\* UCA-7: a stroke output comes on only in a scan with the sensor edge that ends the stroke
+\* before it (step_done), or with Start, which energises the feed valve and no other
+\* (bound 0 scans: no stroke advances on another input, none is skipped at Start). The
+\* outputs switched on in a scan are those of its entry calls (the entry functions set
+\* them), which conformance compares with the C++ engine's call log.
+SwitchedOn == {Out(log[i].state) : i \in Kinds("entry")} \cap StrokeOutputs
+UCA7_ADVANCE_ONLY_ON_SENSOR ==
+    /\ SwitchedOn # {} => event \in {"start", "step_done"}
+    /\ event = "start" /\ SwitchedOn # {} => outputs \cap StrokeOutputs = {"feed_valve"}
 
 Witness_RestartAfterStroke == ~(restarted /\ mode = 2)  \* INV_PRESS (restart conjunct), UCA-5 across a restart
 Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE, UCA-4
 Witness_Cooling == ~("cool_pump" \in outputs /\ step = "Eject")
+Witness_FeedBySensor == ~(event = "step_done" /\ SwitchedOn = {"feed_valve"})  \* UCA-7: continuous operation re-enters Feed on the sensor edge
 Witness_ModeChangeMidCycle == ~(event = "mode3" /\ Len(log) = 8)  \* UCA-5: a mode change in a running cycle exits the motor-on subtree (6 exits, 2 entries)
 ===============================================================================

@@ -26,7 +26,7 @@ ProofTypeOK ==
 \* every stroke state inactive). UCA-4's history flag is the position in the
 \* work cycle: the clamp stroke is the fourth of every mode's order, so
 \* `clamped` holds exactly past it. Together with the invariants proved jointly
-\* (UCA-1 .. UCA-6 among them) they are 1-inductive.
+\* (UCA-1 .. UCA-7 among them) they are 1-inductive.
 Strengthen_PRESS ==
     /\ INV_SCH01_ROOT_ACTIVE
     /\ INV_SCH01_PARENT_ACTIVE

@@ -147,6 +147,30 @@ TEST(HydraulicPress, SCH05_ContinuousRunningStartsTheNextCycleAtFeed) {
   EXPECT_EQ(press.observe().step, sc::PressStep::feed);
 }
 
+// UCA-7 (design page §7): a stroke output comes on only with the stroke's sensor edge, or
+// with Start, which energises the feed valve alone; no other input advances the stroke.
+TEST(HydraulicPress, UCA7_StrokeAdvancesOnlyOnItsSensorEdgeAndStartEnergisesFeedAlone) {
+  sc::HydraulicPress press;
+  press.cycle(motor_on());
+  const sc::PressOutputs fed = press.cycle(start());
+  EXPECT_TRUE(fed.on(sc::Output::feed_valve));
+  for (int k = 2; k < sc::stroke_steps; ++k) EXPECT_FALSE(fed.on(sc::valve_of_step(k))) << k;
+  sc::PressInputs others[4];
+  others[0].temp_high = true;
+  others[1].temp_ok = true;
+  others[2].continuous = true;
+  others[3].mode = 1;  // the mode already selected: no change
+  for (const sc::PressInputs& in : others) {
+    const sc::PressOutputs out = press.cycle(in);
+    EXPECT_EQ(press.observe().step, sc::PressStep::feed);
+    EXPECT_TRUE(out.on(sc::Output::feed_valve));
+    EXPECT_FALSE(out.on(sc::Output::locate_valve));
+  }
+  const sc::PressOutputs located = press.cycle(step_done());
+  EXPECT_FALSE(located.on(sc::Output::feed_valve));
+  EXPECT_TRUE(located.on(sc::Output::locate_valve));
+}
+
 TEST(HydraulicPress, SCH05_RetReturnsToReadyBySelfTransition) {
   sc::HydraulicPress press;
   press.cycle(motor_on());
