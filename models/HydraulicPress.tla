@@ -113,25 +113,25 @@ StepFrom(m, k) ==
     ELSE IF continuous THEN Request(StepState(m, k), StepState(m, 2))
     ELSE Request(StepState(m, k), StepState(m, 1))
 StepDone(m) ==
-    IF StepIn(m, 1) THEN StepFrom(m, 1) ELSE IF StepIn(m, 2) THEN StepFrom(m, 2)
-    ELSE IF StepIn(m, 3) THEN StepFrom(m, 3) ELSE IF StepIn(m, 4) THEN StepFrom(m, 4)
-    ELSE IF StepIn(m, 5) THEN StepFrom(m, 5) ELSE IF StepIn(m, 6) THEN StepFrom(m, 6)
-    ELSE IF StepIn(m, 7) THEN StepFrom(m, 7) ELSE IF StepIn(m, 8) THEN StepFrom(m, 8)
-    ELSE StepFrom(m, 9)
+    CASE StepIn(m, 1) -> StepFrom(m, 1) [] StepIn(m, 2) -> StepFrom(m, 2) [] StepIn(m, 3) -> StepFrom(m, 3)
+      [] StepIn(m, 4) -> StepFrom(m, 4) [] StepIn(m, 5) -> StepFrom(m, 5) [] StepIn(m, 6) -> StepFrom(m, 6)
+      [] StepIn(m, 7) -> StepFrom(m, 7) [] StepIn(m, 8) -> StepFrom(m, 8) [] OTHER -> StepFrom(m, 9)
 ModeChange(m, e) ==
-    IF InputMode(e) = 1 THEN Request(ModeOf[m], ModeOf[1])
-    ELSE IF InputMode(e) = 2 THEN Request(ModeOf[m], ModeOf[2])
-    ELSE Request(ModeOf[m], ModeOf[3])
+    CASE InputMode(e) = 1 -> Request(ModeOf[m], ModeOf[1])
+      [] InputMode(e) = 2 -> Request(ModeOf[m], ModeOf[2])
+      [] OTHER -> Request(ModeOf[m], ModeOf[3])
+\* A CASE, not an IF chain: its arms are translated side by side (one path condition each)
+\* rather than nested nine deep.
 Reaction(e, m) ==
-    IF e = "motor_on" /\ OffOf[m] \in active THEN Request(OffOf[m], OnOf[m])
-    ELSE IF e = "motor_off" /\ OnOf[m] \in active THEN Request(OnOf[m], OffOf[m])
-    ELSE IF InputMode(e) \notin {0, m} THEN ModeChange(m, e)
-    ELSE IF e = "ret" /\ step # "none" THEN Request(StrokeOf[m], StrokeOf[m])
-    ELSE IF e = "start" /\ step = "Ready" THEN Request(StepState(m, 1), StepState(m, 2))
-    ELSE IF e = "step_done" /\ step \notin {"none", "Ready"} THEN StepDone(m)
-    ELSE IF e = "temp_high" /\ CoolIdleOf[m] \in active THEN Request(CoolIdleOf[m], CoolingOf[m])
-    ELSE IF e = "temp_ok" /\ CoolingOf[m] \in active THEN Request(CoolingOf[m], CoolIdleOf[m])
-    ELSE NoReaction
+    CASE e = "motor_on" /\ OffOf[m] \in active -> Request(OffOf[m], OnOf[m])
+      [] e = "motor_off" /\ OnOf[m] \in active -> Request(OnOf[m], OffOf[m])
+      [] InputMode(e) \notin {0, m} -> ModeChange(m, e)
+      [] e = "ret" /\ step # "none" -> Request(StrokeOf[m], StrokeOf[m])
+      [] e = "start" /\ step = "Ready" -> Request(StepState(m, 1), StepState(m, 2))
+      [] e = "step_done" /\ step \notin {"none", "Ready"} -> StepDone(m)
+      [] e = "temp_high" /\ CoolIdleOf[m] \in active -> Request(CoolIdleOf[m], CoolingOf[m])
+      [] e = "temp_ok" /\ CoolingOf[m] \in active -> Request(CoolingOf[m], CoolIdleOf[m])
+      [] OTHER -> NoReaction
 
 ApplyLog(outs, lg) ==
     (outs \ {Out(lg[i].state) : i \in {j \in DOMAIN lg : lg[j].kind = "exit"}})
