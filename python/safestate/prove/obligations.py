@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import Union
+from typing import Any, Union
 
 import z3
 from z3 import z3core as C
@@ -109,7 +109,7 @@ class Obligations:
     def take(self) -> list[Obligation]:
         """The obligations collected so far (and a fresh, empty collection)."""
         out, self.items = self.items, []
-        return out
+        return flatten(out)
 
     @contextmanager
     def under(self, guard: Guard) -> Iterator[None]:
@@ -122,11 +122,17 @@ class Obligations:
             if inner:
                 g = guard() if callable(guard) else guard
                 if not z3.is_false(g):
-                    saved.extend(inner if z3.is_true(g) else _under(_unique(inner), g))
+                    # one node, not a copy of every inner obligation: an IF or CASE nests
+                    # them many guards deep, and copying at each level cost O(n * depth)
+                    if z3.is_true(g):
+                        saved.extend(inner)
+                    else:
+                        saved.append(_Under(g, inner))
 
     @contextmanager
     def capture(self) -> Iterator[list[Obligation]]:
-        """Collect the obligations added inside into the yielded list, not into this collection."""
+        """Collect the obligations added inside into the yielded list, not into this collection
+        (it may hold guarded groups: `flatten` it to read the obligations one by one)."""
         saved, self.items = self.items, []
         out: list[Obligation] = []
         try:
@@ -136,27 +142,56 @@ class Obligations:
             self.items = saved
 
 
-def _under(obligations: list[Obligation], g: z3.BoolRef) -> list[Obligation]:
-    """The obligations under one more guard; those sharing a chain share the new one."""
-    chains: dict[int, Chain] = {}
-    out = []
-    for o in obligations:
-        chain = chains.get(id(o.guards))
-        if chain is None:
-            chain = chains[id(o.guards)] = Chain(g, o.guards)
-        out.append(Obligation(o.kind, o.loc, o.what, o.site, chain))
+@dataclass(eq=False)
+class _Under:
+    """Obligations collected under one more path condition, kept as one node: `flatten`
+    gives each of them its chain of guards once, at the end."""
+
+    guard: z3.BoolRef
+    inner: list  # Obligation | _Under
+
+
+def _extend(guards: Chain | None, outer: Chain | None) -> Chain | None:
+    """The guards of `guards` followed by those of `outer` (rarely needed: obligations
+    are collected without guards and get them from the nodes around them)."""
+    if guards is None:
+        return outer
+    links: list[z3.BoolRef] = []
+    c: Chain | None = guards
+    while c is not None:
+        links.append(c.guard)
+        c = c.rest
+    out = outer
+    for g in reversed(links):
+        out = Chain(g, out)
     return out
 
 
-def _unique(obligations: list[Obligation]) -> list[Obligation]:
-    """Without repeats (a memoised operator re-emits the same obligations at every use)."""
+def flatten(items: list) -> list[Obligation]:
+    """The obligations of a collection, each under the guards of the nodes around it,
+    without repeats (a memoised operator re-emits the same obligations, and the same
+    nodes, at every use: each is visited once per chain of guards)."""
+    out: list[Obligation] = []
     seen: set[tuple[int, int]] = set()
-    out = []
-    for o in obligations:
-        key = (id(o.site), id(o.guards))
-        if key not in seen:
-            seen.add(key)
-            out.append(o)
+    # in collection order (a failing site is reported first where it was met first);
+    # a stack of iterators, not recursion: the nodes nest as deep as the path conditions
+    todo: list[tuple[Iterator[Any], Chain | None]] = [(iter(items), None)]
+    while todo:
+        group, chain = todo[-1]
+        x = next(group, None)
+        if x is None:
+            todo.pop()
+            continue
+        key = (id(x.site) if isinstance(x, Obligation) else id(x), id(chain))
+        if key in seen:
+            continue
+        seen.add(key)
+        if isinstance(x, _Under):
+            todo.append((iter(x.inner), Chain(x.guard, chain)))
+        elif chain is None:
+            out.append(x)
+        else:
+            out.append(Obligation(x.kind, x.loc, x.what, x.site, _extend(x.guards, chain)))
     return out
 
 
