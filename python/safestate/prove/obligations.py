@@ -93,7 +93,7 @@ class Obligations:
     """The obligations of the expression being translated, under the current path condition."""
 
     def __init__(self) -> None:
-        self.items: list[Obligation] = []
+        self.items: list[Any] = []  # Obligation | _Under
 
     def add(self, kind: str, loc: Loc | None, what: str, cond: z3.BoolRef | bool) -> None:
         c = z3.BoolVal(cond) if isinstance(cond, bool) else cond
@@ -103,7 +103,7 @@ class Obligations:
             return
         self.items.append(Obligation(kind, loc, what, c))
 
-    def emit(self, obligations: list[Obligation]) -> None:
+    def emit(self, obligations: list[Any]) -> None:
         self.items.extend(obligations)
 
     def take(self) -> list[Obligation]:
@@ -130,11 +130,11 @@ class Obligations:
                         saved.append(_Under(g, inner))
 
     @contextmanager
-    def capture(self) -> Iterator[list[Obligation]]:
+    def capture(self) -> Iterator[list[Any]]:
         """Collect the obligations added inside into the yielded list, not into this collection
         (it may hold guarded groups: `flatten` it to read the obligations one by one)."""
         saved, self.items = self.items, []
-        out: list[Obligation] = []
+        out: list[Any] = []
         try:
             yield out
         finally:
