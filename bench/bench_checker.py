@@ -16,10 +16,14 @@ Informational only: never pass/fail.
 
 Default specs: bench/specs/*.tla and the flagship model with its CI .cfg.
 
-With `--engines python,native` (default) each of our runs is made with each engine
-(`safestate check --engine E`).
+With `--engines auto,python` each of our runs is made with each engine (`safestate
+check --engine E`); the default, `auto`, is what `safestate check` runs by default.
 
-usage: bench/bench_checker.py [--workers 1,2] [--engines python,native] [--quick] [SPEC.tla[:CFG] ...]
+`--examples DIR` (a checkout of github.com/tlaplus/Examples, not part of this
+repository) adds the published specs of `PUBLISHED` to the run, each with the .cfg
+the Examples repository checks it with.
+
+usage: bench/bench_checker.py [--workers 1,2] [--engines auto] [--quick] [--examples DIR] [SPEC.tla[:CFG] ...]
 """
 
 from __future__ import annotations
@@ -42,6 +46,10 @@ sys.path.insert(0, str(REPO / "python"))
 from safestate.checker.tlc import run_tlc, tlc_jar  # noqa: E402
 
 FLAGSHIP = (REPO / "models" / "SystemStateManager.tla", REPO / "models" / "SystemStateManager.cfg")
+# Published specs (paths in tlaplus/Examples) large enough for a rate: the module and its cfg.
+PUBLISHED = [
+    ("specifications/lamport_mutex/MCLamportMutex.tla", "specifications/lamport_mutex/MCLamportMutex.cfg"),
+]
 
 
 @dataclass
@@ -99,13 +107,23 @@ def run_theirs(jar: str, tla: Path, cfg: Path, workers: int) -> Run:
     return Run(s.distinct_states, wall, cpu, None, s.result)
 
 
+def published(examples: Path) -> list[tuple[Path, Path]]:
+    out = []
+    for tla, cfg in PUBLISHED:
+        if not (examples / tla).exists():
+            raise SystemExit(f"bench_checker: {examples / tla} not found (is {examples} a tlaplus/Examples checkout?)")
+        out.append((examples / tla, examples / cfg))
+    return out
+
+
 def spec_list(args: argparse.Namespace) -> list[tuple[Path, Path]]:
-    if args.specs:
+    extra = published(Path(args.examples)) if args.examples else []
+    if args.specs or extra:
         out = []
         for s in args.specs:
             tla, _, cfg = s.partition(":")
             out.append((Path(tla), Path(cfg) if cfg else Path(tla).with_suffix(".cfg")))
-        return out
+        return out + extra
     out = [(tla, tla.with_suffix(".cfg")) for tla in sorted((REPO / "bench" / "specs").glob("*.tla"))]
     if args.quick:
         # Each constant 4x smaller (at least 2): a smoke run of the bench itself.
@@ -129,7 +147,10 @@ def fmt_run(who: str, name: str, workers: int, r: Run, engine: str = "-") -> str
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--workers", default="1,2", help="comma-separated worker counts (default 1,2)")
-    ap.add_argument("--engines", default="python,native", help="our engines to run (default python,native)")
+    ap.add_argument("--engines", default="auto", help="our engines to run, comma-separated: auto (the default "
+                    "engine of safestate check), native, python (default auto)")
+    ap.add_argument("--examples", metavar="DIR", help="a tlaplus/Examples checkout: also run its published specs "
+                    "(" + ", ".join(Path(t).stem for t, _ in PUBLISHED) + ")")
     ap.add_argument("--quick", action="store_true", help="shrink the bench specs' constants 4x")
     ap.add_argument("specs", nargs="*", help="SPEC.tla or SPEC.tla:CFG (default: bench/specs/*.tla, flagship)")
     args = ap.parse_args()

@@ -218,6 +218,9 @@ class Scenario {
     enabling_.tick();
     if (selector_transition_ > 0) --selector_transition_;
     plant(st, out);
+    // The contactor's and the brakes' feedback follow their command (C30).
+    in_.contactor_feedback_closed = out.contactor_closed;
+    in_.brake_feedback_released = out.brake_release;
 
     in_.estop_closed.a = estop_.a;
     in_.estop_closed.b = estop_.b;

@@ -55,7 +55,9 @@ SwitchCaseSsm::SwitchCaseSsm(const safestate::Config& config) noexcept
     : config_(config),
       kin_(config.dh),
       config_ok_(safestate::validate(config) == safestate::ConfigError::None),
-      bus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit) {}
+      bus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit),
+      contactor_fb_(config.feedback_allowed_cycles),
+      brake_fb_(config.feedback_allowed_cycles) {}
 
 safestate::SubmitResult SwitchCaseSsm::submit(const safestate::Command& command) noexcept {
   if (queue_.size() >= config_.command_queue_limit || !queue_.try_push(command)) {
@@ -134,7 +136,9 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   }
   if (speed != SpeedLevel::Zero) {
     const double v = kin_.tcp_speed_mm_s(in.q, in.qd);
-    if (!std::isfinite(v) || v > static_cast<double>(config_.t1_speed_limit_mm_s)) {
+    if (!std::isfinite(v) || v > static_cast<double>(config_.t2_speed_limit_mm_s)) {
+      speed = SpeedLevel::OverT2;
+    } else if (v > static_cast<double>(config_.t1_speed_limit_mm_s)) {
       speed = SpeedLevel::OverT1;
     }
   }
@@ -150,6 +154,11 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   estop_tested_b_ = estop_tested_b_ || !in.estop_closed.b;
   enable_release_required_ = enable_panic || (enable_release_required_ && !(in.enabling.a == EnablePosition::Released &&
                                                                             in.enabling.b == EnablePosition::Released));
+  // C30: each feedback against the output of the previous cycle (out_ still holds it).
+  const bool contactor_bad =
+      contactor_fb_.update(out_.contactor_closed, in.contactor_feedback_closed) != safestate::FeedbackFault::None;
+  const bool brake_bad =
+      brake_fb_.update(out_.brake_release, in.brake_feedback_released) != safestate::FeedbackFault::None;
   FaultCode discrepancy = FaultCode::None;
   if (estop_mm_ > d) {
     discrepancy = FaultCode::DiscrepancyEstop;
@@ -179,6 +188,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     lockout(discrepancy);  // C03
   } else if (!fieldbus_ok) {
     lockout(FaultCode::FieldbusLoss);  // C24
+  } else if (contactor_bad || brake_bad) {
+    lockout(contactor_bad ? FaultCode::ContactorFeedback : FaultCode::BrakeFeedback);  // C30
   } else if (state_ == StateId::Boot) {
     if (estop_tripped) {
       enter(StateId::EstopActive);  // C04
@@ -190,8 +201,10 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
     lockout(FaultCode::DriveFault);  // C09
   } else if (powered && state_ != StateId::Arming && !drives.servo_ready) {
     lockout(FaultCode::ServoReadyLost);  // C27
-  } else if (powered && session_ == OperatingMode::T1 && speed == SpeedLevel::OverT1) {
+  } else if (powered && session_ == OperatingMode::T1 && (speed == SpeedLevel::OverT1 || speed == SpeedLevel::OverT2)) {
     lockout(FaultCode::T1Overspeed);  // C10
+  } else if (powered && session_ == OperatingMode::T2 && speed == SpeedLevel::OverT2) {
+    lockout(FaultCode::T2Overspeed);  // C29
   } else if ((state_ == StateId::Arming || state_ == StateId::AutoIdle || state_ == StateId::ManualIdle ||
               state_ == StateId::Hold) &&
              speed != SpeedLevel::Zero) {
@@ -257,7 +270,12 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
         }
         break;
       case StateId::Idle:
-        if (sel != SelectorReading::T2) t2_confirmed_ = false;  // C22
+        if (sel != SelectorReading::T2 || (t2_confirmed_ && state_cycles_ == config_.t2_confirm_timeout_cycles)) {
+          t2_confirmed_ = false;  // C22: off T2, or the confirmation expired
+          state_cycles_ = 0;
+        } else if (t2_confirmed_) {
+          ++state_cycles_;  // C22: the confirmation ages
+        }
         break;
       default: break;  // C23
     }
@@ -326,6 +344,8 @@ const safestate::ScanOutputs& SwitchCaseSsm::cycle(const safestate::ScanInputs& 
   status_.estop_tested_a = estop_tested_a_;
   status_.estop_tested_b = estop_tested_b_;
   status_.enable_release_required = enable_release_required_;
+  status_.contactor_fb_cycles = contactor_fb_.disagreeing_cycles();
+  status_.brake_fb_cycles = brake_fb_.disagreeing_cycles();
   return out_;
 }
 
@@ -477,6 +497,7 @@ void SwitchCaseSsm::handle_command(const safestate::Command& c, SelectorReading 
         reject(RejectReason::WrongMode);  // K34
       } else {
         t2_confirmed_ = true;  // K35
+        state_cycles_ = 0;
         status_.command_result = CommandResult::accepted();
       }
       return;

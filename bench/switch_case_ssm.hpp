@@ -18,6 +18,7 @@
 #include "safestate/command.hpp"
 #include "safestate/config.hpp"
 #include "safestate/drive_status_summary.hpp"
+#include "safestate/feedback_monitor.hpp"
 #include "safestate/fieldbus_watchdog.hpp"
 #include "safestate/plcopen_axis.hpp"
 #include "safestate/scan_inputs.hpp"
@@ -52,6 +53,8 @@ class SwitchCaseSsm {
   bool config_ok_;
   safestate::SpscQueue<safestate::Command, safestate::kMaxQueueCapacity> queue_;
   safestate::FieldbusWatchdog bus_;
+  safestate::FeedbackMonitor contactor_fb_;  // C30
+  safestate::FeedbackMonitor brake_fb_;      // C30
 
   // Machine state (flat, all fields always present).
   safestate::StateId state_{safestate::StateId::Boot};

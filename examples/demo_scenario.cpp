@@ -89,7 +89,7 @@ std::string reason_text(const StatusRecord& st, const FiredRows& rows) {
 }  // namespace
 
 int main() {
-  const Config config;  // defaults: 1 ms cycles, 50-cycle discrepancy time
+  const Config config = sim::demo_cell_config();  // 1 ms cycles, 50-cycle discrepancy time
   SystemStateManager manager(config);
   Plant plant;
 
@@ -144,6 +144,7 @@ int main() {
       event += script[next].event;
       ++next;
     }
+    plant.inputs().bus = sim::bus_image(manager.fieldbus_watchdog(), plant.bus_levels());  // the drives' frame
     out = manager.cycle(plant.inputs());
     const Snapshot now{manager.status(), out};
     if (!event.empty() || changed(last, now)) {

@@ -95,13 +95,16 @@ VARIABLES inbox, ever_faulted,
     h_held_sent, \* control became HELD and EMERGENCY was sent in that cycle
     h_due,      \* a Report Subsystem State(not EMERGENCY) while held awaits a re-send
     h_due_age,  \* cycles it has waited
+    h_ask_age,  \* cycles without Request Control while control is wanted and not held
+    h_ask_refused, \* ... counted from a genuine refusal (else from the last request)
     shadow      \* the service after this cycle without the forged datagrams
 
 svcVars == <<state, estop, estop_age, health, health_age,
              control, control_age, out_request, out_set_state,
              alarm, resend, set_age>>
 histVars == <<ever_faulted, h_estop, h_silence, h_health, h_health_age,
-              h_told, h_refused, h_owed, h_held_sent, h_due, h_due_age, shadow>>
+              h_told, h_refused, h_owed, h_held_sent, h_due, h_due_age,
+              h_ask_age, h_ask_refused, shadow>>
 vars == <<svcVars, inbox, histVars>>
 
 \* The checker and TLC identify states by the service and the history; the
@@ -312,6 +315,9 @@ Cycle(in) ==
                 ELSE IF s.out_set_state = "OPERATIONAL" THEN FALSE ELSE h_told
         refused == IF s.out_set_state = "EMERGENCY" \/ s.out_request = "RELEASE" THEN FALSE
                    ELSE IF in.control = "REFUSED" THEN TRUE ELSE h_refused
+        \* Request Control sent, or not wanted (held, or not raising EMERGENCY)
+        asked == \/ s.out_request = "REQUEST" \/ s.control = "HELD"
+                 \/ s.state \notin RaisingStates
         due == /\ s.control = "HELD" /\ s.state \in RaisingStates
                /\ s.out_set_state # "EMERGENCY"
                /\ (h_due \/ in.subsys = "OPERATIONAL")
@@ -340,6 +346,10 @@ Cycle(in) ==
     /\ h_due_age' = IF due /\ h_due
                     THEN IF h_due_age < MessageIntervalCycles THEN h_due_age + 1 ELSE h_due_age
                     ELSE 0
+    /\ h_ask_age' = IF asked \/ in.control = "REFUSED" THEN 0
+                    ELSE IF h_ask_age <= ControlAgeMax THEN h_ask_age + 1 ELSE h_ask_age
+    /\ h_ask_refused' = IF asked THEN FALSE
+                        ELSE IF in.control = "REFUSED" THEN TRUE ELSE h_ask_refused
     /\ shadow' = IF in.forged = "NONE" THEN s ELSE AfterCycle(Honest(in))
 
 \* Construction: PAIRING, nothing received yet, control not yet requested
@@ -362,6 +372,7 @@ Init ==
     /\ h_health = "NONE" /\ h_health_age = 0
     /\ h_told = FALSE /\ h_refused = FALSE /\ h_owed = FALSE /\ h_held_sent = FALSE
     /\ h_due = FALSE /\ h_due_age = 0
+    /\ h_ask_age = 0 /\ h_ask_refused = FALSE
     /\ shadow = SvcInit
 
 Next == \E in \in Inboxes : Cycle(in)
@@ -370,6 +381,13 @@ Spec == Init /\ [][Next]_vars
 
 -----------------------------------------------------------------------------
 (******************************** Invariants *******************************)
+\* The values of the service record (Svc, and the shadow service).
+SvcRecords == [state: States, estop: EstopViews, estop_age: 0..EstopTimeoutCycles,
+               health: HealthViews, health_age: 0..(ReportDataTimeoutCycles + 1),
+               control: ControlStatus, control_age: 0..ControlAgeMax,
+               out_request: OutRequests, out_set_state: OutSetStates,
+               alarm: BOOLEAN, resend: BOOLEAN, set_age: 0..MessageIntervalCycles]
+
 \* SAF-01: every variable in its type; the state one of PAIRING, OPERATIONAL,
 \* EMERGENCY, FAULT.
 \* Every variable but the inbox in its type (SafetyServicePeers.tla has its own inboxes).
@@ -390,6 +408,8 @@ SvcTypeOK ==
     /\ h_health \in HealthViews /\ h_health_age \in 0..(ReportDataTimeoutCycles + 1)
     /\ h_told \in BOOLEAN /\ h_refused \in BOOLEAN /\ h_owed \in BOOLEAN /\ h_held_sent \in BOOLEAN
     /\ h_due \in BOOLEAN /\ h_due_age \in 0..MessageIntervalCycles
+    /\ h_ask_age \in 0..(ControlAgeMax + 1) /\ h_ask_refused \in BOOLEAN
+    /\ shadow \in SvcRecords
 
 TypeOK == SvcTypeOK /\ inbox \in Inboxes
 
@@ -495,6 +515,15 @@ INV_SAF_CONTEST ==
          => (alarm /\ control_age <= MessageIntervalCycles)
     /\ alarm => (state \in RaisingStates /\ control # "HELD")
 
+\* UCA-6, the contest lost: the service that wants control (it raises
+\* EMERGENCY and does not hold control, so the E-stop has not reached the
+\* subsystem) sends Request Control again within MESSAGEINTERVAL + 1 cycles
+\* of a genuine Confirm Control(REFUSED), and within REPORTDATATIMEOUT + 1
+\* cycles of its last unanswered Request Control: a refused service that
+\* never asks again leaves the subsystem to the other holder for good.
+INV_SAF_ASKS_AGAIN ==
+    h_ask_age <= IF h_ask_refused THEN MessageIntervalCycles ELSE ReportDataTimeoutCycles
+
 -----------------------------------------------------------------------------
 (* Reachability witnesses (non-vacuity): each Witness_X is the negation of *)
 (* a situation an invariant speaks about; tests/python/test_saf_model.py   *)
@@ -529,4 +558,8 @@ Witness_Resent ==              \* INV_SAF_SET_STATE_WITH_CONTROL: a re-send whil
     ~(out_set_state = "EMERGENCY" /\ control = "HELD" /\ control_age > 0)
 Witness_ContestAlarm ==        \* INV_SAF_CONTEST
     ~(alarm /\ control = "REFUSED" /\ estop = "SET")
+Witness_AskedAfterRefusal ==   \* INV_SAF_ASKS_AGAIN: the bound after a refusal is reached
+    ~(h_ask_refused /\ h_ask_age = MessageIntervalCycles)
+Witness_AskedAfterSilence ==   \* INV_SAF_ASKS_AGAIN: ... and after an unanswered request
+    ~(~h_ask_refused /\ h_ask_age = ReportDataTimeoutCycles /\ control = "REQUESTED")
 =============================================================================

@@ -26,9 +26,11 @@ CONSTANTS
     DiscrepancyCycles,    \* D, Config::discrepancy_cycles (RSM-04, RSM-02)
     ArmingTimeoutCycles,  \* Config::arming_timeout_cycles (RSM-07)
     MaxStopCycles,        \* Config::max_stop_cycles (RSM-11)
+    T2ConfirmTimeoutCycles, \* Config::t2_confirm_timeout_cycles (C22: a T2 confirmation expires)
     T1SpeedLimit,         \* Config::t1_speed_limit_mm_s (RSM-10)
     T2SpeedLimit,         \* Config::t2_speed_limit_mm_s (K26: the largest jog speed accepted)
     QueueCapacity,        \* Config::command_queue_limit (RSM-14)
+    FeedbackCycles,       \* Config::feedback_allowed_cycles (C30: a feedback's switching time)
     JogCommands           \* the JOG_START commands the operator may submit
 
 (* The input values the environment may present (restricts the input      *)
@@ -43,6 +45,7 @@ CONSTANTS
     DriveFaultInputs,     \* subset of BOOLEAN
     SelfTestInputs,       \* subset of BOOLEAN
     FieldbusInputs,       \* subset of BOOLEAN (C24: FALSE = fieldbus/cycle watchdog lost)
+    FeedbackInputs,       \* TRUE: contactor / brake feedback may disagree with the command
     LockoutHoldsInputs,   \* TRUE: the held signals stop changing in ERROR_LOCKOUT
     CombineChanges        \* TRUE: a held change and free choices in one cycle
 
@@ -54,7 +57,8 @@ T1MaxSpeed == 250
 
 EnablePositions == {"RELEASED", "MIDDLE", "PANIC"}
 Selectors       == {"AUTO", "T1", "T2", "INVALID"}
-Speeds          == {"ZERO", "MOVING", "OVER_T1"}
+\* OVER_T2: the TCP speed above Config::t2_speed_limit_mm_s (so above T1's too).
+Speeds          == {"ZERO", "MOVING", "OVER_T1", "OVER_T2"}
 Modes           == {"AUTO", "T1", "T2"}
 
 CommandKinds == {"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME",
@@ -72,7 +76,8 @@ InitialInputs == [estop_a |-> TRUE, estop_b |-> TRUE,
                   enable_a |-> "RELEASED", enable_b |-> "RELEASED",
                   selector |-> "AUTO", self_test_ok |-> TRUE,
                   servo_ready |-> FALSE, drive_fault |-> FALSE, speed |-> "ZERO",
-                  fieldbus_ok |-> TRUE, operator_link_ok |-> TRUE]
+                  fieldbus_ok |-> TRUE, operator_link_ok |-> TRUE,
+                  contactor_fb |-> FALSE, brake_fb |-> FALSE]
 
 ASSUME DiscrepancyCycles   \in Nat \ {0}
 ASSUME ArmingTimeoutCycles \in Nat \ {0}
@@ -83,8 +88,11 @@ ASSUME T1SpeedLimit        \in 1..T1MaxSpeed   \* ISO 10218-1 5.7.3: at most 250
 ASSUME DiscrepancyCycles   <= 2147483647
 ASSUME ArmingTimeoutCycles <= 2147483647
 ASSUME MaxStopCycles       <= 2147483647
+ASSUME T2ConfirmTimeoutCycles \in Nat \ {0} /\ T2ConfirmTimeoutCycles <= 2147483647
 ASSUME T2SpeedLimit \in Nat /\ T1SpeedLimit < T2SpeedLimit /\ T2SpeedLimit <= 3000
 ASSUME QueueCapacity       \in 1..16      \* at most the compile-time capacity
+ASSUME FeedbackCycles      \in 0..1000    \* kMaxFeedbackCycles (Config::validate)
+ASSUME FeedbackInputs      \in BOOLEAN
 ASSUME JogCommands \subseteq [kind: {"JOG_START"}, axis: Int, direction: Int,
                               speed_mm_s: Int]
 ASSUME EstopInputs      \subseteq BOOLEAN \X BOOLEAN
@@ -120,7 +128,8 @@ StopCategories == {"NONE", "CAT0", "CAT1", "CAT2"}
 FaultCodes == {"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP",
                "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING", "SELECTOR_INVALID",
                "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT",
-               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION", "SERVO_READY_LOST"}
+               "FIELDBUS_LOSS", "STANDSTILL_VIOLATION", "SERVO_READY_LOST",
+               "T2_OVERSPEED", "CONTACTOR_FEEDBACK", "BRAKE_FEEDBACK"}
 Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
             "SELECTOR_INVALID", "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE",
             "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO", "INVALID_ARGUMENT",
@@ -137,7 +146,9 @@ Inputs == [estop_a: BOOLEAN, estop_b: BOOLEAN, gate_a: BOOLEAN, gate_b: BOOLEAN,
            enable_a: EnablePositions, enable_b: EnablePositions,
            selector: Selectors, self_test_ok: BOOLEAN, servo_ready: BOOLEAN,
            drive_fault: BOOLEAN, speed: Speeds, fieldbus_ok: BOOLEAN,
-           operator_link_ok: BOOLEAN]
+           operator_link_ok: BOOLEAN,
+           contactor_fb: BOOLEAN,   \* the safety relay's auxiliary contact: closed
+           brake_fb: BOOLEAN]       \* the brakes' feedback: released
 
 Min(a, b) == IF a <= b THEN a ELSE b
 Max2(a, b) == IF a >= b THEN a ELSE b
@@ -153,7 +164,11 @@ VARIABLES
     stale_commands,       \* K36: queued commands submitted before the last E-stop release
     estop_tested_a,       \* K37: E-stop channel A seen open since the last accepted Reset
     estop_tested_b,       \* K37: likewise channel B
-    enable_release_required \* K39: PANIC seen since the enabling device was last RELEASED
+    enable_release_required, \* K39: PANIC seen since the enabling device was last RELEASED
+    contactor_fb_cycles,  \* C30: consecutive cycles the contactor feedback disagreed
+    brake_fb_cycles,      \* C30: likewise the brake feedback
+    contactor_fb_cmd,     \* the contactor command of the last disagreeing cycle
+    brake_fb_cmd          \* the brake command of the last disagreeing cycle
 
 (* Environment: `inputs` -- the inputs of the last cycle (before the     *)
 (* first cycle: InitialInputs); `event` -- the event that produced this  *)
@@ -198,8 +213,17 @@ VARIABLES inputs, event
 (*   obs_unexpected_motion -- RSM-11 (standstill monitoring): the last    *)
 (*                    cycle read speed # ZERO with power on and no motion  *)
 (*                    commanded at its start.                              *)
-(*   t1_overspeed  -- RSM-10: the last cycle read OVER_T1 while the       *)
-(*                    session output (at its start) was T1.               *)
+(*   t1_overspeed  -- RSM-10: the last cycle read OVER_T1 or OVER_T2      *)
+(*                    while the session output (at its start) was T1.     *)
+(*   obs_t2_overspeed -- UCA-RSM-12: the last cycle read OVER_T2 while    *)
+(*                    the session output (at its start) was T2.           *)
+(*   obs_fb_contactor, obs_fb_brake -- UCA-RSM-13: consecutive cycles     *)
+(*                    whose feedback read disagreed with the output at    *)
+(*                    the cycle's start (contactor, brake release), 1     *)
+(*                    again when that output changed since the previous  *)
+(*                    cycle (capped at FeedbackCycles + 1).               *)
+(*   obs_was_released -- the brake release output at the start of the    *)
+(*                    last cycle (obs_was_enabled is the contactor's).    *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
 (*                    self_test_ok = FALSE.                               *)
 (*   obs_arming    -- RSM-07/RSM-15: consecutive cycles that read        *)
@@ -222,19 +246,22 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
           obs_booted, obs_self_test_failed,
           obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
-          obs_was_enabled, obs_ready_lost, obs_panic
+          obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
+          obs_fb_contactor, obs_fb_brake, obs_was_released
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
               safeguard_mismatch, enabling_mismatch, selector_invalid,
               state_cycles, t2_confirmed, resume_to, jog, queue, axes,
-              stale_commands, estop_tested_a, estop_tested_b, enable_release_required>>
+              stale_commands, estop_tested_a, estop_tested_b, enable_release_required,
+              contactor_fb_cycles, brake_fb_cycles, contactor_fb_cmd, brake_fb_cmd>>
 obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
               last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
               obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
               obs_booted, obs_self_test_failed,
               obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
-              obs_was_enabled, obs_ready_lost, obs_panic>>
+              obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
+              obs_fb_contactor, obs_fb_brake, obs_was_released>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -253,7 +280,8 @@ View == <<state, selector, session_mode, stop_category, fault_code,
           command_result, estop_mismatch, safeguard_mismatch,
           enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
           resume_to, jog, queue, axes, stale_commands, estop_tested_a, estop_tested_b,
-          enable_release_required, Held(inputs), obsVars>>
+          enable_release_required, contactor_fb_cycles, brake_fb_cycles,
+          contactor_fb_cmd, brake_fb_cmd, Held(inputs), obsVars>>
 
 \* The manager state as one record, so that the sections can be composed.
 Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
@@ -265,7 +293,9 @@ Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
         resume_to |-> resume_to, jog |-> jog, queue |-> queue, axes |-> axes,
         stale_commands |-> stale_commands, estop_tested_a |-> estop_tested_a,
         estop_tested_b |-> estop_tested_b,
-        enable_release_required |-> enable_release_required]
+        enable_release_required |-> enable_release_required,
+        contactor_fb_cycles |-> contactor_fb_cycles, brake_fb_cycles |-> brake_fb_cycles,
+        contactor_fb_cmd |-> contactor_fb_cmd, brake_fb_cmd |-> brake_fb_cmd]
 
 SetMgr(m) ==
     /\ state' = m.state                 /\ selector' = m.selector
@@ -281,6 +311,8 @@ SetMgr(m) ==
     /\ stale_commands' = m.stale_commands
     /\ estop_tested_a' = m.estop_tested_a /\ estop_tested_b' = m.estop_tested_b
     /\ enable_release_required' = m.enable_release_required
+    /\ contactor_fb_cycles' = m.contactor_fb_cycles /\ brake_fb_cycles' = m.brake_fb_cycles
+    /\ contactor_fb_cmd' = m.contactor_fb_cmd /\ brake_fb_cmd' = m.brake_fb_cmd
     /\ queue' = m.queue                 /\ axes' = m.axes
 
 -----------------------------------------------------------------------------
@@ -356,6 +388,13 @@ C01_Guard(m, in) == m.state = "ERROR_LOCKOUT"                   \* RSM-04
 C02_Guard(m, in) == m.state = "BOOT" /\ ~in.self_test_ok        \* RSM-12
 C03_Guard(m, in) == DiscrepancyCode(m) # "NONE"                 \* RSM-04, RSM-02
 C24_Guard(m, in) == ~in.fieldbus_ok                             \* seed, RSM-03
+\* C30 (issue 29 item 10): a contactor or brake feedback that disagreed with
+\* its command for more than FeedbackCycles cycles (FeedbackMonitor below).
+FeedbackCode(m) ==
+    IF      m.contactor_fb_cycles > FeedbackCycles THEN "CONTACTOR_FEEDBACK"
+    ELSE IF m.brake_fb_cycles > FeedbackCycles     THEN "BRAKE_FEEDBACK"
+    ELSE "NONE"
+C30_Guard(m, in) == FeedbackCode(m) # "NONE"                    \* RSM-03, RSM-07
 C04_Guard(m, in) == m.state = "BOOT" /\ EstopTripped(in)        \* RSM-12
 C05_Guard(m, in) == m.state = "BOOT"                            \* RSM-12
 C06_Guard(m, in) == m.state # "ESTOP_ACTIVE" /\ EstopTripped(in) \* RSM-05
@@ -363,7 +402,10 @@ C07_Guard(m, in) == m.state = "ESTOP_ACTIVE" /\ ~EstopTripped(in) \* RSM-05
 C08_Guard(m, in) == m.state = "ESTOP_ACTIVE"                    \* RSM-05
 C09_Guard(m, in) == m.state \in Powered /\ in.drive_fault       \* RSM-07, RSM-03
 C10_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T1"  \* RSM-10
-                    /\ in.speed = "OVER_T1"
+                    /\ in.speed \in {"OVER_T1", "OVER_T2"}
+\* C29 (issue 29 item 5): measured TCP speed above the T2 limit in a T2 session.
+C29_Guard(m, in) == /\ m.state \in Powered /\ m.session_mode = "T2"  \* RSM-10, RSM-03
+                    /\ in.speed = "OVER_T2"
 \* C25: standstill monitoring where power is on and no motion is commanded
 \* (no exemption: every stop, a JOG_STOP's too, ends in these states only
 \* after a cycle that measured standstill, C18/C19/C28).
@@ -393,12 +435,13 @@ C28_Guard(m, in) == /\ m.state = "STOPPING" /\ in.speed = "ZERO"         \* RSM-
                     /\ m.stop_category = "CAT2" /\ m.resume_to = "NONE"
 C20_Guard(m, in) == m.state = "STOPPING" /\ m.state_cycles = MaxStopCycles
 C21_Guard(m, in) == m.state = "STOPPING"                                 \* RSM-11
-C22_Guard(m, in) == m.state = "IDLE" /\ in.selector # "T2"               \* RSM-06
+C22_Guard(m, in) == m.state = "IDLE" /\ (in.selector # "T2" \/ m.t2_confirmed) \* RSM-06
 
 C01(m, in) == m                                        \* stay: only re-init leaves
 C02(m, in) == Lockout(m, "SELF_TEST_FAILED")
 C03(m, in) == Lockout(m, DiscrepancyCode(m))
 C24(m, in) == Lockout(m, "FIELDBUS_LOSS")
+C30(m, in) == Lockout(m, FeedbackCode(m))
 C04(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
 C05(m, in) == Enter(m, "IDLE")
 C06(m, in) == WithCat(Enter(m, "ESTOP_ACTIVE"), "CAT0")
@@ -408,6 +451,7 @@ C07(m, in) == [Enter(m, "ESTOP_RESET_NEEDED") EXCEPT !.stale_commands = Len(m.qu
 C08(m, in) == m
 C09(m, in) == Lockout(m, "DRIVE_FAULT")
 C10(m, in) == Lockout(m, "T1_OVERSPEED")
+C29(m, in) == Lockout(m, "T2_OVERSPEED")
 C25(m, in) == Lockout(m, "STANDSTILL_VIOLATION")
 C27(m, in) == Lockout(m, "SERVO_READY_LOST")
 C11(m, in) == WithCat(Enter(m, "IDLE"), "CAT0")
@@ -434,22 +478,28 @@ C28(m, in) == Enter(m, "MANUAL_IDLE")
 C19(m, in) == [Enter(m, "HOLD") EXCEPT !.resume_to = m.resume_to, !.jog = m.jog]
 C20(m, in) == Lockout(m, "STOP_TIMEOUT")
 C21(m, in) == [m EXCEPT !.state_cycles = @ + 1]
-C22(m, in) == [m EXCEPT !.t2_confirmed = FALSE]
+\* Off T2, or confirmed T2ConfirmTimeoutCycles cycles ago: cleared; else it
+\* ages (issue 29 item 5: the confirmation expires).
+C22(m, in) == IF in.selector # "T2" \/ m.state_cycles = T2ConfirmTimeoutCycles
+              THEN [m EXCEPT !.t2_confirmed = FALSE, !.state_cycles = 0]
+              ELSE [m EXCEPT !.state_cycles = @ + 1]
 C23(m, in) == m                                        \* no change
 
 \* First matching row wins (§5). The chain is written once, here.  The
-\* latching rows C09, C27, C10, C25 precede the E-stop's C06 (issue 29
+\* latching rows C09, C27, C10, C29, C25 precede the E-stop's C06 (issue 29
 \* item 7): an E-stop in the same cycle must not make the fault forgotten.
 SafetyRow(m, in) ==
     IF      C01_Guard(m, in) THEN "C01"
     ELSE IF C02_Guard(m, in) THEN "C02"
     ELSE IF C03_Guard(m, in) THEN "C03"
     ELSE IF C24_Guard(m, in) THEN "C24"
+    ELSE IF C30_Guard(m, in) THEN "C30"
     ELSE IF C04_Guard(m, in) THEN "C04"
     ELSE IF C05_Guard(m, in) THEN "C05"
     ELSE IF C09_Guard(m, in) THEN "C09"
     ELSE IF C27_Guard(m, in) THEN "C27"
     ELSE IF C10_Guard(m, in) THEN "C10"
+    ELSE IF C29_Guard(m, in) THEN "C29"
     ELSE IF C25_Guard(m, in) THEN "C25"
     ELSE IF C06_Guard(m, in) THEN "C06"
     ELSE IF C07_Guard(m, in) THEN "C07"
@@ -486,6 +536,7 @@ Safety(m, in) ==
       [] r = "C23" -> C23(m, in) [] r = "C24" -> C24(m, in)
       [] r = "C25" -> C25(m, in) [] r = "C26" -> C26(m, in)
       [] r = "C27" -> C27(m, in) [] r = "C28" -> C28(m, in)
+      [] r = "C29" -> C29(m, in) [] r = "C30" -> C30(m, in)
 
 -----------------------------------------------------------------------------
 (********** §6 One command from the queue: validation rows K01-K35 *********)
@@ -583,7 +634,7 @@ K29(m, c, in) == [Enter(m, "MANUAL_JOGGING")
 \* issue 29 item 1: a JOG_STOP is a Cat 2 stop (IEC 60204-1 9.2.2), ramped
 \* down and watched by the stop timer (C20); C28 ends it in MANUAL_IDLE.
 K32(m, c, in) == WithCat(Enter(m, "STOPPING"), "CAT2")
-K35(m, c, in) == [m EXCEPT !.t2_confirmed = TRUE]
+K35(m, c, in) == [m EXCEPT !.t2_confirmed = TRUE, !.state_cycles = 0]
 
 Accept(r, m, c, in) ==
     LET n == CASE r = "K05" -> K05(m, c, in) [] r = "K12" -> K12(m, c, in)
@@ -624,16 +675,6 @@ AxesStep(m, in) ==
                  PLCopen!AxisStep(m.axes[i], DesiredAxis(m, i), in.speed = "ZERO")]]
 
 -----------------------------------------------------------------------------
-(***************************** The two events (§1) *************************)
-\* One scan cycle: §3, §5, §6 (against the state after §5), §8.
-AfterSafety(in) == Safety(Monitor(Mgr, in), in)
-AfterCycle(in)  == AxesStep(CommandStep(AfterSafety(in), in), in)
-
-\* Submit: a full queue rejects at once with QUEUE_FULL (RSM-14).
-AfterSubmit(c) ==
-    IF Len(queue) < QueueCapacity THEN [Mgr EXCEPT !.queue = Append(@, c)]
-    ELSE [Mgr EXCEPT !.last_reject_reason = "QUEUE_FULL"]
-
 (************************ Outputs (§7, RSM-16) *****************************)
 \* Each output as a function of a manager record: the requirement observers
 \* read the outputs before and after a cycle.
@@ -658,8 +699,50 @@ NoMotionOut(m) ==
     /\ CommandedSpeedOut(m) = 0 /\ ~RampDownOut(m) /\ m.state \notin Motion
     /\ \A i \in Axes : m.axes[i] \notin PLCopen!MotionStates
 
+\* C30's monitoring (§3, every cycle, every state; C++ FeedbackMonitor): the
+\* command is the output at the cycle's start (written by the previous cycle),
+\* the feedback the input of this cycle. A disagreement counts; agreement
+\* restarts the count; a command change during a disagreement restarts it at
+\* 1 (the device gets its full switching time); above FeedbackCycles it latches.
+FbCount(n, last, cmd, fb) ==
+    IF n > FeedbackCycles THEN n
+    ELSE IF cmd = fb THEN 0
+    ELSE IF n > 0 /\ cmd # last THEN 1
+    ELSE n + 1
+FbLast(n, last, cmd, fb) ==
+    IF n > FeedbackCycles THEN last ELSE IF cmd = fb THEN FALSE ELSE cmd
+
+FeedbackMonitor(m, in) ==
+    LET c == ContactorOut(m)
+        b == BrakeReleaseOut(m)
+    IN [m EXCEPT
+          !.contactor_fb_cycles = FbCount(m.contactor_fb_cycles, m.contactor_fb_cmd, c, in.contactor_fb),
+          !.contactor_fb_cmd    = FbLast(m.contactor_fb_cycles, m.contactor_fb_cmd, c, in.contactor_fb),
+          !.brake_fb_cycles     = FbCount(m.brake_fb_cycles, m.brake_fb_cmd, b, in.brake_fb),
+          !.brake_fb_cmd        = FbLast(m.brake_fb_cycles, m.brake_fb_cmd, b, in.brake_fb)]
+
+\* §3 with the feedback monitoring: what the §5 rows read.
+Monitored(in) == FeedbackMonitor(Monitor(Mgr, in), in)
+
+(***************************** The two events (§1) *************************)
+\* One scan cycle: §3, §5, §6 (against the state after §5), §8.
+AfterSafety(in) == Safety(Monitored(in), in)
+AfterCycle(in)  == AxesStep(CommandStep(AfterSafety(in), in), in)
+
+\* Submit: a full queue rejects at once with QUEUE_FULL (RSM-14).
+AfterSubmit(c) ==
+    IF Len(queue) < QueueCapacity THEN [Mgr EXCEPT !.queue = Append(@, c)]
+    ELSE [Mgr EXCEPT !.last_reject_reason = "QUEUE_FULL"]
+
 \* The kind of the command the next cycle pops, "NONE" if the queue is empty.
 Popped == IF queue = << >> THEN "NONE" ELSE Head(queue).kind
+
+\* UCA-RSM-13's observer: consecutive cycles feedback # output at the start,
+\* 1 again when the output changed since the previous cycle's start.
+ObsFb(o, prev, cmd, fb) ==
+    IF fb = cmd THEN 0
+    ELSE IF o > 0 /\ cmd # prev THEN 1
+    ELSE Min(o + 1, FeedbackCycles + 1)
 
 Cycle(in) ==
     LET m2  == AfterSafety(in)
@@ -693,14 +776,18 @@ Cycle(in) ==
                          /\ (in.selector = "AUTO" \/ m.session_mode = "AUTO")
        /\ obs_guard_fault' = (acc \in {"RESET", "SERVO_ON"} /\ in.drive_fault)
        /\ obs_servo_on_powered' = (acc = "SERVO_ON" /\ PowerOut(Mgr))
-       /\ obs_t2' = IF acc = "T2_CONFIRM" THEN TRUE
-                    ELSE IF in.selector # "T2" \/ tripped \/ PowerOut(Mgr) THEN FALSE
-                    ELSE obs_t2
+       /\ obs_t2' = IF acc = "T2_CONFIRM" THEN 1
+                    ELSE IF in.selector # "T2" \/ tripped \/ PowerOut(Mgr) \/ obs_t2 = 0 THEN 0
+                    ELSE Min(obs_t2 + 1, T2ConfirmTimeoutCycles + 2)
        /\ obs_drive_fault' = (in.drive_fault /\ PowerOut(Mgr))
        /\ obs_fieldbus_lost' = (obs_fieldbus_lost \/ ~in.fieldbus_ok)
        /\ obs_unexpected_motion' =
             (PowerOut(Mgr) /\ NoMotionOut(Mgr) /\ in.speed # "ZERO")
-       /\ t1_overspeed' = (session_mode = "T1" /\ in.speed = "OVER_T1")
+       /\ t1_overspeed' = (session_mode = "T1" /\ in.speed \in {"OVER_T1", "OVER_T2"})
+       /\ obs_t2_overspeed' = (session_mode = "T2" /\ in.speed = "OVER_T2")
+       /\ obs_fb_contactor' = ObsFb(obs_fb_contactor, obs_was_enabled, ContactorOut(Mgr), in.contactor_fb)
+       /\ obs_fb_brake' = ObsFb(obs_fb_brake, obs_was_released, BrakeReleaseOut(Mgr), in.brake_fb)
+       /\ obs_was_released' = BrakeReleaseOut(Mgr)
        /\ obs_booted' = TRUE
        /\ obs_self_test_failed' = (obs_self_test_failed \/ (~obs_booted /\ ~in.self_test_ok))
        /\ obs_arming' = IF DriveEnableOut(m) /\ ~in.servo_ready
@@ -728,7 +815,8 @@ Submit(c) ==
                    last_accepted, jog_in_auto, obs_guard_fault, obs_servo_on_powered, obs_t2,
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
                    obs_booted, obs_self_test_failed, obs_arming, obs_link_lost,
-                   obs_was_enabled, obs_ready_lost, obs_panic>>
+                   obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
+                   obs_fb_contactor, obs_fb_brake, obs_was_released>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -778,9 +866,13 @@ FreeChoices ==
 FreeDefault == [speed |-> "ZERO", servo_ready |-> state \in ReadyStates,
                 drive_fault |-> FALSE, self_test_ok |-> TRUE]
 
+\* The feedback follows its command (the output at the cycle's start) unless a
+\* FeedbackDisagree cycle says otherwise.
 WithFree(h, f) == [h EXCEPT !.speed = f.speed, !.servo_ready = f.servo_ready,
                             !.drive_fault = f.drive_fault, !.self_test_ok = f.self_test_ok,
-                            !.fieldbus_ok = TRUE, !.operator_link_ok = TRUE]
+                            !.fieldbus_ok = TRUE, !.operator_link_ok = TRUE,
+                            !.contactor_fb = ContactorOut(Mgr),
+                            !.brake_fb = BrakeReleaseOut(Mgr)]
 
 \* Fieldbus/cycle watchdog loss (C24) is a cycle of its own, the other free
 \* signals at their defaults: C24 precedes every row that reads them but
@@ -795,6 +887,16 @@ FieldbusLoss(cur) ==
 LinkLoss(cur) ==
     IF state # "MANUAL_JOGGING" THEN {}
     ELSE {[WithFree(cur, FreeDefault) EXCEPT !.operator_link_ok = FALSE]}
+
+\* A contactor or brake feedback that disagrees with its command (a welded or
+\* not pulling-in contactor, a brake that stays applied or released) is a cycle
+\* of its own, the other free signals at their defaults, in every state but
+\* lockout: the counters are read by C30 only, which precedes every row that
+\* reads a free signal but C02 (design page §13, the environment).
+FeedbackDisagree(cur) ==
+    IF state = "ERROR_LOCKOUT" \/ ~FeedbackInputs THEN {}
+    ELSE {[WithFree(cur, FreeDefault) EXCEPT !.contactor_fb = ~ContactorOut(Mgr)],
+          [WithFree(cur, FreeDefault) EXCEPT !.brake_fb = ~BrakeReleaseOut(Mgr)]}
 
 \* An E-stop change together with any free choice (issue 29 item 7: an
 \* E-stop pressed in the cycle that reads a drive fault, the drives not
@@ -813,9 +915,10 @@ EstopWithFree(cur) ==
 NextInputs(cur) ==
     IF CombineChanges
     THEN {WithFree(h, f) : h \in HeldVariants(cur), f \in FreeChoices}
-         \cup FieldbusLoss(cur) \cup LinkLoss(cur)
+         \cup FieldbusLoss(cur) \cup LinkLoss(cur) \cup FeedbackDisagree(cur)
     ELSE {WithFree(h, FreeDefault) : h \in HeldVariants(cur)} \cup EstopWithFree(cur)
          \cup {WithFree(cur, f) : f \in FreeChoices} \cup FieldbusLoss(cur) \cup LinkLoss(cur)
+         \cup FeedbackDisagree(cur)
 
 \* Before the first cycle (§7): BOOT, counters 0, selector INVALID, outputs
 \* off, every axis Disabled.
@@ -837,12 +940,16 @@ Init ==
     /\ obs_locked = FALSE         /\ obs_ramp = 0
     /\ last_accepted = "NONE"     /\ jog_in_auto = FALSE
     /\ obs_guard_fault = FALSE    /\ obs_servo_on_powered = FALSE
-    /\ obs_t2 = FALSE             /\ obs_drive_fault = FALSE
+    /\ obs_t2 = 0                 /\ obs_drive_fault = FALSE
     /\ obs_fieldbus_lost = FALSE  /\ obs_unexpected_motion = FALSE
     /\ t1_overspeed = FALSE       /\ obs_booted = FALSE
     /\ obs_self_test_failed = FALSE /\ obs_link_lost = FALSE
     /\ obs_arming = 0             /\ obs_popped = FALSE /\ obs_submit_lost = FALSE
     /\ obs_was_enabled = FALSE    /\ obs_ready_lost = FALSE /\ obs_panic = FALSE
+    /\ obs_t2_overspeed = FALSE
+    /\ contactor_fb_cycles = 0    /\ brake_fb_cycles = 0
+    /\ contactor_fb_cmd = FALSE   /\ brake_fb_cmd = FALSE
+    /\ obs_fb_contactor = 0       /\ obs_fb_brake = 0 /\ obs_was_released = FALSE
     /\ enable_release_required = FALSE
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
@@ -882,7 +989,7 @@ TypeOK ==
     /\ command_result \in Reasons \cup {"NONE", "ACCEPTED"}
     /\ estop_mismatch \in 0..(D + 1) /\ safeguard_mismatch \in 0..(D + 1)
     /\ enabling_mismatch \in 0..(D + 1) /\ selector_invalid \in 0..(D + 1)
-    /\ state_cycles \in 0..Max2(ArmingTimeoutCycles, MaxStopCycles)
+    /\ state_cycles \in 0..Max2(Max2(ArmingTimeoutCycles, MaxStopCycles), T2ConfirmTimeoutCycles)
     /\ t2_confirmed \in BOOLEAN
     /\ resume_to \in {"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}
     /\ jog \in JogType
@@ -898,12 +1005,17 @@ TypeOK ==
     /\ obs_locked \in BOOLEAN /\ obs_ramp \in 0..(MaxStopCycles + 2)
     /\ last_accepted \in CommandKinds \cup {"NONE"}
     /\ jog_in_auto \in BOOLEAN /\ obs_guard_fault \in BOOLEAN
-    /\ obs_servo_on_powered \in BOOLEAN /\ obs_t2 \in BOOLEAN
+    /\ obs_servo_on_powered \in BOOLEAN /\ obs_t2 \in 0..(T2ConfirmTimeoutCycles + 2)
     /\ obs_drive_fault \in BOOLEAN /\ obs_fieldbus_lost \in BOOLEAN
     /\ obs_unexpected_motion \in BOOLEAN /\ t1_overspeed \in BOOLEAN
     /\ obs_booted \in BOOLEAN /\ obs_self_test_failed \in BOOLEAN
     /\ obs_arming \in 0..(ArmingTimeoutCycles + 2)
     /\ obs_was_enabled \in BOOLEAN /\ obs_ready_lost \in BOOLEAN /\ obs_panic \in BOOLEAN
+    /\ obs_t2_overspeed \in BOOLEAN
+    /\ contactor_fb_cycles \in 0..(FeedbackCycles + 1) /\ brake_fb_cycles \in 0..(FeedbackCycles + 1)
+    /\ contactor_fb_cmd \in BOOLEAN /\ brake_fb_cmd \in BOOLEAN
+    /\ obs_fb_contactor \in 0..(FeedbackCycles + 1) /\ obs_fb_brake \in 0..(FeedbackCycles + 1)
+    /\ obs_was_released \in BOOLEAN
     /\ enable_release_required \in BOOLEAN
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     /\ obs_link_lost \in BOOLEAN
@@ -911,7 +1023,7 @@ TypeOK ==
     /\ (session_mode # "NONE") <=> (state \in Powered)
     /\ (fault_code # "NONE") <=> (state = "ERROR_LOCKOUT")
     /\ t2_confirmed => state = "IDLE"
-    /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"}
+    /\ state_cycles # 0 => state \in {"ARMING", "STOPPING"} \/ (state = "IDLE" /\ t2_confirmed)
     \* RSM-01: STOPPING is of category 1 or 2; HOLD is a category 2 pause
     /\ state = "STOPPING" => stop_category \in {"CAT1", "CAT2"}
     /\ state = "HOLD" => stop_category = "CAT2"
@@ -1055,7 +1167,7 @@ RSM06_SERVO_ON ==
         /\ inputs.selector = "AUTO" => inputs.gate_a /\ inputs.gate_b
         /\ inputs.selector \in {"T1", "T2"} =>
                inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE"
-        /\ inputs.selector = "T2" => obs_t2
+        /\ inputs.selector = "T2" => obs_t2 \in 1..(T2ConfirmTimeoutCycles + 1)
 
 \* RSM-07/RSM-03: a drive fault read while powered removes power (Cat 0)
 \* and shows a fault (or the E-stop removed power in the same cycle).
@@ -1078,6 +1190,24 @@ UCA_BRAKE_ORDER ==
 \* drives not ready with the brakes released ends with every power output
 \* off and a fault shown (bound: the same cycle).
 UCA_READY_LOST == obs_ready_lost => Unpowered /\ Locked
+
+\* UCA-RSM-12 (RSM-10, RSM-03, ISO 10218-1 5.7.4 / 5.4.3, issue 29 item 5): in a T2
+\* session no jog speed above the T2 limit is commanded, and a cycle that
+\* measures the TCP above the T2 limit ends with every power output off and a
+\* fault shown (bound: the same cycle; Cat 0, design page §13).
+UCA_T2_OVERSPEED ==
+    /\ session_mode = "T2" => commanded_speed_mm_s <= T2SpeedLimit
+    /\ obs_t2_overspeed => Unpowered /\ Locked
+
+\* UCA-RSM-13 (RSM-03, RSM-07, issue 29 item 10): a contactor feedback (the
+\* safety relay's auxiliary contact) or a brake feedback that disagrees with
+\* its command for FeedbackCycles + 1 consecutive cycles with the command
+\* unchanged ends that cycle with every power output off and a fault shown
+\* (bound: FeedbackCycles + 1 cycles of disagreement; a welded contactor is
+\* seen while it is commanded open, a brake that does not release while
+\* commanded released).
+UCA_FEEDBACK ==
+    obs_fb_contactor > FeedbackCycles \/ obs_fb_brake > FeedbackCycles => Unpowered /\ Locked
 
 \* UCA-RSM-05 (RSM-09, ISO 10218-1 5.8.3, issue 29 item 6): once the
 \* enabling device was read in PANIC (either channel), no drive is enabled
@@ -1160,6 +1290,9 @@ Witness_RSM12_SELF_TEST      == ~obs_self_test_failed
 Witness_RSM07_ARMING_TIMEOUT == ~(obs_arming = ArmingTimeoutCycles + 1)
 Witness_UCA_BRAKE_ORDER      == ~brake_release
 Witness_UCA_READY_LOST       == ~obs_ready_lost
+Witness_UCA_T2_OVERSPEED     == ~obs_t2_overspeed
+Witness_UCA_FEEDBACK         == ~(obs_fb_contactor > FeedbackCycles)
+Witness_UCA_FEEDBACK_BRAKE   == ~(obs_fb_brake > FeedbackCycles)
 \* (the panic observer set and the device back in MIDDLE, unpowered)
 Witness_UCA_PANIC_REARM      == ~(obs_panic /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE")
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
@@ -1208,7 +1341,7 @@ RowsFiredBy(in) ==
     LET m2 == AfterSafety(in)
         k  == IF queue = << >> THEN {}
               ELSE {CommandRow([m2 EXCEPT !.queue = Tail(@)], Head(queue), in)}
-    IN {SafetyRow(Monitor(Mgr, in), in)} \cup k
+    IN {SafetyRow(Monitored(in), in)} \cup k
 
 NextRows == UNION {RowsFiredBy(in) : in \in NextInputs(inputs)}
 

@@ -74,12 +74,22 @@ Strengthen_OBSERVERS ==
     /\ last_accepted = "PAUSE" => state = "STOPPING" /\ stop_category = "CAT2"
     /\ obs_arming > 0 => state = "ARMING" /\ obs_arming <= state_cycles + 1
     /\ obs_panic <=> enable_release_required
-    /\ t2_confirmed => obs_t2
+    /\ t2_confirmed => obs_t2 = state_cycles + 1
+    /\ state = "IDLE" => state_cycles <= T2ConfirmTimeoutCycles
+    \* C30: outside lockout the observers count what the feedback monitors count,
+    \* below the latch, and a running count remembers the previous cycle's command
+    /\ state # "ERROR_LOCKOUT" =>
+          /\ obs_fb_contactor = contactor_fb_cycles /\ obs_fb_brake = brake_fb_cycles
+          /\ contactor_fb_cycles <= FeedbackCycles /\ brake_fb_cycles <= FeedbackCycles
+          /\ contactor_fb_cycles > 0 => contactor_fb_cmd = obs_was_enabled
+          /\ brake_fb_cycles > 0 => brake_fb_cmd = obs_was_released
 
 \* A jog kept for a T1 session was clamped by K29 (the session never
 \* changes while a jog is kept: Enter keeps session_mode in powered states).
 Strengthen_T1JOG ==
-    (session_mode = "T1" /\ jog # NoJog) => jog.speed_mm_s <= T1SpeedLimit
+    /\ (session_mode = "T1" /\ jog # NoJog) => jog.speed_mm_s <= T1SpeedLimit
+    \* and every kept jog was bounded by K26 (UCA_T2_OVERSPEED after K24)
+    /\ jog # NoJog => jog.speed_mm_s <= T2SpeedLimit
 
 \* Every property of the .cfg at once: each is proved assuming all of them
 \* (and the lemmas above) in the pre-state; it is their conjunction that is
@@ -92,5 +102,6 @@ Strengthen_ALL ==
     /\ RSM09_JOG_START /\ RSM08_START /\ INV_T1SPEED /\ RSM06_SERVO_ON
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
     /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
-    /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM
+    /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM /\ UCA_T2_OVERSPEED
+    /\ UCA_FEEDBACK
 =============================================================================

@@ -34,6 +34,7 @@ OperatingMode session_mode(const MachineState& s) noexcept {
 std::uint32_t state_cycles(const MachineState& s) noexcept {
   if (const auto* a = std::get_if<states::Arming>(&s)) return a->state_cycles;
   if (const auto* st = std::get_if<states::Stopping>(&s)) return st->state_cycles;
+  if (const auto* idle = std::get_if<states::Idle>(&s)) return idle->state_cycles;
   return 0;
 }
 

@@ -8,7 +8,8 @@ namespace safestate {
 SpeedMonitor::SpeedMonitor(const Config& config) noexcept
     : kinematics_(config.dh, tool_offset_or_flange(config)),
       zero_velocity_rad_s_(config.zero_velocity_rad_s),
-      t1_speed_limit_mm_s_(static_cast<double>(config.t1_speed_limit_mm_s)) {}
+      t1_speed_limit_mm_s_(static_cast<double>(config.t1_speed_limit_mm_s)),
+      t2_speed_limit_mm_s_(static_cast<double>(config.t2_speed_limit_mm_s)) {}
 
 double SpeedMonitor::tcp_speed_mm_s(const JointVector& q, const JointVector& qd) const noexcept {
   return kinematics_.tcp_speed_mm_s(q, qd);
@@ -26,8 +27,11 @@ SpeedLevel SpeedMonitor::classify(const JointVector& q, const JointVector& qd) c
     return SpeedLevel::Zero;
   }
   const double tcp = tcp_speed_mm_s(q, qd);
-  // NaN/inf (unreadable sensor) counts as over the limit: the unsafe reading.
-  if (!std::isfinite(tcp) || tcp > t1_speed_limit_mm_s_) {
+  // NaN/inf (unreadable sensor) counts as over every limit: the unsafe reading.
+  if (!std::isfinite(tcp) || tcp > t2_speed_limit_mm_s_) {
+    return SpeedLevel::OverT2;
+  }
+  if (tcp > t1_speed_limit_mm_s_) {
     return SpeedLevel::OverT1;
   }
   return SpeedLevel::Moving;

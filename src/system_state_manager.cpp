@@ -34,7 +34,9 @@ SystemStateManager::SystemStateManager(const Config& config) noexcept
       safeguard_(config.discrepancy_cycles),
       enabling_(config.discrepancy_cycles),
       selector_(config.discrepancy_cycles),
-      fieldbus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit) {}
+      fieldbus_(config.fieldbus_expected_working_counter, config.fieldbus_lost_cycles_limit),
+      contactor_fb_(config.feedback_allowed_cycles),
+      brake_fb_(config.feedback_allowed_cycles) {}
 
 SubmitResult SystemStateManager::submit(const Command& command) noexcept {
   // size() only shrinks under a concurrent consumer, so the limit check is conservative.
@@ -66,6 +68,13 @@ void SystemStateManager::derive_inputs(const ScanInputs& in) noexcept {
   d.drive_fault = drives_.drive_fault;
   d.fieldbus_ok = fieldbus_.update(in.bus.cycle_counter, in.bus.working_counter);
   d.operator_link_ok = in.operator_link_ok;
+  // C30: each feedback against the output the previous cycle wrote (state_ is still that
+  // cycle's state here), every cycle, in every state.
+  const ScanOutputs commanded = outputs();
+  const bool contactor_bad =
+      contactor_fb_.update(commanded.contactor_closed, in.contactor_feedback_closed) != FeedbackFault::None;
+  const bool brake_bad = brake_fb_.update(commanded.brake_release, in.brake_feedback_released) != FeedbackFault::None;
+  d.feedback = contactor_bad ? FaultCode::ContactorFeedback : brake_bad ? FaultCode::BrakeFeedback : FaultCode::None;
   // K39: PANIC on either channel latches; only RELEASED on both channels clears it.
   enable_release_required_ = enabling_.either(EnablePosition::Panic) ||
                              (enable_release_required_ && !enabling_.both(EnablePosition::Released));
@@ -209,6 +218,8 @@ StatusRecord SystemStateManager::status() const noexcept {
   r.estop_tested_a = reset_.estop_tested_a;
   r.estop_tested_b = reset_.estop_tested_b;
   r.enable_release_required = enable_release_required_;
+  r.contactor_fb_cycles = contactor_fb_.disagreeing_cycles();
+  r.brake_fb_cycles = brake_fb_.disagreeing_cycles();
   return r;
 }
 

@@ -35,9 +35,15 @@ bool estop_tripped(const StepContext& c) noexcept { return c.in.estop_tripped; }
 bool estop_released(const StepContext& c) noexcept { return !c.in.estop_tripped; }
 bool drive_fault(const StepContext& c) noexcept { return c.in.drive_fault; }
 
-// C10: session_mode = T1 ∧ speed = OVER_T1.
+// C10: session_mode = T1 ∧ speed ∈ {OVER_T1, OVER_T2}.
 bool t1_session_overspeed(const StepContext& c) noexcept {
-  return session_mode(c.state) == OperatingMode::T1 && c.in.speed == SpeedLevel::OverT1;
+  return session_mode(c.state) == OperatingMode::T1 &&
+         (c.in.speed == SpeedLevel::OverT1 || c.in.speed == SpeedLevel::OverT2);
+}
+
+// C29: session_mode = T2 ∧ speed = OVER_T2 (issue 29 item 5).
+bool t2_session_overspeed(const StepContext& c) noexcept {
+  return session_mode(c.state) == OperatingMode::T2 && c.in.speed == SpeedLevel::OverT2;
 }
 
 // C11: manual ∧ enable_panic.
@@ -79,6 +85,10 @@ bool stopped_cat2(const StepContext& c) noexcept {
 bool stop_timer_expired(const StepContext& c) noexcept { return state_cycles(c.state) == c.config.max_stop_cycles; }
 
 bool selector_not_t2(const StepContext& c) noexcept { return c.in.selector != SelectorReading::T2; }
+// C22: the T2 confirmation is cleared when the selector leaves T2 and ages while it holds.
+bool selector_not_t2_or_t2_confirmed(const StepContext& c) noexcept {
+  return c.in.selector != SelectorReading::T2 || t2_confirmed(c.state);
+}
 bool selector_invalid(const StepContext& c) noexcept { return c.in.selector == SelectorReading::Invalid; }
 
 bool selector_auto_and_gate_open(const StepContext& c) noexcept {
@@ -116,6 +126,9 @@ bool jog_arguments_invalid(const StepContext& c) noexcept {
 }
 
 bool enable_not_middle(const StepContext& c) noexcept { return !c.in.enable_middle; }
+
+// C30: a feedback monitor latched (the contactor or the brakes did not follow their command).
+bool feedback_fault(const StepContext& c) noexcept { return c.in.feedback != FaultCode::None; }
 
 // C24: the fieldbus (EtherCAT) or the cycle watchdog reports a loss.
 bool fieldbus_lost(const StepContext& c) noexcept { return !c.in.fieldbus_ok; }
@@ -162,9 +175,11 @@ void lockout_self_test_failed(StepContext& c) noexcept { c.state = states::Error
 void lockout_discrepancy(StepContext& c) noexcept { c.state = states::ErrorLockout{c.in.discrepancy}; }
 void lockout_drive_fault(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::DriveFault}; }
 void lockout_t1_overspeed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::T1Overspeed}; }
+void lockout_t2_overspeed(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::T2Overspeed}; }
 void lockout_arming_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::ArmingTimeout}; }
 void lockout_stop_timeout(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::StopTimeout}; }
 void lockout_fieldbus_loss(StepContext& c) noexcept { c.state = states::ErrorLockout{FaultCode::FieldbusLoss}; }
+void lockout_feedback(StepContext& c) noexcept { c.state = states::ErrorLockout{c.in.feedback}; }
 void lockout_standstill_violation(StepContext& c) noexcept {
   c.state = states::ErrorLockout{FaultCode::StandstillViolation};
 }
@@ -233,8 +248,16 @@ void count_state_cycle(StepContext& c) noexcept {
   }
 }
 
-void clear_t2_confirmation(StepContext& c) noexcept {
-  if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = false;
+// C22: selector off T2, or the confirmation t2_confirm_timeout_cycles old: cleared; else one
+// cycle older. A Servo-on is accepted for t2_confirm_timeout_cycles cycles after K35's.
+void age_t2_confirmation(StepContext& c) noexcept {
+  if (auto* idle = std::get_if<states::Idle>(&c.state)) {
+    if (c.in.selector != SelectorReading::T2 || idle->state_cycles == c.config.t2_confirm_timeout_cycles) {
+      *idle = states::Idle{false, 0};
+    } else {
+      ++idle->state_cycles;
+    }
+  }
 }
 
 // K12: session_mode := selector (stop_category := NONE is the row's StopUpdate::Clear).
@@ -268,8 +291,9 @@ void enter_stopping_cat2_jog_stop(StepContext& c) noexcept {
 // C28: the jog stop reached standstill.
 void enter_manual_idle(StepContext& c) noexcept { c.state = states::ManualIdle{session_mode(c.state)}; }
 
+// K35: a (new) confirmation, valid from now for t2_confirm_timeout_cycles cycles (C22).
 void confirm_t2(StepContext& c) noexcept {
-  if (auto* idle = std::get_if<states::Idle>(&c.state)) idle->t2_confirmed = true;
+  if (auto* idle = std::get_if<states::Idle>(&c.state)) *idle = states::Idle{true, 0};
 }
 
 }  // namespace actions

@@ -61,13 +61,19 @@ JointVector joint_vector(const py::handle& value, const char* what) {
 struct CycleCall {
   ScanInputs in;
   bool raw_bus{false};
+  /// No feedback key given: the contactor and the brakes follow the outputs the manager
+  /// wrote last (an ideal device, as `levels` is an ideal bus); given: as read.
+  bool contactor_feedback_given{false};
+  bool brake_feedback_given{false};
   sim::BusLevels levels{false, false, false};  // a missing key: bus lost, drives not ready
 };
 
 ScanOutputs run_cycle(SystemStateManager& m, const CycleCall& c) {
-  if (c.raw_bus) return m.cycle(c.in);
   ScanInputs in = c.in;
-  in.bus = sim::bus_image(m.fieldbus_watchdog(), c.levels);
+  const ScanOutputs last = m.outputs();
+  if (!c.contactor_feedback_given) in.contactor_feedback_closed = last.contactor_closed;
+  if (!c.brake_feedback_given) in.brake_feedback_released = last.brake_release;
+  if (!c.raw_bus) in.bus = sim::bus_image(m.fieldbus_watchdog(), c.levels);
   return m.cycle(in);
 }
 
@@ -101,7 +107,13 @@ CycleCall scan_inputs(const py::dict& d) {
     } else if (key == "fieldbus_cycle_counter") call.raw_bus = true, in.bus.cycle_counter = v.cast<std::uint16_t>();
     else if (key == "working_counter") call.raw_bus = true, in.bus.working_counter = v.cast<std::uint16_t>();
     else if (key == "operator_link_ok") in.operator_link_ok = v.cast<bool>();
-    else if (key == "q") in.q = joint_vector(v, "q");
+    else if (key == "contactor_feedback_closed") {
+      in.contactor_feedback_closed = v.cast<bool>();
+      call.contactor_feedback_given = true;
+    } else if (key == "brake_feedback_released") {
+      in.brake_feedback_released = v.cast<bool>();
+      call.brake_feedback_given = true;
+    } else if (key == "q") in.q = joint_vector(v, "q");
     else if (key == "qd") in.qd = joint_vector(v, "qd");
     else throw py::key_error("unknown input '" + key + "'");
   }
@@ -160,6 +172,8 @@ py::dict observe(const SystemStateManager& m) {
   d["estop_tested_a"] = s.estop_tested_a;
   d["estop_tested_b"] = s.estop_tested_b;
   d["enable_release_required"] = s.enable_release_required;
+  d["contactor_fb_cycles"] = s.contactor_fb_cycles;
+  d["brake_fb_cycles"] = s.brake_fb_cycles;
   put_outputs(d, m.outputs());
   return d;
 }
@@ -329,6 +343,8 @@ void observe_key(const SystemStateManager& m, std::string& k) {
   num(s.estop_tested_a ? 1 : 0);
   num(s.estop_tested_b ? 1 : 0);
   num(s.enable_release_required ? 1 : 0);
+  num(s.contactor_fb_cycles);
+  num(s.brake_fb_cycles);
   num(o.contactor_closed ? 1 : 0);
   num(o.drive_enable ? 1 : 0);
   num(o.brake_release ? 1 : 0);
@@ -410,6 +426,11 @@ PYBIND11_MODULE(_core, m) {
                      "EtherCAT working counter of a complete frame (default 18: 3 per drive).")
       .def_readwrite("fieldbus_lost_cycles_limit", &Config::fieldbus_lost_cycles_limit,
                      "Missed bus cycles in a row tolerated before C24, at most 100 (default 0).")
+      .def_readwrite("feedback_allowed_cycles", &Config::feedback_allowed_cycles,
+                     "Cycles the contactor and brake feedback may disagree with their command, at most 1000 "
+                     "(default 100, C30).")
+      .def_readwrite("t2_confirm_timeout_cycles", &Config::t2_confirm_timeout_cycles,
+                     "Cycles a T2 confirmation stays valid for a Servo-on (default 30000).")
       .def_readwrite("t2_speed_limit_mm_s", &Config::t2_speed_limit_mm_s,
                      "T2 TCP speed limit, mm/s, above the T1 limit and at most 3000 (default 1000).")
       .def_readwrite("standstill_speed_window_mm_s", &Config::standstill_speed_window_mm_s,
@@ -467,7 +488,8 @@ PYBIND11_MODULE(_core, m) {
           "fieldbus_ok (bool; a simulated EtherCAT master makes the process image) or raw\n"
           "drive_status_words (6 CiA 402 words), fieldbus_cycle_counter, working_counter.\n"
           "A missing key takes its zero, safe value (contacts open, RELEASED, False, 0, bus lost);\n"
-          "an unknown key raises KeyError.\n"
+          "an unknown key raises KeyError. contactor_feedback_closed and brake_feedback_released\n"
+          "(bool, C30): when missing, each follows the output the manager wrote last (an ideal device).\n"
           "Returns the outputs: contactor_closed, drive_enable, brake_release, ramp_down_request,\n"
           "reset_lamp, commanded_speed_mm_s, axes (6 PLCopen state names).")
       .def(
@@ -642,7 +664,7 @@ PYBIND11_MODULE(_core, m) {
         return str(to_string(SpeedMonitor(config).classify(joint_vector(q, "q"), joint_vector(qd, "qd"))));
       },
       py::arg("q"), py::arg("qd"), py::arg("config") = Config{},
-      "The design §2 speed level of (q, qd): 'ZERO', 'MOVING' or 'OVER_T1'.");
+      "The design §2 speed level of (q, qd): 'ZERO', 'MOVING', 'OVER_T1' or 'OVER_T2'.");
   m.def(
       "names",
       [] {

@@ -131,14 +131,33 @@ class Store {
   uint32_t mk_str(Kind k, const std::string& s, int64_t rank) {
     std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
     if (concurrent) lock.lock();
-    auto key = std::make_pair(int(k), s);
-    auto it = strings_.find(key);
+    auto it = strings_.find(std::make_pair(int(k), s));
     if (it != strings_.end()) return it->second;
-    uint32_t id = uint32_t(vals.size());
-    names.push_back(s);
-    vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s)), nullptr});
-    strings_[key] = id;
+    return add_str(k, s, rank);
+  }
+  // The ranks of the strings the spec's modules name (Python's string_rank), for a
+  // string made while checking: TLC interns every string of the spec when it parses it,
+  // a string made later (ToString) when it is made, so it ranks after them all, in the
+  // order made.
+  std::unordered_map<std::string, int64_t> known_ranks;
+  std::vector<uint32_t> made_strings;  // in the order made
+  static constexpr int64_t kMadeRank = int64_t(1) << 40;
+  uint32_t made_str(const std::string& s) {
+    std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
+    if (concurrent) lock.lock();
+    auto it = strings_.find(std::make_pair(int(K_STR), s));
+    if (it != strings_.end()) return it->second;
+    auto known = known_ranks.find(s);
+    int64_t rank = known != known_ranks.end() ? known->second : kMadeRank + int64_t(made_strings.size());
+    uint32_t id = add_str(K_STR, s, rank);
+    made_strings.push_back(id);
     return id;
+  }
+  // A string's or model value's text (names may grow in another thread meanwhile).
+  std::string name_of(uint32_t id) {
+    std::unique_lock<std::mutex> lock(mu_, std::defer_lock);
+    if (concurrent) lock.lock();
+    return names[vals[id].off];
   }
 
   // Interns a sequence, function (keys then values) or set whose items are canonical.
@@ -366,6 +385,13 @@ class Store {
   std::vector<uint32_t> table_;
   size_t count_ = 0;
   std::map<std::pair<int, std::string>, uint32_t> strings_;
+  uint32_t add_str(Kind k, const std::string& s, int64_t rank) {  // under the lock
+    uint32_t id = uint32_t(vals.size());
+    names.push_back(s);
+    vals.push_back({k, uint32_t(names.size() - 1), 0, rank, mix(k * 7919ULL, std::hash<std::string>()(s)), nullptr});
+    strings_[std::make_pair(int(k), s)] = id;
+    return id;
+  }
 
   void grow() {
     std::vector<uint32_t> old(table_.size() * 2, kUnset);
@@ -469,6 +495,19 @@ enum Op : int {
   // an operator call whose body reads only its parameters (no state, no outer binder):
   // its value is remembered per argument values
   BIND_MEMO,
+  // TLC's ToString: the value as TLC prints it
+  TOSTRING,
+  // \A over an action that branches: the conjunction of its instances (A_FORALL_NEXT
+  // goes on to the next instance)
+  A_FORALL,
+  A_FORALL_NEXT,
+  // SUBSET S, S1 \X S2 \X ..., [S -> T] as finite sets (as values: enumerated)
+  POWERSET,
+  PRODUCT,
+  FNSET,
+  // membership in SUBSET S, S1 \X S2 ...
+  SD_SUBSET,
+  SD_PRODUCT,
   OP_COUNT
 };
 
@@ -552,6 +591,10 @@ class Engine {
     for (auto x : t[4].cast<py::tuple>()) n->kids.push_back(build(x));
     n->k = build(t[5]);
     Node* raw = n.get();
+    if (raw->op == A_FORALL) {  // its last kid, the A_FORALL_NEXT its instances end in, points back
+      raw->kids.back()->k = raw;
+      if (size_t(raw->a) >= foralls_.size()) foralls_.resize(size_t(raw->a) + 1);
+    }
     nodes.push_back(std::move(n));
     keep_.push_back(py::reinterpret_borrow<py::object>(obj));
     built[obj.ptr()] = raw;
@@ -748,9 +791,25 @@ class Engine {
         }
         return true;
       }
+      case SD_SUBSET: {
+        if (st.kind(x) != K_SET) return false;
+        for (uint32_t i = 0; i < st.len(x); ++i)
+          if (!member_sd(st.items(x)[i], sd->kids[0], c)) return false;
+        return true;
+      }
+      case SD_PRODUCT: {
+        if (st.kind(x) != K_SEQ || st.len(x) != sd->kids.size()) return false;
+        for (uint32_t i = 0; i < st.len(x); ++i)
+          if (!member_sd(st.items(x)[i], sd->kids[i], c)) return false;
+        return true;
+      }
       default: fail("bad set descriptor", sd->loc);
     }
   }
+
+  // The largest set SUBSET, \X and [S -> T] enumerate here (beyond: the Python engine).
+  static constexpr uint32_t kMaxEnumBits = 20;
+  static constexpr uint64_t kMaxEnum = uint64_t(1) << kMaxEnumBits;
 
   // The leaves (a constant, a variable, a bound name) without a call of the big
   // evaluator: most nodes are leaves, and its entry and exit cost more than they do.
@@ -1096,6 +1155,68 @@ class Engine {
         }
         return st.mk_seq(out);
       }
+      case POWERSET: {
+        uint32_t b = set(n->kids[0], c);
+        uint32_t nb = st.len(b);
+        if (nb > kMaxEnumBits) fail("SUBSET of a set this large is left to the Python engine", n->loc);
+        std::vector<uint32_t> el, sub;
+        std::vector<uint32_t> base(st.items(b), st.items(b) + nb);  // items may move: interning grows the pool
+        for (uint64_t m = 0; m < (uint64_t(1) << nb); ++m) {
+          sub.clear();
+          for (uint32_t i = 0; i < nb; ++i)
+            if (m >> i & 1) sub.push_back(base[i]);
+          el.push_back(st.intern(K_SET, sub.data(), uint32_t(sub.size())));  // a subsequence: sorted
+        }
+        return st.mk_set(el);
+      }
+      case PRODUCT: {
+        size_t nf = n->kids.size();
+        std::vector<uint32_t> sets(nf), pos(nf, 0), el, tup(nf);
+        uint64_t total = 1;
+        for (size_t f = 0; f < nf; ++f) {
+          sets[f] = set(n->kids[f], c);
+          total *= std::max<uint64_t>(st.len(sets[f]), 1);
+          if (total > kMaxEnum) fail("a product this large is left to the Python engine", n->loc);
+        }
+        for (size_t f = 0; f < nf; ++f)
+          if (st.len(sets[f]) == 0) return st.mk_set(el);
+        while (true) {
+          for (size_t f = 0; f < nf; ++f) tup[f] = st.items(sets[f])[pos[f]];
+          el.push_back(st.mk_seq(tup));
+          size_t f = 0;
+          while (f < nf && ++pos[f] == st.len(sets[f])) pos[f++] = 0;
+          if (f == nf) return st.mk_set(el);
+        }
+      }
+      case FNSET: {
+        uint32_t d = set(n->kids[0], c), r = set(n->kids[1], c);
+        uint32_t nd = st.len(d), nr = st.len(r);
+        std::vector<uint32_t> keys(st.items(d), st.items(d) + nd), el;
+        uint64_t total = 1;
+        for (uint32_t i = 0; i < nd && nr > 0; ++i) {
+          total *= nr;
+          if (total > kMaxEnum) fail("a function set this large is left to the Python engine", n->loc);
+        }
+        if (nd > 0 && nr == 0) return st.mk_set(el);
+        bool seq = true;  // a sequence when the domain is 1..n (as mk_fun makes it)
+        for (uint32_t i = 0; i < nd && seq; ++i)
+          seq = Store::is_int(keys[i]) && Store::int_of(keys[i]) == int64_t(i) + 1;
+        std::vector<uint32_t> pos(nd, 0), buf;
+        while (true) {
+          buf.clear();
+          if (!seq) buf.insert(buf.end(), keys.begin(), keys.end());
+          for (uint32_t i = 0; i < nd; ++i) buf.push_back(st.items(r)[pos[i]]);
+          el.push_back(st.intern(seq ? K_SEQ : K_FUN, buf.data(), nd));
+          uint32_t i = 0;
+          while (i < nd && ++pos[i] == nr) pos[i++] = 0;
+          if (i == nd) return st.mk_set(el);
+        }
+      }
+      case TOSTRING: {
+        std::string out;
+        print(eval(n->kids[0], c), out);
+        return st.made_str(out);
+      }
       case RECSET: {
         // [a : S, b : T] as a finite set of records (ints: the field names).
         size_t nf = n->ints.size();
@@ -1116,6 +1237,51 @@ class Engine {
       }
       default: fail("not an expression", n->loc);
     }
+  }
+
+  // A value as TLC prints it (values.fmt): a function of strings as a record, another
+  // function as (k :> v @@ ...); a set's elements and a function's keys are in TLC's
+  // order already.
+  void print(uint32_t v, std::string& out) {
+    Kind k = st.kind(v);
+    switch (k) {
+      case K_BOOL: out += v == kTrue ? "TRUE" : "FALSE"; return;
+      case K_INT: out += std::to_string(Store::int_of(v)); return;
+      case K_MV: out += st.name_of(v); return;
+      case K_STR:
+        out += '"';
+        for (char ch : st.name_of(v)) {
+          if (ch == '\\') out += "\\\\";
+          else if (ch == '"') out += "\\\"";
+          else if (ch == '\n') out += "\\n";
+          else out += ch;
+        }
+        out += '"';
+        return;
+      default: break;
+    }
+    uint32_t n = st.len(v);
+    const uint32_t* it = st.items(v);
+    if (k == K_FUN) {
+      bool record = true;
+      for (uint32_t i = 0; i < n && record; ++i) record = st.kind(it[i]) == K_STR;
+      out += record ? "[" : "(";
+      for (uint32_t i = 0; i < n; ++i) {
+        if (i) out += record ? ", " : " @@ ";
+        if (record) out += st.name_of(it[i]);
+        else print(it[i], out);
+        out += record ? " |-> " : " :> ";
+        print(it[n + i], out);
+      }
+      out += record ? "]" : ")";
+      return;
+    }
+    out += k == K_SEQ ? "<<" : "{";
+    for (uint32_t i = 0; i < n; ++i) {
+      if (i) out += ", ";
+      print(it[i], out);
+    }
+    out += k == K_SEQ ? ">>" : "}";
   }
 
   // ------------------------------------------------------------ actions
@@ -1211,6 +1377,8 @@ class Engine {
         bind(n, c);
         exec(n->kids.back(), c);
         return;
+      case A_FORALL: forall(n, c); return;
+      case A_FORALL_NEXT: forall_next(n->k, c); return;
       case A_ALLASSIGNED:
         for (int i = 0; i < nvars; ++i)
           if (c.t[i] == kUnset) {
@@ -1222,6 +1390,71 @@ class Engine {
       default: fail("not an action", n->loc);
     }
   }
+  // \A x \in S : A in an action is the conjunction of A for each x, as TLC takes it
+  // (Tool.getNextStates, ActionCompiler._forall): A with the first binding, then the
+  // others as pending conjuncts, which TLC's list takes last-first (x1, xn, ..., x2);
+  // a pending one is a boolean once every variable is assigned.
+  // ints: the \A's index, the first and one past the last slot its body uses, the
+  // binders' slots; kids: the binders' sets, the body as an action, the body as a
+  // guard, the A_FORALL_NEXT both end in; k: what follows the conjunction.
+  struct Forall {
+    std::vector<uint32_t> order;  // the bindings, nb ids each, in the order taken
+    size_t pos = 0;
+  };
+  std::vector<Forall> foralls_;  // per \A (a worker has its own)
+  void bind_forall(Node* f, const Forall& fr) {
+    size_t nb = f->ints.size() - 3;
+    for (size_t b = 0; b < nb; ++b) slots[size_t(f->ints[3 + b])] = fr.order[fr.pos * nb + b];
+  }
+  void forall(Node* n, Ctx& c) {
+    size_t nb = n->ints.size() - 3;
+    std::vector<uint32_t> sets(nb), pos(nb, 0), combos;
+    for (size_t b = 0; b < nb; ++b) {
+      sets[b] = set(n->kids[b], c);
+      if (st.len(sets[b]) == 0) {
+        exec(n->k, c);
+        return;
+      }
+    }
+    while (true) {  // TLC's ContextEnumerator: the first binder turns fastest
+      for (size_t b = 0; b < nb; ++b) combos.push_back(st.items(sets[b])[pos[b]]);
+      size_t b = 0;
+      while (b < nb && ++pos[b] == st.len(sets[b])) pos[b++] = 0;
+      if (b == nb) break;
+    }
+    size_t count = combos.size() / nb;
+    Forall fr;
+    fr.order.reserve(combos.size());
+    fr.order.insert(fr.order.end(), combos.begin(), combos.begin() + ptrdiff_t(nb));
+    for (size_t i = count; i-- > 1;)
+      fr.order.insert(fr.order.end(), combos.begin() + ptrdiff_t(i * nb), combos.begin() + ptrdiff_t((i + 1) * nb));
+    Forall& cur = foralls_[size_t(n->a)];
+    std::swap(cur, fr);  // fr: an outer instance of this \A, if any (restored after)
+    bind_forall(n, cur);
+    exec(n->kids[nb], c);
+    std::swap(foralls_[size_t(n->a)], fr);
+  }
+  void forall_next(Node* f, Ctx& c) {
+    Forall& fr = foralls_[size_t(f->a)];
+    if (fr.pos + 1 >= fr.order.size() / (f->ints.size() - 3)) {
+      exec(f->k, c);
+      return;
+    }
+    // A later instance goes on with the slot values of its own (restored after).
+    size_t lo = size_t(f->ints[1]), hi = size_t(f->ints[2]);
+    std::vector<uint32_t> saved(slots.begin() + ptrdiff_t(lo), slots.begin() + ptrdiff_t(hi));
+    ++fr.pos;
+    bind_forall(f, fr);
+    bool unassigned = false;
+    for (int i = 0; i < nvars && !unassigned; ++i) unassigned = c.t[i] == kUnset;
+    size_t nb = f->ints.size() - 3;
+    exec(unassigned ? f->kids[nb] : f->kids[nb + 1], c);
+    Forall& back = foralls_[size_t(f->a)];  // the same instance: nested ones restored theirs
+    --back.pos;
+    bind_forall(f, back);
+    std::copy(saved.begin(), saved.end(), slots.begin() + ptrdiff_t(lo));
+  }
+
   // BIND_MEMO's values (per engine: a worker has its own).
   struct MemoKey {
     const Node* node;
@@ -1266,7 +1499,8 @@ class Engine {
 
   // ------------------------------------------------------------ folding constants
   void fold(Node* n) {
-    if (n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) return;
+    bool also = n->op == TOSTRING || n->op == POWERSET || n->op == PRODUCT || n->op == FNSET;
+    if ((n->op < NOT || n->op > RECSET || n->op == AT || n->op == BIND) && !also) return;
     if (n->kids.empty() && n->op != SETENUM && n->op != TUPLE && n->op != RECLIT) return;
     for (Node* k : n->kids)
       if (k->op != CONST) return;
@@ -1379,7 +1613,15 @@ class Engine {
     return rss * 4096 / (1024 * 1024);
   }
   std::chrono::steady_clock::time_point last_progress = std::chrono::steady_clock::now();
+  // Ctrl-C, SIGTERM: the search runs without the GIL, so Python's handlers run only
+  // here; the exception they raise (KeyboardInterrupt, the CLI's Terminated) leaves
+  // run() as it is, with the counts so far readable.
+  void poll_signals() {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
   void periodic() {
+    poll_signals();
     if (max_memory_mb && rss_mb() > max_memory_mb) {
       result = "memory";
       throw Stop{};
@@ -1496,6 +1738,7 @@ class Engine {
           std::vector<uint32_t> cur(arena.begin() + head * size_t(nvars), arena.begin() + (head + 1) * size_t(nvars));
           Ctx nc{cur.data(), t.data(), nullptr};
           before = generated;
+          if ((head & 255) == 0) poll_signals();
           exec(next, nc);
           if (generated == before && check_deadlock) {
             result = "deadlock failure";
@@ -1569,6 +1812,7 @@ class Engine {
     check_deadlock = m.check_deadlock;
     view = m.view;
     emit_kind = 1;
+    foralls_.resize(m.foralls_.size());
     master_ = &m;
   }
   Engine() = default;
@@ -1840,6 +2084,9 @@ PYBIND11_MODULE(_tla_native, m) {
   m.attr("OP_A_BIND") = int(A_BIND);
   m.attr("OP_SELECTSEQ") = int(SELECTSEQ);
   m.attr("OP_BIND_MEMO") = int(BIND_MEMO);
+  m.attr("OP_TOSTRING") = int(TOSTRING);
+  m.attr("OP_A_FORALL_NEXT") = int(A_FORALL_NEXT);
+  m.attr("OP_SD_PRODUCT") = int(SD_PRODUCT);
   // An evaluation error of Engine.step / Engine.evaluate (the Python evaluator reports it).
   py::register_exception<Engine::StepError>(m, "StepError");
   py::class_<Engine>(m, "Engine")
@@ -1870,6 +2117,15 @@ PYBIND11_MODULE(_tla_native, m) {
              }
            })
       .def("describe", &Engine::describe)
+      .def("set_known_ranks",
+           [](Engine& e, const std::unordered_map<std::string, int64_t>& r) { e.st.known_ranks = r; })
+      // The strings made while checking, in the order made (their ranks follow it).
+      .def("made_strings",
+           [](Engine& e) {
+             std::vector<std::string> out;
+             for (uint32_t id : e.st.made_strings) out.push_back(e.st.names[e.st.vals[id].off]);
+             return out;
+           })
       .def("set_slots", [](Engine& e, size_t n) { e.slots.assign(n, kUnset); })
       .def("build", [](Engine& e, py::handle node) { return reinterpret_cast<uintptr_t>(e.build(node)); })
       .def("configure",

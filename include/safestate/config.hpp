@@ -23,14 +23,20 @@ inline constexpr std::size_t kMaxQueueCapacity = 16;
 /// parameter + 1) stays far from overflow. 2^31 - 1 cycles = 24 days at 1 ms.
 inline constexpr std::uint32_t kMaxTimerCycles = 0x7FFF'FFFFU;
 
+/// Upper bound of feedback_allowed_cycles: 1 s at 1 ms, beyond any contactor's or brake's
+/// switching time, so that a welded contactor is seen long before an operator can act on it.
+inline constexpr std::uint32_t kMaxFeedbackCycles = 1000;
+
 struct Config {
   std::uint32_t cycle_time_us{1000};         ///< scan cycle period (informative; timers count cycles)
   std::uint32_t discrepancy_cycles{50};      ///< D: tolerated cycles of channel disagreement (§3)
   std::uint32_t arming_timeout_cycles{500};  ///< cycles ARMING waits for servo_ready (C16)
   std::uint32_t max_stop_cycles{1000};       ///< cycles STOPPING waits for zero speed (C20)
-  std::int32_t t1_speed_limit_mm_s{250};     ///< T1 TCP speed limit, integer mm/s, 1..250 (C10, K29)
-  std::int32_t t2_speed_limit_mm_s{1000};    ///< T2 TCP speed limit, integer mm/s (K26)
-  double zero_velocity_rad_s{0.001};         ///< |qd[i]| at or below this is standstill (§2)
+  /// Cycles a T2 confirmation (K35) stays valid for a Servo-on, 1..kMaxTimerCycles (C22).
+  std::uint32_t t2_confirm_timeout_cycles{30000};
+  std::int32_t t1_speed_limit_mm_s{250};   ///< T1 TCP speed limit, integer mm/s, 1..250 (C10, K29)
+  std::int32_t t2_speed_limit_mm_s{1000};  ///< T2 TCP speed limit, integer mm/s (K26)
+  double zero_velocity_rad_s{0.001};       ///< |qd[i]| at or below this is standstill (§2)
   /// The TCP speed (mm/s) the standstill class may admit: zero_velocity_rad_s seen at the
   /// tool (zero_class_tcp_bound_mm_s) must not exceed it, and it stays below the T1 limit.
   double standstill_speed_window_mm_s{10.0};
@@ -40,6 +46,9 @@ struct Config {
   std::uint16_t fieldbus_expected_working_counter{18};
   /// Missed bus cycles in a row tolerated before C24 (0 = none), at most kMaxFieldbusLostCycles.
   std::uint32_t fieldbus_lost_cycles_limit{0};
+  /// Cycles the contactor and brake feedback may disagree with their command (the devices'
+  /// switching time, C30), at most kMaxFeedbackCycles.
+  std::uint32_t feedback_allowed_cycles{100};
   DhTable dh{kUr5DhTable};  ///< arm kinematics (UR5 standard DH)
   /// Tool centre point in the flange (last DH) frame, metres: the T1 speed (RSM-10) is
   /// measured at the tool tip, not at the flange. No default: the integrator states the
@@ -70,6 +79,9 @@ inline constexpr std::array<double, 3> kFlangeTcp{0.0, 0.0, 0.0};
   if (c.max_stop_cycles > kMaxTimerCycles) {
     return ConfigError::MaxStopTooLarge;
   }
+  if (c.t2_confirm_timeout_cycles == 0U || c.t2_confirm_timeout_cycles > kMaxTimerCycles) {
+    return ConfigError::T2ConfirmTimeoutOutOfRange;
+  }
   if (c.t1_speed_limit_mm_s <= 0) {
     return ConfigError::T1LimitNotPositive;
   }
@@ -96,6 +108,9 @@ inline constexpr std::array<double, 3> kFlangeTcp{0.0, 0.0, 0.0};
   }
   if (c.fieldbus_lost_cycles_limit > kMaxFieldbusLostCycles) {
     return ConfigError::FieldbusToleranceTooLarge;
+  }
+  if (c.feedback_allowed_cycles > kMaxFeedbackCycles) {
+    return ConfigError::FeedbackTimeTooLarge;
   }
   if (!c.tool_offset_m.has_value()) {
     return ConfigError::ToolOffsetNotGiven;

@@ -26,9 +26,11 @@ enum class ConfigError : std::uint8_t {
   ZeroVelocityAboveWindow,     ///< zero_velocity_rad_s seen at the tool exceeds the standstill window
   FieldbusWorkingCounterZero,  ///< fieldbus_expected_working_counter must be > 0 (0 accepts silence)
   FieldbusToleranceTooLarge,   ///< fieldbus_lost_cycles_limit above kMaxFieldbusLostCycles
+  T2ConfirmTimeoutOutOfRange,  ///< t2_confirm_timeout_cycles must be in 1..kMaxTimerCycles
+  FeedbackTimeTooLarge,        ///< feedback_allowed_cycles above kMaxFeedbackCycles
 };
 
-inline constexpr std::size_t kConfigErrorCount = 16;
+inline constexpr std::size_t kConfigErrorCount = 18;
 
 inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
     ConfigError::None,
@@ -47,6 +49,8 @@ inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
     ConfigError::ZeroVelocityAboveWindow,
     ConfigError::FieldbusWorkingCounterZero,
     ConfigError::FieldbusToleranceTooLarge,
+    ConfigError::T2ConfirmTimeoutOutOfRange,
+    ConfigError::FeedbackTimeTooLarge,
 };
 
 [[nodiscard]] constexpr std::string_view to_string(ConfigError e) noexcept {
@@ -67,6 +71,8 @@ inline constexpr std::array<ConfigError, kConfigErrorCount> kAllConfigErrors{
     case ConfigError::ZeroVelocityAboveWindow: return "ZERO_VELOCITY_ABOVE_WINDOW";
     case ConfigError::FieldbusWorkingCounterZero: return "FIELDBUS_WORKING_COUNTER_ZERO";
     case ConfigError::FieldbusToleranceTooLarge: return "FIELDBUS_TOLERANCE_TOO_LARGE";
+    case ConfigError::T2ConfirmTimeoutOutOfRange: return "T2_CONFIRM_TIMEOUT_OUT_OF_RANGE";
+    case ConfigError::FeedbackTimeTooLarge: return "FEEDBACK_TIME_TOO_LARGE";
   }
   return "?";
 }

@@ -24,6 +24,9 @@ struct DerivedInputs {
   /// K39 (ISO 10218-1 5.8.3): the enabling device was in PANIC (either channel) and has
   /// not been RELEASED (both channels) since; MIDDLE reached from PANIC does not enable.
   bool enable_release_required{false};
+  /// C30: ContactorFeedback or BrakeFeedback once a feedback monitor latched (contactor
+  /// first), else None.
+  FaultCode feedback{FaultCode::None};
   /// First discrepancy fault in §3 order (E-stop, safeguard, enabling, selector), else None.
   FaultCode discrepancy{FaultCode::None};
 };

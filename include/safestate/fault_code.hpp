@@ -24,10 +24,13 @@ enum class FaultCode : std::uint8_t {
   StopTimeout,
   FieldbusLoss,
   StandstillViolation,
-  ServoReadyLost,  ///< C27: the drives stopped reporting ready with the brakes released
+  ServoReadyLost,     ///< C27: the drives stopped reporting ready with the brakes released
+  T2Overspeed,        ///< C29: measured TCP speed above the T2 limit in a T2 session
+  ContactorFeedback,  ///< C30: the contactor's auxiliary contact disagreed beyond its switching time
+  BrakeFeedback,      ///< C30: the brake feedback disagreed beyond its switching time
 };
 
-inline constexpr std::size_t kFaultCodeCount = 13;
+inline constexpr std::size_t kFaultCodeCount = 16;
 
 inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::None,
@@ -43,6 +46,9 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     FaultCode::FieldbusLoss,
     FaultCode::StandstillViolation,
     FaultCode::ServoReadyLost,
+    FaultCode::T2Overspeed,
+    FaultCode::ContactorFeedback,
+    FaultCode::BrakeFeedback,
 };
 
 /// The upper-case name used by the design page, the model and the conformance suite.
@@ -61,6 +67,9 @@ inline constexpr std::array<FaultCode, kFaultCodeCount> kAllFaultCodes{
     case FaultCode::FieldbusLoss: return "FIELDBUS_LOSS";
     case FaultCode::StandstillViolation: return "STANDSTILL_VIOLATION";
     case FaultCode::ServoReadyLost: return "SERVO_READY_LOST";
+    case FaultCode::T2Overspeed: return "T2_OVERSPEED";
+    case FaultCode::ContactorFeedback: return "CONTACTOR_FEEDBACK";
+    case FaultCode::BrakeFeedback: return "BRAKE_FEEDBACK";
   }
   return "?";
 }

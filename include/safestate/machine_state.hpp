@@ -27,6 +27,7 @@ struct EstopActive {};
 struct EstopResetNeeded {};
 struct Idle {
   bool t2_confirmed{false};
+  std::uint32_t state_cycles{0};  // cycles since the T2 confirmation (C22), 0 when not confirmed
 };
 struct Arming {
   OperatingMode session_mode{OperatingMode::None};

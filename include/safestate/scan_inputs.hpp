@@ -23,8 +23,13 @@ struct ScanInputs {
   /// and fieldbus_ok (C24) are derived from them in the core (design §2).
   DriveBusImage bus;
   bool operator_link_ok{false};  ///< operator link heartbeat within its period (C26)
-  JointVector q{};               ///< joint positions, rad
-  JointVector qd{};              ///< joint velocities, rad/s
+  /// C30 (issue 29 item 10): the contactor's auxiliary (mirror) contact reports the main
+  /// contacts closed; the brakes' feedback reports them released. Each is compared with the
+  /// output the previous cycle wrote (FeedbackMonitor).
+  bool contactor_feedback_closed{false};
+  bool brake_feedback_released{false};
+  JointVector q{};   ///< joint positions, rad
+  JointVector qd{};  ///< joint velocities, rad/s
 };
 
 }  // namespace safestate

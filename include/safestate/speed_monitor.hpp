@@ -11,10 +11,10 @@
 
 namespace safestate {
 
-/// ZERO when every |qd[i]| <= zero_velocity_rad_s; else OVER_T1 when the TCP speed
-/// |J_v(q)·qd| exceeds the T1 limit; else MOVING.
+/// ZERO when every |qd[i]| <= zero_velocity_rad_s; else OVER_T2 when the TCP speed
+/// |J_v(q)·qd| exceeds the T2 limit, OVER_T1 when it exceeds the T1 limit, else MOVING.
 /// A non-finite joint value (NaN/inf from a broken sensor) that is not already ZERO is
-/// classified OVER_T1: an unreadable speed is treated as the unsafe one.
+/// classified OVER_T2: an unreadable speed is treated as the most unsafe one.
 class SpeedMonitor {
  public:
   explicit SpeedMonitor(const Config& config) noexcept;
@@ -29,6 +29,7 @@ class SpeedMonitor {
   ArmKinematics kinematics_;
   double zero_velocity_rad_s_;
   double t1_speed_limit_mm_s_;
+  double t2_speed_limit_mm_s_;
 };
 
 }  // namespace safestate

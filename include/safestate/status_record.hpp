@@ -37,10 +37,12 @@ struct StatusRecord {
   std::int32_t jog_direction{0};
   std::int32_t jog_speed_mm_s{0};
   std::size_t queue_length{0};
-  std::uint32_t stale_commands{0};      ///< K36: queued commands submitted before the E-stop release
-  bool estop_tested_a{false};           ///< K37: E-stop channel A seen open since the last Reset
-  bool estop_tested_b{false};           ///< K37: likewise channel B
-  bool enable_release_required{false};  ///< K39: PANIC seen since the enabling device was last RELEASED
+  std::uint32_t stale_commands{0};       ///< K36: queued commands submitted before the E-stop release
+  bool estop_tested_a{false};            ///< K37: E-stop channel A seen open since the last Reset
+  bool estop_tested_b{false};            ///< K37: likewise channel B
+  bool enable_release_required{false};   ///< K39: PANIC seen since the enabling device was last RELEASED
+  std::uint32_t contactor_fb_cycles{0};  ///< C30: cycles the contactor feedback disagreed in a row
+  std::uint32_t brake_fb_cycles{0};      ///< C30: likewise the brake feedback
 
   [[nodiscard]] bool operator==(const StatusRecord& o) const noexcept {
     return state == o.state && selector == o.selector && session_mode == o.session_mode &&
@@ -51,7 +53,8 @@ struct StatusRecord {
            state_cycles == o.state_cycles && t2_confirmed == o.t2_confirmed && resume_to == o.resume_to &&
            jog_axis == o.jog_axis && jog_direction == o.jog_direction && jog_speed_mm_s == o.jog_speed_mm_s &&
            queue_length == o.queue_length && stale_commands == o.stale_commands && estop_tested_a == o.estop_tested_a &&
-           estop_tested_b == o.estop_tested_b && enable_release_required == o.enable_release_required;
+           estop_tested_b == o.estop_tested_b && enable_release_required == o.enable_release_required &&
+           contactor_fb_cycles == o.contactor_fb_cycles && brake_fb_cycles == o.brake_fb_cycles;
   }
   [[nodiscard]] bool operator!=(const StatusRecord& o) const noexcept { return !(*this == o); }
 };

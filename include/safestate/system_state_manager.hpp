@@ -15,6 +15,7 @@
 #include "safestate/drive_status_summary.hpp"
 #include "safestate/dual_channel_input.hpp"
 #include "safestate/enable_position.hpp"
+#include "safestate/feedback_monitor.hpp"
 #include "safestate/fieldbus_watchdog.hpp"
 #include "safestate/fired_rows.hpp"
 #include "safestate/machine_state.hpp"
@@ -93,6 +94,8 @@ class SystemStateManager {
   DualChannelInput<EnablePosition> enabling_;
   ModeSelector selector_;
   FieldbusWatchdog fieldbus_;
+  FeedbackMonitor contactor_fb_;  ///< C30: the contactor's auxiliary contact
+  FeedbackMonitor brake_fb_;      ///< C30: the brakes' release feedback
   DriveStatusSummary drives_{};
 
   MachineState state_{states::Boot{}};

@@ -32,6 +32,7 @@ bool estop_tripped(const StepContext&) noexcept;
 bool estop_released(const StepContext&) noexcept;
 bool drive_fault(const StepContext&) noexcept;
 bool t1_session_overspeed(const StepContext&) noexcept;
+bool t2_session_overspeed(const StepContext&) noexcept;
 bool manual_session_panic(const StepContext&) noexcept;
 bool selector_differs_from_session_unless_cat1_stopping(const StepContext&) noexcept;
 bool auto_session_gate_open_unless_cat1_stopping(const StepContext&) noexcept;
@@ -42,6 +43,7 @@ bool stopped_cat1(const StepContext&) noexcept;
 bool stopped_cat2(const StepContext&) noexcept;
 bool stop_timer_expired(const StepContext&) noexcept;
 bool selector_not_t2(const StepContext&) noexcept;
+bool selector_not_t2_or_t2_confirmed(const StepContext&) noexcept;
 bool selector_invalid(const StepContext&) noexcept;
 bool selector_auto_and_gate_open(const StepContext&) noexcept;
 bool selector_manual_and_enable_not_middle(const StepContext&) noexcept;
@@ -53,6 +55,7 @@ bool in_auto(const StepContext&) noexcept;
 bool jog_arguments_invalid(const StepContext&) noexcept;
 bool enable_not_middle(const StepContext&) noexcept;
 bool fieldbus_lost(const StepContext&) noexcept;
+bool feedback_fault(const StepContext&) noexcept;
 bool operator_link_lost(const StepContext&) noexcept;
 bool moving_at_standstill(const StepContext&) noexcept;
 bool reset_submitted_before_release(const StepContext&) noexcept;
@@ -70,9 +73,11 @@ void lockout_self_test_failed(StepContext&) noexcept;
 void lockout_discrepancy(StepContext&) noexcept;
 void lockout_drive_fault(StepContext&) noexcept;
 void lockout_t1_overspeed(StepContext&) noexcept;
+void lockout_t2_overspeed(StepContext&) noexcept;
 void lockout_arming_timeout(StepContext&) noexcept;
 void lockout_stop_timeout(StepContext&) noexcept;
 void lockout_fieldbus_loss(StepContext&) noexcept;
+void lockout_feedback(StepContext&) noexcept;
 void lockout_standstill_violation(StepContext&) noexcept;
 void reset_to_idle(StepContext&) noexcept;
 void enter_estop_active(StepContext&) noexcept;
@@ -83,7 +88,7 @@ void enter_stopping_cat2_pause(StepContext&) noexcept;
 void enter_operational_idle(StepContext&) noexcept;
 void enter_hold(StepContext&) noexcept;
 void count_state_cycle(StepContext&) noexcept;
-void clear_t2_confirmation(StepContext&) noexcept;
+void age_t2_confirmation(StepContext&) noexcept;
 void enter_arming(StepContext&) noexcept;
 void enter_auto_running(StepContext&) noexcept;
 void resume_motion(StepContext&) noexcept;
@@ -145,13 +150,14 @@ struct Effect {
 #define SAFESTATE_ACTION(fn) &::safestate::actions::fn, #fn
 
 // clang-format off
-inline constexpr std::array<TransitionRow, 67> kRows{{
+inline constexpr std::array<TransitionRow, 69> kRows{{
   // ---- §5: one scan cycle, after channel monitoring (§3) ---------------------------------------
   // id     event      source                    guard                                                              effect                                                                       stop        requirements
   row("C01", Ev::Cycle, {St::ErrorLockout},       SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "RSM-04, INV-DISCREPANCY"),
   row("C02", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(self_test_failed_or_config_invalid),              enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_self_test_failed)),       Stop::Cat0, "RSM-12"),
   row("C03", Ev::Cycle, any(),                    SAFESTATE_GUARD(discrepancy_fault),                               enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_discrepancy)),            Stop::Cat0, "RSM-04, RSM-02"),
   row("C24", Ev::Cycle, any(),                    SAFESTATE_GUARD(fieldbus_lost),                                   enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_fieldbus_loss)),          Stop::Cat0, "RSM-03, seed"),
+  row("C30", Ev::Cycle, any(),                    SAFESTATE_GUARD(feedback_fault),                                  enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_feedback)),               Stop::Cat0, "RSM-03, RSM-07, UCA-RSM-13"),
   row("C04", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(estop_tripped),                                   enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-12"),
   row("C05", Ev::Cycle, {St::Boot},               SAFESTATE_GUARD(always),                                          enter({St::Idle}, SAFESTATE_ACTION(enter_idle)),                             Stop::Keep, "RSM-12"),
   // The latching rows before C06: an E-stop in the same cycle keeps the lockout (issue 29 item 7).
@@ -159,6 +165,7 @@ inline constexpr std::array<TransitionRow, 67> kRows{{
   row("C27", Ev::Cycle, {St::AutoIdle, St::AutoRunning, St::ManualIdle, St::ManualJogging, St::Stopping, St::Hold},
                                                   SAFESTATE_GUARD(servo_not_ready),                                 enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_servo_ready_lost)),       Stop::Cat0, "RSM-07, RSM-03"),
   row("C10", Ev::Cycle, powered(),                SAFESTATE_GUARD(t1_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t1_overspeed)),           Stop::Cat0, "RSM-10, INV-T1SPEED"),
+  row("C29", Ev::Cycle, powered(),                SAFESTATE_GUARD(t2_session_overspeed),                            enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_t2_overspeed)),           Stop::Cat0, "RSM-10, RSM-03, UCA-RSM-12"),
   row("C25", Ev::Cycle, {St::Arming, St::AutoIdle, St::ManualIdle, St::Hold}, SAFESTATE_GUARD(moving_at_standstill), enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_standstill_violation)), Stop::Cat0, "RSM-11, RSM-03"),
   row("C06", Ev::Cycle, any_but({St::EstopActive}), SAFESTATE_GUARD(estop_tripped),                                 enter({St::EstopActive}, SAFESTATE_ACTION(enter_estop_active)),              Stop::Cat0, "RSM-05, INV-1OO2"),
   row("C07", Ev::Cycle, {St::EstopActive},        SAFESTATE_GUARD(estop_released),                                  enter({St::EstopResetNeeded}, SAFESTATE_ACTION(enter_estop_reset_needed)),   Stop::Keep, "RSM-05"),
@@ -176,7 +183,7 @@ inline constexpr std::array<TransitionRow, 67> kRows{{
   row("C19", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stopped_cat2),                                    enter({St::Hold}, SAFESTATE_ACTION(enter_hold)),                             Stop::Keep, "RSM-11"),
   row("C20", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(stop_timer_expired),                              enter({St::ErrorLockout}, SAFESTATE_ACTION(lockout_stop_timeout)),           Stop::Cat0, "RSM-11"),
   row("C21", Ev::Cycle, {St::Stopping},           SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(count_state_cycle)),                                   Stop::Keep, "RSM-11"),
-  row("C22", Ev::Cycle, {St::Idle},               SAFESTATE_GUARD(selector_not_t2),                                 stay(SAFESTATE_ACTION(clear_t2_confirmation)),                               Stop::Keep, "RSM-06"),
+  row("C22", Ev::Cycle, {St::Idle},               SAFESTATE_GUARD(selector_not_t2_or_t2_confirmed),                 stay(SAFESTATE_ACTION(age_t2_confirmation)),                               Stop::Keep, "RSM-06"),
   row("C23", Ev::Cycle, any(),                    SAFESTATE_GUARD(always),                                          stay(SAFESTATE_ACTION(none)),                                                Stop::Keep, "-"),
 
   // ---- §6: one command popped from the queue, after §5 ----------------------------------------
@@ -229,8 +236,8 @@ inline constexpr std::array<TransitionRow, 67> kRows{{
 }  // namespace table_dsl
 
 /// The table, §5 rows then §6 rows.
-inline constexpr const std::array<TransitionRow, 67>& kTransitionTable = table_dsl::kRows;
-inline constexpr std::size_t kCycleRowCount = 28;    // C01..C28
+inline constexpr const std::array<TransitionRow, 69>& kTransitionTable = table_dsl::kRows;
+inline constexpr std::size_t kCycleRowCount = 30;    // C01..C30
 inline constexpr std::size_t kCommandRowCount = 39;  // K01..K39
 
 // ---- Compile-time audit of the table ---------------------------------------------------------
@@ -243,7 +250,7 @@ namespace table_check {
 }
 
 /// C rows then K rows, each id Cnn / Knn within its section's count (rows added by a later
-/// change take the next free number and sit where first-match needs them: C24-C28, K36-K39).
+/// change take the next free number and sit where first-match needs them: C24-C30, K36-K39).
 [[nodiscard]] constexpr bool ids_in_order() noexcept {
   for (std::size_t i = 0; i < kTransitionTable.size(); ++i) {
     const bool cycle = i < kCycleRowCount;
@@ -320,8 +327,8 @@ namespace table_check {
 
 }  // namespace table_check
 
-static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "67 rows: C01-C28, K01-K39");
-static_assert(table_check::ids_in_order(), "row ids must be C01..C28 then K01..K39");
+static_assert(kTransitionTable.size() == kCycleRowCount + kCommandRowCount, "69 rows: C01-C30, K01-K39");
+static_assert(table_check::ids_in_order(), "row ids must be C01..C30 then K01..K39");
 static_assert(table_check::ids_unique(), "row ids must be unique");
 static_assert(table_check::events_match_sections(), "C rows are cycle rows, K rows command rows");
 static_assert(table_check::effects_well_formed(), "every reject row needs a reason; effects must be well formed");

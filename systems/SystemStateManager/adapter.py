@@ -7,9 +7,9 @@ interface, docs/adding-a-system.md walks through writing one).
 
 * Cycle(in): the model's abstract input record becomes raw channels (design §2): each
   channel level as is; selector AUTO/T1/T2 closes exactly that contact, INVALID none;
-  speed ZERO / MOVING / OVER_T1 becomes joint velocities at a fixed pose, chosen with an
-  independent reference kinematics (`tcp_speed_per_rad_s`: the DH product in Python)
-  and checked against the C++ classification once.
+  speed ZERO / MOVING / OVER_T1 / OVER_T2 becomes joint velocities at a fixed pose,
+  chosen with an independent reference kinematics (`tcp_speed_per_rad_s`: the DH product
+  in Python) and checked against the C++ classification once.
 * Submit(c): `manager.submit(kind, axis, direction, speed_mm_s)`; the C++ must answer
   QUEUE_FULL exactly when the model's queue is full.
 * Projection: the §7 status variables as they are, `jog` split into jog_axis /
@@ -76,7 +76,9 @@ class SystemStateManagerAdapter(Adapter):
                           # issue 17: the Reset interlock (K36 stale commands, K37 channel test).
                           "stale_commands", "estop_tested_a", "estop_tested_b",
                           # issue 29 item 6: K39's memory of a PANIC since the last RELEASED.
-                          "enable_release_required")
+                          "enable_release_required",
+                          # issue 29 item 10: C30's feedback monitors (FeedbackMonitor's counts).
+                          "contactor_fb_cycles", "brake_fb_cycles")
     split_records = {"jog": (("jog_axis", "axis"), ("jog_direction", "direction"),
                              ("jog_speed_mm_s", "speed_mm_s"))}
     observed_operators = ("contactor_closed", "drive_enable", "brake_release", "ramp_down_request",
@@ -90,14 +92,20 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_drive_fault", "obs_fieldbus_lost", "obs_unexpected_motion", "t1_overspeed",
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
                         "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
-                        "obs_panic")
+                        "obs_panic", "obs_t2_overspeed", "obs_fb_contactor", "obs_fb_brake",
+                        "obs_was_released",
+                        # FeedbackMonitor's last command: read only while a disagreement
+                        # counts, and then the command of the previous cycle (not in status).
+                        "contactor_fb_cmd", "brake_fb_cmd")
     config_constants = {
         "DiscrepancyCycles": "discrepancy_cycles",
         "ArmingTimeoutCycles": "arming_timeout_cycles",
         "MaxStopCycles": "max_stop_cycles",
+        "T2ConfirmTimeoutCycles": "t2_confirm_timeout_cycles",
         "T1SpeedLimit": "t1_speed_limit_mm_s",
         "T2SpeedLimit": "t2_speed_limit_mm_s",
         "QueueCapacity": "command_queue_limit",
+        "FeedbackCycles": "feedback_allowed_cycles",
     }
     rows_operator = "RowsFiredBy"
     # Design page §6: "K17 after C13; K22 after C13; K23 and K28 after C11/C14".
@@ -141,6 +149,9 @@ class SystemStateManagerAdapter(Adapter):
             "fieldbus_ok": rec["fieldbus_ok"],
             # issue 16 (C26): the operator link's heartbeat monitor.
             "operator_link_ok": rec["operator_link_ok"],
+            # issue 29 item 10 (C30): the contactor's auxiliary contact, the brakes' feedback.
+            "contactor_feedback_closed": rec["contactor_fb"],
+            "brake_feedback_released": rec["brake_fb"],
             "q": POSE, "qd": self.speeds[rec["speed"]][0],  # type: ignore[index]
         }
         if key is not None:
@@ -192,6 +203,9 @@ class SystemStateManagerAdapter(Adapter):
         for name in ("servo_ready", "drive_fault", "self_test_ok", "fieldbus_ok", "operator_link_ok"):
             for v in BOOLS:
                 add(f"{name} {v}", {name: v}, {name: v})
+        for name, raw_name in (("contactor_fb", "contactor_feedback_closed"), ("brake_fb", "brake_feedback_released")):
+            for v in BOOLS:
+                add(f"{name} {v}", {name: v}, {raw_name: v})
         probes += self._combined_disagreement_probes(state, cur, base)
         probes += self._hazard_probes(state, cur, base)
         if not state[self.index["queue"]]:
@@ -252,6 +266,12 @@ class SystemStateManagerAdapter(Adapter):
         unready = ({"servo_ready": False}, {"servo_ready": False})
         stop_cycles = int(self.constants["MaxStopCycles"]) + 2
         arming_cycles = int(self.constants["ArmingTimeoutCycles"]) + 2
+        feedback_cycles = int(self.constants["FeedbackCycles"]) + 2
+        # a stuck feedback: the opposite of what the outputs of this state command
+        powered = state[self.index["state"]] in ("ARMING", "AUTO_IDLE", "AUTO_RUNNING", "MANUAL_IDLE",
+                                                 "MANUAL_JOGGING", "STOPPING", "HOLD")
+        stuck_contactor = not powered
+        stuck_brake = not (powered and state[self.index["state"]] != "ARMING")
         return [
             seq("UCA-RSM-06 E-stop and a drive fault in one cycle",
                 [cyc(dict(estop[0], drive_fault=True), dict(estop[1], drive_fault=True))]),
@@ -260,7 +280,16 @@ class SystemStateManagerAdapter(Adapter):
             seq("UCA-RSM-06 E-stop channel B and a T1 overspeed in one cycle",
                 [cyc({"estop_b": False, "speed": "OVER_T1"},
                      {"estop_closed_b": False, "qd": self.speeds["OVER_T1"][0]})]),
+            seq("UCA-RSM-12 E-stop channel B and a T2 overspeed in one cycle",
+                [cyc({"estop_b": False, "speed": "OVER_T2"},
+                     {"estop_closed_b": False, "qd": self.speeds["OVER_T2"][0]})]),
             seq("UCA-RSM-03 servo_ready lost, held 3 cycles", [cyc(*unready)] * 3),
+            seq(f"UCA-RSM-13 contactor feedback stuck, {feedback_cycles} cycles",
+                [cyc({"contactor_fb": stuck_contactor}, {"contactor_feedback_closed": stuck_contactor})]
+                * feedback_cycles),
+            seq(f"UCA-RSM-13 E-stop with the brake feedback stuck, {feedback_cycles} cycles",
+                [cyc(dict(estop[0], brake_fb=stuck_brake), dict(estop[1], brake_feedback_released=stuck_brake))]
+                * feedback_cycles),
             seq("UCA-RSM-05 enabling PANIC, back to MIDDLE, then Servo-on",
                 [cyc(*panic), cyc(*middle), sub("SERVO_ON"), cyc(*middle)]),
             seq(f"UCA-RSM-07 JOG_STOP with the arm still moving, {stop_cycles} cycles",
@@ -354,7 +383,8 @@ class SystemStateManagerAdapter(Adapter):
     # ------------------------------------------------------ Hypothesis rules
     def hypothesis_rules(self) -> type:
         return flagship_rules(int(self.constants["DiscrepancyCycles"]), self.queue_capacity,
-                              sorted({int(self.constants[k]) + d for k in ("ArmingTimeoutCycles", "MaxStopCycles")
+                              sorted({int(self.constants[k]) + d
+                                      for k in ("ArmingTimeoutCycles", "MaxStopCycles", "T2ConfirmTimeoutCycles")
                                       for d in (-1, 0, 1, 2)} - {0}))
 
 
@@ -402,16 +432,22 @@ def speed_vectors(core: ModuleType, config: Any) -> dict[str, Any]:
     per_rad = tcp_speed_per_rad_s(dh, POSE, 0)  # mm/s per rad/s of joint 1
     limit = float(config.t1_speed_limit_mm_s)
     zero = float(config.zero_velocity_rad_s)
-    at_limit = limit / per_rad
-    # The C++ rounds differently in the last bits: nudge so that its own TCP speed is the
-    # limit exactly (the reference and the C++ agree to 1e-9 relative, checked here).
     cpp_per_rad = core.tcp_speed_mm_s(POSE, [1.0, 0, 0, 0, 0, 0], config)
-    if abs(cpp_per_rad - per_rad) <= 1e-9 * per_rad:
-        for _ in range(64):
-            got = core.tcp_speed_mm_s(POSE, [at_limit, 0, 0, 0, 0, 0], config)
-            if got == limit:
-                break
-            at_limit = math.nextafter(at_limit, math.inf if got < limit else -math.inf)
+
+    def exactly(bound: float) -> float:
+        """Joint 1's rate whose TCP speed is `bound`. The C++ rounds differently in the
+        last bits: nudge so that its own TCP speed is the bound exactly (the reference and
+        the C++ agree to 1e-9 relative, checked here)."""
+        w = bound / per_rad
+        if abs(cpp_per_rad - per_rad) <= 1e-9 * per_rad:
+            for _ in range(64):
+                got = core.tcp_speed_mm_s(POSE, [w, 0, 0, 0, 0, 0], config)
+                if got == bound:
+                    break
+                w = math.nextafter(w, math.inf if got < bound else -math.inf)
+        return w
+    at_limit = exactly(limit)
+    at_t2 = exactly(float(config.t2_speed_limit_mm_s))
 
     def j1(v: float) -> list[float]:
         return [v, 0.0, 0.0, 0.0, 0.0, 0.0]
@@ -428,10 +464,16 @@ def speed_vectors(core: ModuleType, config: Any) -> dict[str, Any]:
         ("TCP exactly at the T1 limit", "MOVING", j1(at_limit)),
         ("TCP just above the T1 limit", "OVER_T1", j1(at_limit * 1.001)),
         ("TCP above the T1 limit, joint 1 negative", "OVER_T1", j1(-at_limit * 1.001)),
-        ("NaN joint velocity", "OVER_T1", j1(math.nan)),
+        ("TCP exactly at the T2 limit", "OVER_T1", j1(at_t2)),
+        ("TCP just above the T2 limit", "OVER_T2", j1(at_t2 * 1.001)),
+        ("TCP above the T2 limit, joint 1 negative", "OVER_T2", j1(-at_t2 * 1.001)),
+        ("NaN joint velocity", "OVER_T2", j1(math.nan)),
     ]
+    if not at_limit < 0.5 * (at_limit + at_t2) < at_t2:
+        raise ValueError("the T2 limit must lie above the T1 limit for an OVER_T1 velocity below it")
     return {"ZERO": ([0.0] * 6, "zero"), "MOVING": (j1(moving), "half the T1 limit"),
-            "OVER_T1": (j1(2.0 * at_limit), "twice the T1 limit"), "probes": probes}
+            "OVER_T1": (j1(0.5 * (at_limit + at_t2)), "between the T1 and the T2 limit"),
+            "OVER_T2": (j1(2.0 * at_t2), "twice the T2 limit"), "probes": probes}
 
 
 # ---------------------------------------------------------------------------

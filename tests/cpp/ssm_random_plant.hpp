@@ -26,7 +26,16 @@ class RandomPlant {
   /// (power off, or every axis Disabled/StandStill): the robot then stays at rest but for
   /// a rare creep (a fault that the standstill monitor, C25, must catch).
   /// `bus`: the manager's watchdog, from which the simulated master numbers its frames.
-  const ScanInputs& next(const FieldbusWatchdog& bus, bool at_rest_commanded = false) {
+  /// `last`: the outputs the manager wrote last, which the contactor's and the brakes'
+  /// feedback follow but for a rare episode of 1..6 cycles stuck at the other level (a slow
+  /// or welded contact: within feedback_allowed_cycles C30 tolerates it, beyond it locks out).
+  const ScanInputs& next(const FieldbusWatchdog& bus, bool at_rest_commanded, const ScanOutputs& last) {
+    if (contactor_stuck_ == 0 && chance(0.0005)) contactor_stuck_ = 1 + uniform(6);
+    if (brake_stuck_ == 0 && chance(0.0005)) brake_stuck_ = 1 + uniform(6);
+    in_.contactor_feedback_closed = contactor_stuck_ > 0 ? !last.contactor_closed : last.contactor_closed;
+    in_.brake_feedback_released = brake_stuck_ > 0 ? !last.brake_release : last.brake_release;
+    if (contactor_stuck_ > 0) --contactor_stuck_;
+    if (brake_stuck_ > 0) --brake_stuck_;
     follow(estop_demand_, in_.estop_closed, 0.004, 0.03);
     follow(gate_demand_, in_.safeguard_closed, 0.01, 0.03);
     // Enabling device: the operator moves it; the two channels follow with a lag.
@@ -107,6 +116,8 @@ class RandomPlant {
   std::mt19937 rng_;
   sim::BusLevels levels_{};
   ScanInputs in_{};
+  std::uint32_t contactor_stuck_{0};  // cycles the contactor feedback still disagrees
+  std::uint32_t brake_stuck_{0};      // likewise the brake feedback
   bool estop_demand_{true};
   bool gate_demand_{true};
   int stuck_{-1};

@@ -25,6 +25,8 @@ inline constexpr JointVector kPose{0.0, -1.2, 1.1, -1.4, -1.57, 0.0};
 inline constexpr JointVector kSlow{0.05, 0.0, 0.0, 0.0, 0.0, 0.0};
 /// Joint 1 turning fast: OVER_T1 (well above 250 mm/s at this pose).
 inline constexpr JointVector kFast{2.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+/// Joint 1 at half kFast: ~640 mm/s at the flange, between the T1 and the T2 limit (OVER_T1).
+inline constexpr JointVector kMedium{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 inline constexpr JointVector kRest{};
 
 /// The design-page defaults with the tool stated as a tool-less flange: a Config states its
@@ -90,9 +92,16 @@ class Rig {
   /// (status words, cycle counter, working counter) the manager decodes itself.
   sim::BusLevels plant{};
   ScanOutputs out{};
+  /// The contactor's and the brakes' feedback follow the last outputs (ideal devices, C30);
+  /// a test of the feedback monitoring sets it false and drives them itself.
+  bool ideal_feedback{true};
 
   void cycle() {
     in.bus = sim::bus_image(m.fieldbus_watchdog(), plant);
+    if (ideal_feedback) {
+      in.contactor_feedback_closed = out.contactor_closed;
+      in.brake_feedback_released = out.brake_release;
+    }
     out = m.cycle(in);
   }
   void cycles(std::uint32_t n) {

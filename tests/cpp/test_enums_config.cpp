@@ -52,14 +52,14 @@ TEST(RSM16_StatusNames, EnumNamesAreTheUpperCaseNamesOfTheDesignPage) {
   EXPECT_EQ(names(kAllFaultCodes),
             (V{"NONE", "SELF_TEST_FAILED", "DISCREPANCY_ESTOP", "DISCREPANCY_SAFEGUARD", "DISCREPANCY_ENABLING",
                "SELECTOR_INVALID", "DRIVE_FAULT", "T1_OVERSPEED", "ARMING_TIMEOUT", "STOP_TIMEOUT", "FIELDBUS_LOSS",
-               "STANDSTILL_VIOLATION", "SERVO_READY_LOST"}));
+               "STANDSTILL_VIOLATION", "SERVO_READY_LOST", "T2_OVERSPEED", "CONTACTOR_FEEDBACK", "BRAKE_FEEDBACK"}));
   EXPECT_EQ(names(kAllRejectReasons),
             (V{"NONE", "LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT", "SELECTOR_INVALID",
                "SAFEGUARD_OPEN", "ENABLE_NOT_MIDDLE", "T2_NOT_CONFIRMED", "WRONG_MODE", "JOG_IN_AUTO",
                "INVALID_ARGUMENT", "QUEUE_FULL", "CHANNEL_TEST_PENDING"}));
   EXPECT_EQ(names(kAllCommandKinds),
             (V{"RESET", "SERVO_ON", "SERVO_OFF", "START", "PAUSE", "RESUME", "JOG_START", "JOG_STOP", "T2_CONFIRM"}));
-  EXPECT_EQ(names(kAllSpeedLevels), (V{"ZERO", "MOVING", "OVER_T1"}));
+  EXPECT_EQ(names(kAllSpeedLevels), (V{"ZERO", "MOVING", "OVER_T1", "OVER_T2"}));
   EXPECT_EQ(names(kAllResumeTargets), (V{"NONE", "AUTO_RUNNING", "MANUAL_JOGGING"}));
   EXPECT_EQ(names(kAllSubmitResults), (V{"QUEUED", "QUEUE_FULL"}));
   EXPECT_EQ(enum_from_string("no such name", kAllStates), std::nullopt);
@@ -163,7 +163,7 @@ TEST(RSM15_Config, EveryConfigErrorIsListedOnceInDeclarationOrder) {
                "T1_LIMIT_NOT_POSITIVE", "ZERO_VELOCITY_INVALID", "QUEUE_LIMIT_OUT_OF_RANGE", "DH_TABLE_NOT_FINITE",
                "T1_LIMIT_ABOVE_REDUCED_SPEED", "T2_LIMIT_OUT_OF_RANGE", "STANDSTILL_WINDOW_OUT_OF_RANGE",
                "TOOL_OFFSET_NOT_GIVEN", "ZERO_VELOCITY_ABOVE_WINDOW", "FIELDBUS_WORKING_COUNTER_ZERO",
-               "FIELDBUS_TOLERANCE_TOO_LARGE"}));
+               "FIELDBUS_TOLERANCE_TOO_LARGE", "T2_CONFIRM_TIMEOUT_OUT_OF_RANGE", "FEEDBACK_TIME_TOO_LARGE"}));
   for (std::size_t i = 0; i < kAllConfigErrors.size(); ++i) {
     EXPECT_EQ(static_cast<std::size_t>(kAllConfigErrors[i]), i) << to_string(kAllConfigErrors[i]);
   }

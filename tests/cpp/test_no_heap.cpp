@@ -46,7 +46,8 @@ TEST(RSM15_NoHeap, HundredThousandRandomCyclesAndCommandsAllocateNothing) {
       ++commands;
       if (mgr->submit(cmd) == SubmitResult::queue_full) ++full;
     }
-    const ScanOutputs out = mgr->cycle(plant.next(mgr->fieldbus_watchdog(), RandomPlant::at_rest(mgr->outputs())));
+    const ScanOutputs out =
+        mgr->cycle(plant.next(mgr->fieldbus_watchdog(), RandomPlant::at_rest(mgr->outputs()), mgr->outputs()));
     const StatusRecord st = mgr->status();
     (void)mgr->last_rows();
     if (is_motion(st.state)) ++motion_cycles;

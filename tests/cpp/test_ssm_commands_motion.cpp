@@ -385,8 +385,11 @@ TEST(RSM10_T1Speed, SpeedLevelsComeFromTheArmKinematics) {
   const SpeedMonitor mon{Config{}};
   EXPECT_EQ(mon.classify(kPose, kRest), SpeedLevel::Zero);
   EXPECT_EQ(mon.classify(kPose, kSlow), SpeedLevel::Moving);
-  EXPECT_EQ(mon.classify(kPose, kFast), SpeedLevel::OverT1);
-  EXPECT_GT(mon.tcp_speed_mm_s(kPose, kFast), 250.0);
+  EXPECT_EQ(mon.classify(kPose, kMedium), SpeedLevel::OverT1);
+  EXPECT_EQ(mon.classify(kPose, kFast), SpeedLevel::OverT2);
+  EXPECT_GT(mon.tcp_speed_mm_s(kPose, kMedium), 250.0);
+  EXPECT_LT(mon.tcp_speed_mm_s(kPose, kMedium), 1000.0);
+  EXPECT_GT(mon.tcp_speed_mm_s(kPose, kFast), 1000.0);
   EXPECT_LT(mon.tcp_speed_mm_s(kPose, kSlow), 250.0);
   // At or below the zero threshold on every joint is standstill.
   EXPECT_EQ(mon.classify(kPose, JointVector{0.001, -0.001, 0.0, 0.0005, 0.0, 0.0}), SpeedLevel::Zero);
@@ -397,7 +400,7 @@ TEST(RSM10_T1Speed, SpeedLevelsComeFromTheArmKinematics) {
 TEST(RSM10_T1Speed, UnreadableJointVelocityIsTreatedAsOverspeed) {
   const SpeedMonitor mon{Config{}};
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(mon.classify(kPose, JointVector{nan, 0, 0, 0, 0, 0}), SpeedLevel::OverT1);
+  EXPECT_EQ(mon.classify(kPose, JointVector{nan, 0, 0, 0, 0, 0}), SpeedLevel::OverT2);
 }
 
 // A joint turning backwards moves as much as one turning forwards (the zero-speed test
@@ -406,7 +409,7 @@ TEST(RSM10_T1Speed, AJointTurningBackwardsIsNotAtRest) {
   const SpeedMonitor mon{Config{}};
   EXPECT_EQ(mon.classify(kPose, JointVector{-kSlow[0], 0, 0, 0, 0, 0}), SpeedLevel::Moving);
   EXPECT_EQ(mon.classify(kPose, JointVector{0, 0, 0, 0, 0, -0.5}), SpeedLevel::Moving);
-  EXPECT_EQ(mon.classify(kPose, JointVector{-kFast[0], 0, 0, 0, 0, 0}), SpeedLevel::OverT1);
+  EXPECT_EQ(mon.classify(kPose, JointVector{-kMedium[0], 0, 0, 0, 0, 0}), SpeedLevel::OverT1);
 }
 
 // RSM-10: the T1 limit is a maximum, 250 mm/s itself is allowed; only above it is an
@@ -469,7 +472,7 @@ TEST(RSM10_T1Speed, OverspeedWhileStoppingInT1AlsoCutsPower) {
 TEST(RSM10_T1Speed, HighSpeedInT2OrAutoIsNotAT1Overspeed) {
   Rig r;
   r.to_jogging(SelectorReading::T2, 1000);
-  r.in.qd = kFast;
+  r.in.qd = kMedium;  // above T1's limit, below T2's (above it is C29's)
   r.cycles(5);
   EXPECT_EQ(r.state(), StateId::ManualJogging);
   Rig a;

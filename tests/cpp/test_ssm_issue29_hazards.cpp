@@ -29,7 +29,7 @@ TEST(UCA_RSM_07_JogStop, ArmStillMovingAfterTheStopTimeLocksOutInT1AndT2) {
   for (const SelectorReading mode : {SelectorReading::T1, SelectorReading::T2}) {
     Rig r;
     r.to_jogging(mode);
-    r.in.qd = mode == SelectorReading::T2 ? kFast : kSlow;  // kFast in T1 would be C10's
+    r.in.qd = mode == SelectorReading::T2 ? kMedium : kSlow;  // above T1's limit is C10's, T2's C29's
     ASSERT_EQ(r.command(Command::jog_stop()), CommandResult::accepted());
     EXPECT_TRUE(r.out.ramp_down_request) << to_string(mode);
     EXPECT_EQ(r.out.commanded_speed_mm_s, 0);

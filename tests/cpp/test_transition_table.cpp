@@ -22,11 +22,12 @@ std::string two_digits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_str
 // Rows added by later changes take the next free number and sit where first-match needs
 // them: C24 (fieldbus loss) after C03, C25 (standstill) after C10, C26 (operator link) after C14, K36 after K02, K37
 // after K04, K38 after K06.
-TEST(TransitionTable, RowIdsAreC01ToC28ThenK01ToK39InFirstMatchOrder) {
-  // The latching rows C09, C27, C10, C25 precede the E-stop's C06 (issue 29 item 7).
-  std::vector<std::string> expected{"C01", "C02", "C03", "C24", "C04", "C05", "C09", "C27", "C10", "C25",
-                                    "C06", "C07", "C08", "C11", "C12", "C13", "C14", "C26", "C15", "C16",
-                                    "C17", "C18", "C28", "C19", "C20", "C21", "C22", "C23"};
+TEST(TransitionTable, RowIdsAreC01ToC30ThenK01ToK39InFirstMatchOrder) {
+  // The latching rows C09, C27, C10, C29, C25 precede the E-stop's C06 (issue 29 item 7);
+  // C30 (feedback) follows C24 and precedes every row that reads a free signal.
+  std::vector<std::string> expected{"C01", "C02", "C03", "C24", "C30", "C04", "C05", "C09", "C27", "C10",
+                                    "C29", "C25", "C06", "C07", "C08", "C11", "C12", "C13", "C14", "C26",
+                                    "C15", "C16", "C17", "C18", "C28", "C19", "C20", "C21", "C22", "C23"};
   for (std::size_t i = 1; i <= 35; ++i) {
     expected.push_back("K" + two_digits(i));
     if (i == 2) expected.emplace_back("K36");
@@ -67,6 +68,7 @@ TEST(RSM03_StopCategories, TheTableSetsTheCategoriesOfTheDesignTriggerTable) {
       {"C13", StopUpdate::Cat1}, {"C14", StopUpdate::Cat1}, {"C16", StopUpdate::Cat0}, {"C20", StopUpdate::Cat0},
       {"C24", StopUpdate::Cat0}, {"C25", StopUpdate::Cat0}, {"C26", StopUpdate::Cat2}, {"K12", StopUpdate::Clear},
       {"K14", StopUpdate::Cat1}, {"K20", StopUpdate::Cat2}, {"C27", StopUpdate::Cat0}, {"K32", StopUpdate::Cat2},
+      {"C29", StopUpdate::Cat0}, {"C30", StopUpdate::Cat0},
   };
   for (const TransitionRow& r : kTransitionTable) {
     const auto it = expected.find(std::string(r.id));

@@ -10,7 +10,8 @@ from safestate import _core as core
 POSE = [0.0, -1.2, 1.1, -1.4, -1.57, 0.0]
 REST = [0.0] * 6
 SLOW = [0.05, 0, 0, 0, 0, 0]
-FAST = [2.0, 0, 0, 0, 0, 0]
+FAST = [2.0, 0, 0, 0, 0, 0]  # above the T2 limit (1000 mm/s) at POSE
+MEDIUM = [1.0, 0, 0, 0, 0, 0]  # between the T1 and the T2 limit
 
 STATUS_KEYS = {
     "state", "selector", "session_mode", "stop_category", "fault_code", "last_reject_reason",
@@ -19,6 +20,7 @@ STATUS_KEYS = {
     "jog_direction", "jog_speed_mm_s", "queue_length",
     "stale_commands", "estop_tested_a", "estop_tested_b",  # K36, K37 (issue 17)
     "enable_release_required",  # K39 (issue 29)
+    "contactor_fb_cycles", "brake_fb_cycles",  # C30 (issue 29 item 10)
 }
 OUTPUT_KEYS = {
     "contactor_closed", "drive_enable", "brake_release", "ramp_down_request", "reset_lamp",
@@ -137,7 +139,7 @@ def test_jog_speed_is_clamped_in_t1_and_overspeed_locks_out_rsm10():
     m.cycle(healthy("T1", qd=FAST))
     obs = m.observe()
     assert (obs["state"], obs["fault_code"], obs["contactor_closed"]) == ("ERROR_LOCKOUT", "T1_OVERSPEED", False)
-    assert m.derived_inputs()["speed"] == "OVER_T1"
+    assert m.derived_inputs()["speed"] == "OVER_T2"  # FAST is above the T2 limit too: C10's in T1
 
 
 @pytest.mark.req("RSM-08", "INV-NOJOG-AUTO")
@@ -177,10 +179,10 @@ def test_bad_arguments_raise():
     assert m.observe()["state"] == "BOOT"  # nothing ran
 
 
-def test_transition_table_lists_c01_to_c28_and_k01_to_k39_and_matches_json_and_dot():
+def test_transition_table_lists_c01_to_c30_and_k01_to_k39_and_matches_json_and_dot():
     rows = core.transition_table()
     ids = [r["id"] for r in rows]
-    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 29)]
+    assert sorted(i for i in ids if i[0] == "C") == [f"C{i:02d}" for i in range(1, 31)]
     assert sorted(i for i in ids if i[0] == "K") == [f"K{i:02d}" for i in range(1, 40)]
     # issue 29: the latching rows before the E-stop's C06, C28 before C19, K39 after K10
     assert ids.index("C09") < ids.index("C27") < ids.index("C10") < ids.index("C25") < ids.index("C06")
@@ -202,7 +204,8 @@ def test_transition_table_lists_c01_to_c28_and_k01_to_k39_and_matches_json_and_d
 def test_speed_level_and_tcp_speed():
     assert core.speed_level(POSE, REST) == "ZERO"
     assert core.speed_level(POSE, SLOW) == "MOVING"
-    assert core.speed_level(POSE, FAST) == "OVER_T1"
+    assert core.speed_level(POSE, FAST) == "OVER_T2"
+    assert core.speed_level(POSE, MEDIUM) == "OVER_T1"
     assert core.tcp_speed_mm_s(POSE, REST) == 0.0
     assert 0.0 < core.tcp_speed_mm_s(POSE, SLOW) < 250.0 < core.tcp_speed_mm_s(POSE, FAST)
     slow_limit = core.Config(t1_speed_limit_mm_s=10)
@@ -255,4 +258,24 @@ def test_names_lists_every_enum():
     names = core.names()
     assert names["state"][0] == "BOOT" and len(names["state"]) == 12
     assert "QUEUE_FULL" in names["reject_reason"]
-    assert names["speed_level"] == ["ZERO", "MOVING", "OVER_T1"]
+    assert names["speed_level"] == ["ZERO", "MOVING", "OVER_T1", "OVER_T2"]
+
+
+def test_feedback_keys_default_to_the_last_outputs_and_a_welded_contactor_locks_out_uca_rsm_13():
+    """Issue 29 item 10: without the feedback keys the devices follow their command (no
+    fault however long the robot is powered); a contact reported closed while commanded
+    open for more than feedback_allowed_cycles cycles is C30's CONTACTOR_FEEDBACK lockout."""
+    m = operational("AUTO")
+    for _ in range(150):
+        m.cycle(healthy())
+    assert m.observe()["state"] == "AUTO_IDLE"
+    cfg = flange_config()
+    cfg.feedback_allowed_cycles = 2
+    w = core.Manager(cfg)
+    for _ in range(2):  # the first cycle (BOOT -> IDLE) and one more: within the allowed 2
+        w.cycle(dict(healthy(), contactor_feedback_closed=True))
+        assert w.observe()["state"] == "IDLE"
+    w.cycle(dict(healthy(), contactor_feedback_closed=True))
+    obs = w.observe()
+    assert (obs["state"], obs["fault_code"], obs["stop_category"]) == ("ERROR_LOCKOUT", "CONTACTOR_FEEDBACK", "CAT0")
+    assert w.last_rows()["cycle"] == "C30"

@@ -65,5 +65,10 @@ def test_checker_output_into_a_closed_pipe_exits_quietly() -> None:
                        stdout=wfd, stderr=subprocess.PIPE, text=True, env=env, timeout=120)
     os.close(wfd)
     assert p.returncode == 141, p.stderr
-    # stderr carries only the progress lines (initial states), never an error
-    assert "error" not in p.stderr.lower() and "Traceback" not in p.stderr, p.stderr
+    # stderr carries only the progress lines (initial states) and the default engine's one
+    # line on checking again with the Python engine (the core leaves TLC's report to it),
+    # never an error about the pipe
+    notes = [line for line in p.stderr.splitlines() if line.startswith("safestate check: ")]
+    assert len(notes) <= 1 and all("checking again with the Python engine" in n for n in notes), p.stderr
+    rest = "\n".join(line for line in p.stderr.splitlines() if line not in notes)
+    assert "error" not in rest.lower() and "Traceback" not in p.stderr, p.stderr

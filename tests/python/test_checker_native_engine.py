@@ -148,7 +148,7 @@ def test_native_engine_refuses_an_unsupported_construct_with_its_position(tmp_pa
 def test_native_engine_leaves_an_evaluation_error_to_the_python_engine() -> None:
     spec = str(ERRORS / "HeadOfEmpty.tla")
     native = run_safestate("check", spec, "--engine", "native", "--json")
-    python = run_safestate("check", spec, "--json")
+    python = run_safestate("check", spec, "--engine", "python", "--json")
     assert "checking again with the Python engine" in native.stderr
     assert native.returncode == python.returncode != 0
     strip = lambda out: {k: v for k, v in json.loads(out).items() if k != "seconds"}  # noqa: E731
@@ -165,7 +165,7 @@ def test_native_engine_with_two_workers_stops_at_the_one_workers_evaluation_erro
 def test_native_engine_cli_reports_what_the_python_engine_reports() -> None:
     spec = str(CORPUS / "NaiveMutex.tla")
     native = run_safestate("check", spec, "--engine", "native", "--json")
-    python = run_safestate("check", spec, "--json")
+    python = run_safestate("check", spec, "--engine", "python", "--json")
     assert native.returncode == python.returncode == 12
     strip = lambda out: {k: v for k, v in json.loads(out).items() if k != "seconds"}  # noqa: E731
     assert strip(native.stdout) == strip(python.stdout)

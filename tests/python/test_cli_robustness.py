@@ -132,8 +132,9 @@ def test_the_parallel_search_leaves_no_shared_memory_behind_when_stopped(tla_dir
                                                                           group) -> None:
     shm = tmp_path / "shm"
     shm.mkdir()
-    p = _start("check", str(_parallel_spec(tla_dir)), "--workers", "2", env_extra={"SAFESTATE_SHM_DIR": str(shm)},
-               new_session=group)
+    # The Python engine's parallel search (worker processes, shared memory).
+    p = _start("check", str(_parallel_spec(tla_dir)), "--workers", "2", "--engine", "python",
+               env_extra={"SAFESTATE_SHM_DIR": str(shm)}, new_session=group)
     _wait_for(p, "under way")
     assert list(shm.iterdir()), "the parallel search should have its folder while it runs"
     if group:
@@ -158,7 +159,7 @@ Next == x' = IF x = 5 THEN x \\div 0 ELSE x + 1
 ====
 """, "INIT Init\nNEXT Next\n")
     env = {"SAFESTATE_SHM_DIR": str(shm)}
-    p = _start("check", str(tla), "--workers", "2", env_extra=env)
+    p = _start("check", str(tla), "--workers", "2", "--engine", "python", env_extra=env)
     out, err = p.communicate(timeout=300)
     assert p.returncode == 255 and "The second argument of \\div is 0" in out, out + err  # TLC: 255
     assert "Traceback" not in err and "internal error" not in err

@@ -97,7 +97,7 @@ def test_speed_vectors_and_threshold_probes_classify_as_the_model_levels():
     for limit in (250, 100):
         cfg = core.Config(t1_speed_limit_mm_s=limit)
         vectors = mod.speed_vectors(core, cfg)
-        for level in ("ZERO", "MOVING", "OVER_T1"):
+        for level in ("ZERO", "MOVING", "OVER_T1", "OVER_T2"):
             assert core.speed_level(mod.POSE, vectors[level][0], cfg) == level
         for label, level, qd in vectors["probes"]:
             assert core.speed_level(mod.POSE, qd, cfg) == level, label

@@ -178,8 +178,8 @@ def test_plan_key_changes_when_the_native_core_changes(state_graph, monkeypatch,
     h = make_harness(system, model)
     before = replay_plan.plan_key(h.adapter, graph, "")
     core = tmp_path / "tla_native_module.cpp"
-    core.write_bytes(graph_mod.NATIVE_CORE_SOURCE.read_bytes() + b"// changed\n")
-    monkeypatch.setattr(graph_mod, "NATIVE_CORE_SOURCE", core)
+    core.write_bytes(graph_mod.native_core_sources()[0].read_bytes() + b"// changed\n")
+    monkeypatch.setattr(graph_mod, "native_core_sources", lambda: [core])
     assert replay_plan.plan_key(h.adapter, graph, "") != before
 
 

@@ -107,11 +107,11 @@ def test_runs_of_different_populations_are_not_merged():
 
 def test_an_equivalence_with_a_line_justifies_that_line_only():
     """`break;` -> `/*break;*/` is equivalent at the end of a switch's last case, not
-    before the next case label (equivalent.toml's transition_table.hpp:297 entry)."""
+    before the next case label (equivalent.toml's transition_table.hpp:304 entry)."""
     justified = score.equivalents()
     last = {"file": "include/safestate/transition_table.hpp", "original": "break;", "mutant": "/*break;*/"}
-    assert score.note(last | {"line": 297}, justified).startswith("equivalent: the break of the last case")
-    assert score.note(last | {"line": 281}, justified).startswith("not yet killed")
+    assert score.note(last | {"line": 304}, justified).startswith("equivalent: the break of the last case")
+    assert score.note(last | {"line": 298}, justified).startswith("not yet killed")
     assert score.note(EQUIV, justified).startswith("equivalent: a comment line")  # no line: any line
 
 

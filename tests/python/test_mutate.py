@@ -206,3 +206,12 @@ def test_view_hidden_sticky_variable_gives_no_false_survivor(tmp_path: Path, cap
     assert code == 0
     m = _find(report, "literal", "THEN 1 ELSE h")
     assert m["status"] == "equivalent", m
+
+
+def test_only_selects_mutants_by_id_and_an_unmatched_text_exits_2(planted: Path,
+                                                                  capsys: pytest.CaptureFixture[str]) -> None:
+    _, report = _mutate(planted, capsys, "--only", "unchanged@Next")
+    assert report["classified"] >= 1
+    assert all(m["mutant"].startswith("unchanged@Next") for m in report["mutants"])
+    assert main(["mutate", str(planted), "--inputs", "inp", "--observables", "out,latch", "--only", "nope@X"]) == 2
+    assert "nope@X" in capsys.readouterr().err

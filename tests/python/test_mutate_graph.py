@@ -2,7 +2,8 @@
 (mutate/graph.py) classifies every mutant as the Python engine's exact product search
 does -- killed, survived (with a difference trace of the same length), equivalent --
 on a planted model, on one with a VIEW that hides an observed, sticky variable, and
-on a registered model whose initial states choose more than the inputs."""
+on a registered model whose initial states choose more than the inputs; and a value
+an action carries over under a VIEW is no difference of stored states."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from mutate_specs import VIEWED
+from mutate_specs import CARRIED, VIEWED
 
 from safestate.cli import main
 
@@ -60,3 +61,29 @@ def test_native_graph_search_agrees_on_a_registered_model_with_nondeterministic_
     native = _verdicts(capsys, "native", *args)
     python = _verdicts(capsys, "python", *args)
     assert native == python and native
+
+
+def test_input_an_action_carries_under_a_view_is_no_difference_of_stored_states(tmp_path: Path) -> None:
+    """The mutant `seen' = seen` changes only the unobserved `seen`, so it is equivalent;
+    its stored state of class <<1, FALSE, 1>> carries another `free` than the
+    original's, and their Poke steps (which keep `free`) must still pair up: the graph
+    search decides "equivalent" itself, without a difference of stored states for the
+    exact search to reject."""
+    from safestate.checker.model import load_model
+    from safestate.mutate.graph import graph_search, native_labelled
+    from safestate.mutate.product import Projection, search
+    proj = Projection(("inp", "free"), ("out",))
+    graphs, models = [], []
+    for name, text in (("orig", CARRIED), ("mut", CARRIED.replace("seen' = (seen \\/ f = 0)", "seen' = seen"))):
+        d = tmp_path / name
+        d.mkdir()
+        assert name == "orig" or text != CARRIED
+        (d / "Carried.tla").write_text(text)
+        (d / "Carried.cfg").write_text("INIT Init\nNEXT Next\nVIEW View\nINVARIANT TypeOK\n")
+        model = load_model(str(d / "Carried.tla"), str(d / "Carried.cfg"))
+        _result, graph, _why = native_labelled(model, proj, None)
+        assert graph is not None
+        graphs.append(graph)
+        models.append(model)
+    assert search(models[0], models[1], proj).verdict == "equivalent"  # the exact search
+    assert graph_search(graphs[0], graphs[1], proj).verdict == "equivalent"

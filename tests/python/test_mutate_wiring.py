@@ -132,3 +132,11 @@ def test_justification_naming_a_missing_design_anchor_is_an_input_error(
     assert system is not None
     with pytest.raises(results.JustificationError):
         results.justifications(system)
+
+
+def test_every_registered_justification_names_an_existing_design_anchor() -> None:
+    """A renamed design heading must fail here, not exit 2 in the main job's mutate run."""
+    from safestate.systems.registry import load_all
+    systems = load_all()
+    entries = {s.name: results.justifications(s) for s in systems}  # raises on a bad entry
+    assert entries["Protection"] and entries["RuntimeSupervisor"]

@@ -3,6 +3,8 @@ invariant, PDR finding the invariant itself, the shortest BMC trace, bad input."
 
 from __future__ import annotations
 
+import pytest
+
 from prove_specs.helpers import by_invariant, prove, spec
 
 
@@ -87,6 +89,28 @@ def test_untyped_variable_is_untracked_until_read(capsys) -> None:
     assert code == 0 and rep["untracked"] == ["log"]
     code, _, err = prove(capsys, spec("Untyped.tla"), "--proofs", "/dev/null", "--invariant", "Reads")
     assert code == 2 and "Untyped.tla:8:10: unsupported in proofs: a variable that TypeOK does not type" in err
+
+
+@pytest.mark.parametrize("invariant,col", [("Equal", 10), ("Differs", 12), ("InTuple", 12)])
+def test_untyped_variable_compared_whole_is_refused_not_true(capsys, invariant: str, col: int) -> None:
+    """`log = e` over an untracked variable was TRUE in an invariant: BMC missed the
+    SafetyService mutant any_sender_accepted (its shadow service was untyped)."""
+    code, rep, err = prove(capsys, spec("UntypedCompared.tla"), "--proofs", "/dev/null", "--engine", "bmc",
+                           "--depth", "2", "--invariant", invariant)
+    assert code == 2 and rep is None
+    line = {"Equal": 13, "Differs": 14, "InTuple": 15}[invariant]
+    assert f"UntypedCompared.tla:{line}:{col}: unsupported in proofs: a variable that TypeOK does not type" in err
+
+
+def test_untyped_variable_assigned_is_dropped_read_in_next_is_refused(capsys, tmp_path) -> None:
+    code, rep, _ = prove(capsys, spec("UntypedCompared.tla"), "--proofs", "/dev/null", "--invariant", "Fine")
+    assert code == 0 and rep is not None and rep["untracked"] == ["log"]
+    for nxt, where in (("GuardedNext", "8:16"), ("CopiedNext", "9:20")):
+        cfg = tmp_path / f"{nxt}.cfg"
+        cfg.write_text(f"INIT Init\nNEXT {nxt}\nINVARIANT Fine\n")
+        code, rep, err = prove(capsys, spec("UntypedCompared.tla"), "--config", str(cfg), "--proofs", "/dev/null",
+                               "--invariant", "Fine")
+        assert code == 2 and f"UntypedCompared.tla:{where}: unsupported in proofs" in err, (nxt, err)
 
 
 def test_empty_sequence_branch_is_given_the_other_branchs_shape(capsys) -> None:

@@ -55,18 +55,11 @@ class CycleTimeHistogram {
   std::uint64_t max_ns_{0};
 };
 
-/// The simulated demo cell's parameters: the design-page defaults, no tool on the flange.
-[[nodiscard]] inline Config demo_cell_config() noexcept {
-  Config c;
-  c.tool_offset_m = kFlangeTcp;
-  return c;
-}
-
 class ControlLoop {
  public:
   using OutcomeQueue = SpscQueue<CommandOutcome, 64>;
 
-  explicit ControlLoop(const Config& config = demo_cell_config()) noexcept;
+  explicit ControlLoop(const Config& config = sim::demo_cell_config()) noexcept;
 
   // ---- bridge side (one producer thread) ----
   [[nodiscard]] SubmitResult submit(const Command& c) noexcept { return manager_.submit(c); }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "safestate/config.hpp"
 #include "safestate/enable_position.hpp"
 #include "safestate/jog_setpoint.hpp"
 #include "safestate/scan_inputs.hpp"
@@ -17,6 +18,13 @@
 #include "safestate/state_id.hpp"
 
 namespace safestate::sim {
+
+/// The simulated demo cell's parameters: the design-page defaults, no tool on the flange.
+[[nodiscard]] inline Config demo_cell_config() noexcept {
+  Config c;
+  c.tool_offset_m = kFlangeTcp;
+  return c;
+}
 
 class CellPlant {
  public:
@@ -45,6 +53,9 @@ class CellPlant {
 
   /// Advance the plant by one cycle given the controller's last outputs.
   void react(const ScanOutputs& out, StateId state, const JogSetpoint& jog) noexcept {
+    // The contactor's auxiliary contact and the brakes' feedback follow their command (C30).
+    in_.contactor_feedback_closed = out.contactor_closed;
+    in_.brake_feedback_released = out.brake_release;
     // Drives become ready 3 cycles after power-on.
     powered_cycles_ = out.contactor_closed ? powered_cycles_ + 1 : 0;
     levels_.servo_ready = powered_cycles_ >= 3;

@@ -37,9 +37,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--itf", metavar="FILE", help="write the counterexample as an ITF JSON trace")
     p.add_argument("--graph", metavar="FILE", help="write the whole reachable state graph as JSON")
     p.add_argument("--tlc", action="store_true", help="also run TLC ($TLA2TOOLS_JAR) and compare")
-    p.add_argument("--engine", choices=("python", "native", "auto"), default="python",
-                   help="python (the reference evaluator, default), native (the C++ core: a subset, "
-                   "refused with file:line:col outside it) or auto (native where it applies)")
+    p.add_argument("--engine", choices=("python", "native", "auto"), default="auto",
+                   help="auto (default: the C++ core where it applies, else the Python engine, said in one "
+                   "line on stderr), native (the core only: refused with file:line:col outside it) or python "
+                   "(the reference evaluator)")
     p.add_argument("--max-memory", type=whole_number(1), metavar="MB", help="stop with an error above this resident "
                    "memory (default 70%% of RAM)")
 

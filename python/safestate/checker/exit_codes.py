@@ -29,6 +29,8 @@ BY_KIND = {
     "module eval": ERROR,        # a standard module's error while computing successors (Head(<<>>))
     "temporal": ERROR,           # a property TLC's liveness checker refuses (EC.TLC_LIVE_*), as TLC
     "invariant eval": FAILURE_SAFETY_EVAL,
+    # TLC's replay of the state for the call stack met a second error (explore.py): 75
+    "invariant eval, replay failed": FAILURE_SPEC_EVAL,
     "assert": VIOLATION_ASSERT,
     "assumption": VIOLATION_ASSUMPTION,
     "memory": ERROR_SYSTEM,

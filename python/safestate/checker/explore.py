@@ -168,6 +168,9 @@ class Explorer:
         self.distinct_after = array("q")
         # The successor whose CONSTRAINT or ACTION_CONSTRAINT failed to evaluate.
         self.failed_successor: Step | None = None
+        # States TLC adds to its state set but not to its queue after an error
+        # (`_replay_for_call_stack`).
+        self.unqueued = 0
 
     # ---------------------------------------------------------------- bookkeeping
     def _resolve(self, key: Any, idx: int) -> int:
@@ -217,7 +220,7 @@ class Explorer:
             trace = self.trace(trace_to)
             if extra is not None:
                 trace.append(extra)
-        left = len(self.states) - self.head
+        left = len(self.states) - self.head - self.unqueued
         if not initial:
             # As TLC's queue: the state being expanded (`self.head`) has been dequeued,
             # and a new successor violating an invariant is never enqueued.
@@ -353,11 +356,62 @@ class Explorer:
                                            len(self.states) - self.head, None, [Step(st, "Init", {})], err)
                 raise _Stop() from None  # ends the search; the error is in self.outcome
             err = TlaError("invariant eval", f"Evaluating invariant {inv.name} failed.\n{e.message}", e.loc)
+            if self._replay_for_call_stack(parent):
+                err.kind = "invariant eval, replay failed"
             if idx >= 0:
                 self._finish("error", None, idx, error=err)
             lf = self.m.leaves[leaf]
             self._finish("error", None, parent, Step(st, lf.name, self.m.leaf_params(leaf, L)), error=err)
             raise  # not reached: _finish raises _Stop
+
+    def _replay_for_call_stack(self, parent: int) -> bool:
+        """What TLC 1.8.0 does after an invariant failed to evaluate in a successor of
+        `parent`, to print the error's call stack: it generates the successors of
+        `parent` again (ModelChecker.doNext with a CallStackTool and a worker whose
+        counts are not reported).  Each new one among them joins the state set and, if
+        its invariants and action properties hold, the queue; the generated count stays.
+        The replay stops at the first step that violates one, or that fails to evaluate:
+        then TLC prints where that second error occurred and exits with 75, not 76
+        (returned True)."""
+        m = self.m
+        cur = self.states[parent]
+        level = self.level[parent] + 1
+        keyed = m.view is not None or m.symmetry is not None
+        constrained = bool(m.constraints or m.action_constraints)
+
+        class _Done(Exception):
+            pass
+
+        def on_succ(st: tuple, leaf: int, L: list) -> None:
+            if _UNSET in st:
+                raise _Done()  # TLC: a state not completely specified ends the replay
+            in_model = not constrained or (m.in_model(st) and m.action_ok(cur, st))
+            new = True  # as TLC: a successor outside the constraints has its invariants checked
+            if in_model:
+                key = m.key(st) if keyed else st
+                idx = self.seen.get(key, -1)
+                if idx >= 0:
+                    idx = self._resolve(key, idx)
+                new = idx < 0
+                if new:
+                    self._add(st, key, parent, leaf, level)
+            added = int(new and in_model)
+            try:
+                holds = not new or all(m.holds(inv, st) for inv in m.invariants)
+                holds = holds and all(m.holds(prop, cur, st) for prop in m.action_properties)
+            except TlaError:
+                self.unqueued += added
+                raise
+            if not holds:
+                self.unqueued += added
+                raise _Done()
+        try:
+            m.run_next(cur, on_succ)
+        except _Done:
+            pass
+        except TlaError:
+            return True
+        return False
 
     def _expand_all(self) -> None:
         while self.head < len(self.states):

@@ -21,7 +21,7 @@ from typing import Callable, Iterable, Iterator, TypeVar
 
 from ..checker.explore import CheckResult, explore_states
 from ..checker.model import Model
-from ..checker.native import NATIVE_CORE_SOURCE
+from ..checker.native import native_core_sources
 from ..errors import SafestateError
 from .cover import Graph
 from .events import Event
@@ -129,8 +129,8 @@ def graph_key(model: Model) -> str:
         p = pkg / name
         for f in sorted(p.rglob("*.py")) if p.is_dir() else [p]:
             h.update(str(f.relative_to(pkg)).encode() + b"\0" + f.read_bytes())
-    if NATIVE_CORE_SOURCE.is_file():  # the graph is built by the core (an installed package keys on Python alone)
-        h.update(b"native core\0" + NATIVE_CORE_SOURCE.read_bytes())
+    for f in native_core_sources():  # the graph is built by the core (an installed package keys on Python alone)
+        h.update(b"native core\0" + f.name.encode() + b"\0" + f.read_bytes())
     return h.hexdigest()[:32]
 
 

@@ -85,6 +85,8 @@ def _where(m: dict[str, Any]) -> str:
 
 
 def _detail(m: dict[str, Any]) -> str:
+    if m.get("status") == "killed" and m.get("by") == "witness":
+        return f"witness {', '.join(m.get('witnesses') or [])} no longer reached"
     if m.get("status") == "killed":
         return f"{m.get('violated')} (trace {m.get('trace_length')})"
     return str(m.get("reason") or f"{m.get('pairs')} pairs")

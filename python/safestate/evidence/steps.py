@@ -10,7 +10,7 @@ from pathlib import Path
 
 from .. import mutants as mutants_mod
 from ..systems.registry import System
-from ..checker.native import NATIVE_CORE_SOURCE
+from ..checker.native import native_core_sources
 from .collect import Runner, StepResult, files_under, safestate_argv
 
 PKG = Path(__file__).resolve().parents[1]   # python/safestate
@@ -22,7 +22,7 @@ TOOL = {"check": ("checker", "tla"), "prove": ("prove", "checker", "tla"),
 def tool_files(step: str) -> list[Path]:
     files = files_under([PKG / d for d in TOOL[step]], (".py",))
     # The model mutants run with `--engine auto`: the native core is part of the checker.
-    return [*files, NATIVE_CORE_SOURCE] if "checker" in TOOL[step] and NATIVE_CORE_SOURCE.is_file() else files
+    return [*files, *native_core_sources()] if "checker" in TOOL[step] else files
 
 
 def model_files(model: Path) -> list[Path]:

@@ -24,9 +24,11 @@ from .generate import Mutant
 
 CACHE_ENV = "SAFESTATE_CACHE_DIR"
 _PACKAGE = Path(__file__).resolve().parent.parent
-# What decides an outcome: the checker, the front end, the classifier and the product
-# search (the mutant's own text is in the key; the report and the CLI are not).
-_SOURCES = ("checker", "tla", "mutate/classify.py", "mutate/product.py", "mutate/graph.py")
+# What decides an outcome: the checker, the front end, the classifier, the product
+# search and the witnesses (with the definitions each reads, from generate.py); the
+# mutant's own text is in the key; the report and the CLI are not.
+_SOURCES = ("checker", "tla", "mutate/classify.py", "mutate/product.py", "mutate/graph.py", "mutate/witness.py",
+            "mutate/generate.py")
 
 
 def cache_dir() -> Path:

@@ -2,7 +2,9 @@
 
 * killed: `safestate check` (the native core where it accepts the model, else the Python
   engine) reports a violated invariant or property, a deadlock or an Assert failure --
-  named, with the trace length;
+  named, with the trace length (`by` = "property"); or every property holds but the
+  mutant no longer reaches one of the model's reachability witnesses (`witness.py`;
+  `by` = "witness", the witnesses named);
 * survived: every property holds, and the product search (`product.py`) finds an input
   trace after which the mutant's observables differ from the original's;
 * equivalent: every property holds and the product is exhausted without a difference;
@@ -39,6 +41,7 @@ from ..tla.values import fmt
 from .generate import Mutant
 from .graph import LabelledGraph, confirm, graph_search, native_labelled
 from .product import DiffStep, OriginalSide, Projection, search
+from .witness import WitnessSet, on_native_states, on_python_states, witness_set
 
 KILLING_RESULTS = {"safety failure", "deadlock failure", "liveness failure", "temporal safety failure",
                    "action property failure", "init property failure", "assert failure"}
@@ -49,7 +52,7 @@ STATUSES = ("killed", "survived", "equivalent", "timeout", "error")
 class Outcome:
     mutant: str                  # Mutant.id
     status: str                  # one of STATUSES
-    violated: str | None = None  # killed: the property (or "deadlock")
+    violated: str | None = None  # killed: the property (or "deadlock"), or the first witness lost
     trace_length: int | None = None
     reason: str = ""             # timeout / error: why; survived/equivalent: search figures
     seconds: float = 0.0
@@ -58,6 +61,8 @@ class Outcome:
     table: list[dict[str, Any]] = field(default_factory=list)   # the difference trace, printed values
     itf: dict[str, Any] | None = None                           # the same as ITF JSON
     cached: bool = False
+    by: str = ""                 # killed: "property" (the check) or "witness" (a witness lost)
+    witnesses: list[str] = field(default_factory=list)  # killed by witness: every witness lost
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)
@@ -82,6 +87,7 @@ class Subject:
     original: Model | None = None  # loaded once, before the workers fork
     side: OriginalSide | None = None  # its successors, explored once before the fork (Python engine)
     graph: LabelledGraph | None = None  # or its labelled graph from the native core (graph.py)
+    witnesses: WitnessSet | None = None  # the reachability witnesses the original reaches (witness.py)
 
     def load_original(self) -> Model:
         if self.original is None:
@@ -116,11 +122,13 @@ def materialise(subject: Subject, mutant: Mutant | None, dest: Path) -> tuple[Pa
     return dest / subject.model.name, cfg
 
 
-def check_model(model: Model, engine: str, max_memory_mb: int) -> Any:
+def check_model(model: Model, engine: str, max_memory_mb: int, states: bool = False) -> Any:
+    """`safestate check`'s result; `states`: with the stored states (the Python engine's
+    graph), for the witnesses."""
     from ..checker.native.engine_choice import check
     # The engine's notes (Python fallback...) are not the mutant's result: kept off stderr.
     with contextlib.redirect_stderr(io.StringIO()):
-        return check(model, engine, workers=1, max_memory_mb=max_memory_mb)
+        return check(model, "python" if states else engine, workers=1, graph=states, max_memory_mb=max_memory_mb)
 
 
 def classify(subject: Subject, mutant: Mutant) -> Outcome:
@@ -138,6 +146,13 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
         verdict = _verdict(mutant, result, tmp, start)
         if verdict is not None:
             return verdict
+        try:
+            lost = _lost_witnesses(subject, original, model, mutant, result, graph)
+        except TlaError as e:
+            return Outcome(mutant.id, "error", reason=f"witnesses: {_where(e, tmp)}", seconds=time.monotonic() - start)
+        if lost:
+            return Outcome(mutant.id, "killed", violated=lost[0], by="witness", witnesses=lost,
+                           reason=f"no longer reached: {', '.join(lost)}", seconds=time.monotonic() - start)
         deadline = start + subject.timeout
         try:
             pr = None
@@ -164,23 +179,39 @@ def classify(subject: Subject, mutant: Mutant) -> Outcome:
     return out
 
 
+def _lost_witnesses(subject: Subject, original: Model, model: Model, mutant: Mutant, result: Any,
+                    graph: LabelledGraph | None) -> list[str]:
+    """The witnesses the original reaches and the mutant, which passed its check, does
+    not (witness.py): on the states its check stored."""
+    ws = subject.witnesses
+    if ws is None or not ws.names:
+        return []
+    if graph is not None and graph.run is not None:
+        return on_native_states(ws, original, graph.run, model, mutant.definition)
+    if result.states is None:
+        return []
+    return on_python_states(ws, original, ws.names, result.states)
+
+
 def _check(subject: Subject, model: Model) -> tuple[Any, LabelledGraph | None]:
     """The mutant's check; on the native core (where the original's graph was recorded
     there and the core accepts the mutant) recording its labelled graph for the
-    difference search, else `check_model`'s engine choice."""
+    difference search, else `check_model`'s engine choice (with the stored states where
+    witnesses are to be evaluated: the Python engine)."""
+    states = bool(subject.witnesses and subject.witnesses.names)
     if subject.graph is None:
-        return check_model(model, subject.engine, subject.max_memory_mb), None
+        return check_model(model, subject.engine, subject.max_memory_mb, states), None
     try:
         labelled, graph, _why = native_labelled(model, subject.projection, subject.max_memory_mb)
     except UnsupportedError:
         # A mutant outside the core's subset (the original is inside): the Python engine.
-        return check_model(model, subject.engine, subject.max_memory_mb), None
+        return check_model(model, subject.engine, subject.max_memory_mb, states), None
     if labelled is None:
         # An evaluation error of the core is not always one of the reference: the
         # Python engine decides (8 of RuntimeSupervisor's 188 mutants stop the core with
         # an evaluation error and pass the Python engine's check), and a mutant it
         # passes is searched exactly (product.py).
-        return check_model(model, "python", subject.max_memory_mb), None
+        return check_model(model, "python", subject.max_memory_mb, states), None
     return labelled, graph
 
 
@@ -188,13 +219,13 @@ def _verdict(mutant: Mutant, result: Any, tmp: str, start: float) -> Outcome | N
     """The outcome a check that did not succeed decides (None: every property held)."""
     if result.result in KILLING_RESULTS:
         what = "deadlock" if result.result == "deadlock failure" else (result.violated or result.result)
-        return Outcome(mutant.id, "killed", violated=what, trace_length=len(result.trace or []),
+        return Outcome(mutant.id, "killed", violated=what, trace_length=len(result.trace or []), by="property",
                        seconds=time.monotonic() - start)
     if result.result != "success":
         why = result.error.message if result.error else result.result
         kind = result.error.kind if result.error else ""
         if kind == "assert":
-            return Outcome(mutant.id, "killed", violated=f"Assert: {why[:120]}",
+            return Outcome(mutant.id, "killed", violated=f"Assert: {why[:120]}", by="property",
                            trace_length=len(result.trace or []), seconds=time.monotonic() - start)
         if kind == "memory" or "memory" in why.lower():
             return Outcome(mutant.id, "timeout", reason=f"check: {why}", seconds=time.monotonic() - start)
@@ -236,31 +267,49 @@ def difference_itf(proj: Projection, steps: list[DiffStep], mutant: Mutant) -> d
             "vars": names, "states": states}
 
 
-def prepare(subject: Subject) -> None:
+def prepare(subject: Subject, search: bool = True) -> None:
     """Records the original's labelled graph on the native core where it accepts the
-    model, else explores its successors with the Python engine -- once, before the
-    workers fork."""
-    if subject.side is not None or subject.graph is not None:
+    model, else explores its successors with the Python engine, and finds which of its
+    reachability witnesses it reaches -- once, before the workers fork.  `search`
+    False: only the witnesses (every outcome came from the cache)."""
+    if subject.witnesses is not None and (not search or subject.side is not None or subject.graph is not None):
         return
     original = subject.load_original()
     if subject.engine != "python":
         with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
             tla, cfg = materialise(subject, None, Path(tmp))  # without the invariants it violates
+            model = load_model(str(tla), str(cfg))
             try:
-                _result, graph, _why = native_labelled(load_model(str(tla), str(cfg)), subject.projection,
-                                                       subject.max_memory_mb)
+                _result, graph, _why = native_labelled(model, subject.projection, subject.max_memory_mb)
             except UnsupportedError:
                 if subject.engine == "native":
                     raise
                 graph = None
         if graph is not None:
-            for i in range(len(graph.offsets) - 1):  # shared by every forked search
-                graph.signature(i)
-            graph.signature(-1)
-            subject.graph = graph
+            if subject.witnesses is None:
+                subject.witnesses = witness_set(subject.model, original, native=(graph.run, model))
+            if search:
+                for i in range(len(graph.offsets) - 1):  # shared by every forked search
+                    graph.signature(i)
+                graph.signature(-1)
+                subject.graph = graph
             return
-    subject.side = OriginalSide(original)
-    subject.side.explore(time.monotonic() + subject.timeout)
+    if subject.witnesses is None:
+        subject.witnesses = _python_witnesses(subject, original)
+    if search:
+        subject.side = OriginalSide(original)
+        subject.side.explore(time.monotonic() + subject.timeout)
+
+
+def _python_witnesses(subject: Subject, original: Model) -> WitnessSet:
+    """The witnesses the original reaches, on the states the Python engine's check stores."""
+    from .witness import declared
+    if not declared(subject.model):
+        return WitnessSet()
+    with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
+        tla, cfg = materialise(subject, None, Path(tmp))
+        result = check_model(load_model(str(tla), str(cfg)), "python", subject.max_memory_mb, states=True)
+    return witness_set(subject.model, original, states=result.states or [])
 
 
 def classify_all(subject: Subject, mutants: list[Mutant], workers: int,

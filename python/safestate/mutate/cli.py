@@ -49,6 +49,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "[mutate] observables)")
     p.add_argument("--operator", action="append", metavar="NAME", choices=sorted(OPERATORS),
                    help="only this operator (repeatable): " + ", ".join(OPERATORS))
+    p.add_argument("--only", action="append", metavar="TEXT",
+                   help="only the mutants whose id contains TEXT (repeatable), e.g. unchanged@Cycle:700")
     p.add_argument("--sample", type=int, metavar="N", help="classify a sample of N mutants, stratified by operator")
     p.add_argument("--seed", type=int, default=0, help="the sample's seed (default 0)")
     p.add_argument("--workers", type=int, default=2, help="mutants classified at once (default 2)")
@@ -186,6 +188,10 @@ def _run(args: argparse.Namespace) -> int:
         mutants, duplicates = dedupe(mutants, model.parent)
     except OSError as e:
         raise InputError(f"{model.parent}: {e}") from None
+    if args.only:
+        mutants = [m for m in mutants if any(t in m.id for t in args.only)]
+        if not mutants:
+            raise InputError(f"--only {' '.join(args.only)}: no generated mutant's id contains it (--list shows them)")
     chosen = stratified(mutants, args.sample, args.seed) if args.sample else mutants
     if args.list:
         for m in chosen:
@@ -205,7 +211,7 @@ def _run(args: argparse.Namespace) -> int:
     if todo:
         print(f"mutate: {name}: exploring the original once (its graph) for the difference searches",
               file=sys.stderr, flush=True)
-        prepare(subject)
+    prepare(subject, search=bool(todo))  # and which witnesses it reaches, for the report
     progress = _Progress(len(chosen), len(outcomes), len(todo))
 
     def done(m: Mutant, o: Outcome) -> None:
@@ -217,10 +223,12 @@ def _run(args: argparse.Namespace) -> int:
     ordered = [outcomes[m.id] for m in chosen]
     s = summary(name, generated, chosen, ordered, time.monotonic() - start, subject.dropped,
                 sampled=len(chosen) < len(mutants), duplicates=len(duplicates))
+    ws = subject.witnesses
     s.update(sample=args.sample, seed=args.seed if args.sample else None, selected_operators=args.operator,
-             when=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), cfg=str(cfg))
+             only=args.only, when=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), cfg=str(cfg),
+             witnesses=list(ws.names) if ws else [], witnesses_not_reached=list(ws.not_reached) if ws else [])
     results.justify(s, justs)
-    if system is not None and not args.operator and (
+    if system is not None and not args.operator and not args.only and (
             args.config is None or Path(args.config).resolve() == system.ci_config.resolve()):
         results.write(system, s)  # the system's last score (all operators): safestate systems, evidence
     if args.itf_dir:

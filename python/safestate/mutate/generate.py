@@ -147,6 +147,16 @@ def _reachable(defs: dict[str, _Def], roots: Iterable[str]) -> list[str]:
     return seen
 
 
+def definition_reads(model: Path, names: Iterable[str]) -> dict[str, frozenset[str]]:
+    """Per definition of `names`: the spec's own definitions it reads, transitively,
+    itself included (what a mutant of one of them can change)."""
+    try:
+        defs = _definitions(_local_modules(model))
+    except OSError as e:
+        raise GenerateError(f"{model}: {e}") from None
+    return {n: frozenset(_reachable(defs, [n])) for n in names}
+
+
 def _input_sets(defs: dict[str, _Def], next_name: str) -> dict[str, list[tuple[int, int]]]:
     """Per file: the byte ranges of the sets Next's \\E draws its inputs from, and of the
     bodies of the definitions those sets name (transitively)."""

@@ -18,6 +18,22 @@ step to step (the flagship's last_reject_reason), a stored state may carry anoth
 value of it than the state it stands for, and a difference found here may be one of
 the stored states only: `confirm` replays the difference trace on the exact states
 (the Python engine) before it is reported; one not confirmed goes to `product.py`.
+
+**Carried values under a VIEW.**  An action that leaves a labelled variable unchanged
+(the flagship's Submit keeps `inputs`, whose free signals the VIEW leaves out) labels
+its steps with the stored representative's value, which the original's and the
+mutant's representatives of one pair need not share: the two sides' Submit steps would
+never carry equal labels, a difference of stored states only at every Submit -- not
+confirmed, so every such mutant went to the exact Python search (the flagship's
+`unchanged obs_fieldbus_lost` mutant timed out there).  So under a VIEW the check also
+records each step's action (leaf), and a label position that an action copies from
+its source in *every* step of the model's graph is labelled "unchanged" in that
+action's steps.  At pairs of exact states reached by one input trace (the pairs the
+search stands for) both sides hold equal values of every labelled variable, so "
+unchanged" stands for the same value on both sides and the comparison is the exact
+one; at pairs of representatives it no longer sees their hidden values.  Where one
+side's action copies and the other's does not, a difference may again be one of stored
+states only: `confirm` still decides.
 """
 
 from __future__ import annotations
@@ -33,6 +49,7 @@ from .product import DiffStep, ProductResult, Projection
 
 NO_SOURCE = 0xFFFFFFFF
 Label = tuple[tuple, tuple]          # (input values, observable values), Python values
+UNCHANGED = -1                       # a label position its action copies (see "Carried values")
 
 
 @dataclass
@@ -49,8 +66,13 @@ class LabelledGraph:
     _labels: dict[int, Label] = field(default_factory=dict)
     canon: dict[tuple, int] = field(default_factory=dict)   # structural key -> int, shared by both graphs
     _cval: dict[int, int] = field(default_factory=dict)
-    _clab: dict[int, tuple[int, int]] = field(default_factory=dict)
+    _clab: dict[Any, tuple[int, int]] = field(default_factory=dict)   # by label id, or (id, mask)
     _sig: dict[int, tuple[dict[int, list[int]], dict[int, int], bool]] = field(default_factory=dict)
+    run: Any = None     # the NativeRun whose engine holds the stored states (witness.py)
+    # Under a VIEW: per step (after the initial ones) its mask number, and per mask number
+    # the label positions copied (`_copy_masks`); empty: no masks.
+    step_mask: array = field(default_factory=lambda: array("I"))
+    masks: list[frozenset[int]] = field(default_factory=lambda: [frozenset()])
 
     def share(self, other: "LabelledGraph") -> None:
         """Canonical label numbers comparable with `other`'s (one table for both)."""
@@ -65,15 +87,34 @@ class LabelledGraph:
             c = self._cval[vid] = self.canon.setdefault(key, len(self.canon))
         return c
 
-    def canonical(self, vid: int) -> tuple[int, int]:
-        """(the label's number, its inputs' number)."""
-        lab = self._clab.get(vid)
+    def canonical(self, vid: int, mask: int = 0) -> tuple[int, int]:
+        """(the label's number, its inputs' number), the positions of `masks[mask]`
+        labelled UNCHANGED."""
+        key = vid if mask == 0 else (vid, mask)
+        lab = self._clab.get(key)
         if lab is None:
             _kind, payload = self.bridge.engine.describe(vid)
             parts = tuple(map(self._value, payload))
+            if mask:
+                copied = self.masks[mask]
+                parts = tuple(UNCHANGED if i in copied else x for i, x in enumerate(parts))
             ik = self.canon.setdefault(("in",) + parts[:self.n_inputs], len(self.canon))
-            lab = self._clab[vid] = (self.canon.setdefault(("label",) + parts, len(self.canon)), ik)
+            lab = self._clab[key] = (self.canon.setdefault(("label",) + parts, len(self.canon)), ik)
         return lab
+
+    def mask_of(self, j: int) -> int:
+        """The mask number of step j (an index into `val`; 0 for an initial step)."""
+        k = j - len(self.initial)
+        return self.step_mask[k] if 0 <= k < len(self.step_mask) else 0
+
+    def masked(self, vid: int, mask: int) -> Label:
+        """The label's Python values with the copied positions as None."""
+        i, o = self.label(vid)
+        if not mask:
+            return i, o
+        copied, n = self.masks[mask], len(i)
+        return (tuple(None if p in copied else x for p, x in enumerate(i)),
+                tuple(None if p + n in copied else x for p, x in enumerate(o)))
 
     def signature(self, i: int) -> tuple[dict[int, list[int]], dict[int, int], bool]:
         """State i's steps: {label number: targets}, {label number: a label id of it}, and
@@ -84,9 +125,10 @@ class LabelledGraph:
             vid_of: dict[int, int] = {}
             inputs: set[int] = set()
             a, b = (self.offsets[i], self.offsets[i + 1]) if i >= 0 else (0, 0)
-            pairs = zip(self.val[a:b], self.dst[a:b]) if i >= 0 else iter(self.initial)
-            for vid, d in pairs:
-                lab, ik = self.canonical(vid)
+            pairs = zip(self.val[a:b], self.dst[a:b], map(self.mask_of, range(a, b))) if i >= 0 else (
+                (v, d, 0) for v, d in self.initial)
+            for vid, d, mk in pairs:
+                lab, ik = self.canonical(vid, mk)
                 inputs.add(ik)
                 ds = by.setdefault(lab, [])
                 vid_of.setdefault(lab, vid)
@@ -103,9 +145,12 @@ class LabelledGraph:
             lab = self._labels[vid] = (tuple(t[:self.n_inputs]), tuple(t[self.n_inputs:]))
         return lab
 
-    def steps(self, i: int) -> list[tuple[int, int]]:
+    def steps(self, i: int) -> list[tuple[int, int, int]]:
+        """State i's steps (-1: the initial ones): (label id, target, mask number)."""
+        if i < 0:
+            return [(v, d, 0) for v, d in self.initial]
         a, b = self.offsets[i], self.offsets[i + 1]
-        return list(zip(self.val[a:b], self.dst[a:b]))
+        return list(zip(self.val[a:b], self.dst[a:b], map(self.mask_of, range(a, b))))
 
 
 def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None
@@ -119,13 +164,16 @@ def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None
     eng = run.engine
     index = {v: i for i, v in enumerate(model.variables)}
     eng.label_vars = [index[v] for v in proj.inputs + proj.observables]
+    viewed = model.config.view is not None
+    if viewed:
+        eng.record_edges = True  # each step's action, for the copy masks (module docstring)
     result, error = explore_native(model, max_memory_mb, None, run, 1)
     if result is None:
         return None, None, error
     if result.result != "success":
         return result, None, ""
     src, dst, val = (array("I", b) for b in eng.labels_bytes())
-    g = LabelledGraph(run.bridge, len(proj.inputs))
+    g = LabelledGraph(run.bridge, len(proj.inputs), run=run)
     n = result.distinct_states
     k = 0
     while k < len(src) and src[k] == NO_SOURCE:
@@ -141,7 +189,40 @@ def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None
         acc += counts[i]
         offsets[i] = acc
     g.offsets, g.val, g.dst = offsets, val, dst
+    if viewed:
+        leaves = array("I", eng.edges_bytes()[2])
+        if len(leaves) == len(val) - k:
+            g.step_mask, g.masks = _copy_masks(eng, src, val, k, leaves, eng.label_vars, len(model.variables))
     return result, g, ""
+
+
+def _copy_masks(eng: Any, src: array, val: array, k: int, leaves: array, label_vars: list[int],
+                nvars: int) -> tuple[array, list[frozenset[int]]]:
+    """Per step after the first k (the initial ones), the number of its action's mask:
+    the label positions that action copies from its (stored) source in every step."""
+    states = array("I", eng.states_bytes())
+    nleaves = max(leaves, default=-1) + 1
+    copied: list[set[int]] = [set(range(len(label_vars))) for _ in range(nleaves)]
+    parts: dict[int, list[int]] = {}
+    for j, lf in enumerate(leaves):
+        c = copied[lf]
+        if not c:
+            continue
+        vid = val[k + j]
+        p = parts.get(vid)
+        if p is None:
+            p = parts[vid] = eng.describe(vid)[1]
+        base = src[k + j] * nvars
+        for pos in [q for q in c if p[q] != states[base + label_vars[q]]]:
+            c.discard(pos)
+    masks: list[frozenset[int]] = [frozenset()]
+    number: dict[frozenset[int], int] = {frozenset(): 0}
+    for c in copied:
+        if frozenset(c) not in number:
+            number[frozenset(c)] = len(masks)
+            masks.append(frozenset(c))
+    of_leaf = [number[frozenset(c)] for c in copied]
+    return array("I", (of_leaf[lf] for lf in leaves)), masks
 
 
 def graph_search(orig: LabelledGraph, mut: LabelledGraph, proj: Projection, max_pairs: int = 2_000_000,
@@ -175,11 +256,12 @@ def graph_search(orig: LabelledGraph, mut: LabelledGraph, proj: Projection, max_
         for v in list(go) + [v for v in gm if v not in go]:
             a, b = go.get(v, {}), gm.get(v, {})
             if a.keys() != b.keys():
-                only_a = [x for x in a if x not in b]
-                only_b = [x for x in b if x not in a]
-                step = DiffStep(dict(zip(proj.inputs, v)),
-                                dict(zip(proj.observables, only_a[0] if only_a else next(iter(a)))) if a else None,
-                                dict(zip(proj.observables, only_b[0] if only_b else next(iter(b)))) if b else None)
+                only_a = [a[x] for x in a if x not in b] or list(a.values())
+                only_b = [b[x] for x in b if x not in a] or list(b.values())
+                inputs = (only_a or only_b)[0][0]
+                step = DiffStep(dict(zip(proj.inputs, inputs)),
+                                dict(zip(proj.observables, only_a[0][1])) if a else None,
+                                dict(zip(proj.observables, only_b[0][1])) if b else None)
                 return trace_to(parent, step)
         raise AssertionError("label sets differ but no input's observations do")
 
@@ -219,13 +301,14 @@ def graph_search(orig: LabelledGraph, mut: LabelledGraph, proj: Projection, max_
     return ProductResult("equivalent", k, nondeterministic=nondet)
 
 
-def _grouped(g: LabelledGraph, i: int) -> dict[tuple, dict[tuple, list[int]]]:
-    """State i's steps (-1: the initial states) by input, then observation (Python values)."""
-    steps = g.initial if i < 0 else g.steps(i)
-    out: dict[tuple, dict[tuple, list[int]]] = {}
-    for vid, d in dict.fromkeys(steps):
-        inp, obs = g.label(vid)
-        out.setdefault(inp, {}).setdefault(obs, []).append(d)
+def _grouped(g: LabelledGraph, i: int) -> dict[tuple, dict[tuple, Label]]:
+    """State i's steps (-1: the initial states) by input, then observation, as the
+    search compares them (copied positions None), each with a label it stands for
+    (Python values)."""
+    out: dict[tuple, dict[tuple, Label]] = {}
+    for vid, _d, mk in dict.fromkeys(g.steps(i)):
+        inp, obs = g.masked(vid, mk)
+        out.setdefault(inp, {}).setdefault(obs, g.label(vid))
     return out
 
 

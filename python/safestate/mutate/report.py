@@ -1,6 +1,6 @@
 """The mutation report: score, counts per status and operator, every survivor with its
 difference trace (a table; ITF in --json and --itf-dir), the equivalents, timeouts and
-errors with their reasons."""
+errors with their reasons, the killed ones by property and by witness."""
 
 from __future__ import annotations
 
@@ -12,7 +12,8 @@ from .generate import Mutant
 
 
 def score(outcomes: list[Outcome]) -> float | None:
-    """killed / (killed + survived); None when neither occurs."""
+    """killed / (killed + survived); None when neither occurs.  Killed by a property or
+    by a witness alike."""
     c = Counter(o.status for o in outcomes)
     n = c["killed"] + c["survived"]
     return None if n == 0 else c["killed"] / n
@@ -24,16 +25,23 @@ def summary(system: str, generated: int, mutants: list[Mutant], outcomes: list[O
     c = Counter(o.status for o in outcomes)
     per_op: dict[str, dict[str, int]] = {}
     for o in outcomes:
-        per_op.setdefault(by_id[o.mutant].operator, {s: 0 for s in STATUSES})[o.status] += 1
+        k = per_op.setdefault(by_id[o.mutant].operator, dict({s: 0 for s in STATUSES}, killed_by_witness=0))
+        k[o.status] += 1
+        k["killed_by_witness"] += _by_witness(o)
     s = score(outcomes)
     return {
         "system": system, "generated": generated, "duplicates": duplicates, "classified": len(outcomes),
         "sampled": sampled,
-        "counts": {k: c[k] for k in STATUSES}, "score": None if s is None else round(s, 4),
+        "counts": dict({k: c[k] for k in STATUSES}, killed_by_witness=sum(map(_by_witness, outcomes))),
+        "score": None if s is None else round(s, 4),
         "seconds": round(seconds, 1), "cached": sum(1 for o in outcomes if o.cached),
         "not_used_invariants": list(dropped), "operators": per_op,
         "mutants": [dict(_mutant_json(by_id[o.mutant]), **o.to_json()) for o in outcomes],
     }
+
+
+def _by_witness(o: Outcome) -> int:
+    return int(o.status == "killed" and o.by == "witness")
 
 
 def _mutant_json(m: Mutant) -> dict[str, Any]:
@@ -47,23 +55,31 @@ def write_text(out: TextIO, s: dict[str, Any], mutants: list[Mutant], outcomes: 
     c = s["counts"]
     sc = "n/a (nothing killed or survived)" if s["score"] is None else f"{100 * s['score']:.1f}%"
     sampled = " (a sample)" if s["sampled"] else ""
+    by_w = c.get("killed_by_witness", 0)
+    of_which = f" ({by_w} of them by a witness)" if by_w else ""
     out.write(f"{s['system']}: mutation score {sc} = killed {c['killed']} / (killed {c['killed']} + survived "
-              f"{c['survived']}); {s['classified']} of {s['generated']} mutants classified{sampled}{_dups(s)}, "
+              f"{c['survived']}){of_which}; {s['classified']} of {s['generated']} mutants classified{sampled}{_dups(s)}, "
               f"{c['equivalent']} equivalent, {c['timeout']} timeout, {c['error']} error, {s['seconds']} s"
               f" ({s['cached']} from the cache)\n")
     if s.get("justified"):
         out.write(f"  {s['justified']} survivor(s) justified by the design page (not gaps), {s.get('gaps')} gap(s)\n")
     if s["not_used_invariants"]:
         out.write(f"  the original violates {', '.join(s['not_used_invariants'])}: left out of the mutants' cfg\n")
-    out.write("\n  operator             killed survived equivalent timeout error\n")
+    if s.get("witnesses_not_reached"):
+        out.write(f"  witnesses the original does not reach (not used): {', '.join(s['witnesses_not_reached'])}\n")
+    out.write(f"  {len(s.get('witnesses', []))} reachability witness(es) of the model used\n")
+    out.write("\n  operator             killed (by witness) survived equivalent timeout error\n")
     for op, k in sorted(s["operators"].items()):
-        out.write(f"  {op:<20} {k['killed']:>6} {k['survived']:>8} {k['equivalent']:>10} {k['timeout']:>7} "
-                  f"{k['error']:>5}\n")
+        out.write(f"  {op:<20} {k['killed']:>6} {k.get('killed_by_witness', 0):>12} {k['survived']:>8} "
+                  f"{k['equivalent']:>10} {k['timeout']:>7} {k['error']:>5}\n")
     for status, title in (("survived", "SURVIVED (a behaviour no property pins down)"),
                           ("equivalent", "EQUIVALENT (no observable difference; not counted)"),
                           ("timeout", "TIMEOUT (not counted)"), ("error", "ERROR (not counted)"),
-                          ("killed", "KILLED")):
-        group = [o for o in outcomes if o.status == status]
+                          ("witness", "KILLED BY A WITNESS (every property holds; a witness situation is no "
+                                      "longer reached)"),
+                          ("killed", "KILLED BY A PROPERTY")):
+        group = [o for o in outcomes if (_by_witness(o) if status == "witness"
+                                         else o.status == status and not _by_witness(o))]
         if not group:
             continue
         out.write(f"\n{title}: {len(group)}\n")
@@ -72,6 +88,8 @@ def write_text(out: TextIO, s: dict[str, Any], mutants: list[Mutant], outcomes: 
             extra = ""
             if status == "killed":
                 extra = f" -> {o.violated} (trace {o.trace_length})"
+            elif status == "witness":
+                extra = f" -> {', '.join(o.witnesses)} no longer reached"
             elif status in ("timeout", "error", "equivalent"):
                 extra = f" -- {o.reason}" if o.reason else f" -- {o.pairs} pairs"
             out.write(f"  {m.file}:{m.line}:{m.column} [{m.operator}] {m.definition}: {m.what}{extra}\n")

@@ -144,5 +144,7 @@ def one_line(d: dict[str, Any] | None) -> str:
     sc = d.get("score")
     what = f"sample of {d.get('classified')} (seed {d.get('seed')})" if d.get("sampled") else "all"
     score = "n/a" if sc is None else f"{100 * sc:.1f}%"
-    return (f"{score} ({c.get('killed', 0)} killed, {c.get('survived', 0)} survived, {d.get('justified', 0)} "
+    by_w = c.get("killed_by_witness", 0)
+    killed = f"{c.get('killed', 0)} killed" + (f" ({by_w} by a witness)" if by_w else "")
+    return (f"{score} ({killed}, {c.get('survived', 0)} survived, {d.get('justified', 0)} "
             f"justified; {what} of {d.get('generated')}; {d.get('when', '?')})")

@@ -12,7 +12,7 @@ from ..tla import ast as A
 from ..tla.errors import Loc
 from .sets import (EnumSet, PredSet, SetV, cardinality, difference, intersect, need_enum, need_set, subseteq,
                    union)
-from .values import UNDEF, Fn, ProveError, Rec, SeqV, Tup, as_seq, eq, is_z3, ite, key_value, tracked
+from .values import UNDEF, UNTRACKED, Fn, ProveError, Rec, SeqV, Tup, as_seq, eq, is_z3, ite, key_value, tracked
 
 if TYPE_CHECKING:
     from .translate import Ctx, Translator
@@ -347,6 +347,8 @@ def binary(tr: "Translator", e: A.Binary, ctx: "Ctx") -> Any:
     a = tr.val(e.lhs, ctx)
     b = tr.val(e.rhs, ctx)
     loc = e.loc
+    if op in ("=", "/=", "#"):
+        _only_assigned(tr, e, a, b, ctx)
     if op == "=":
         _oblige_capacity(tr, a, b, loc)
         _oblige_type(tr, a, b, loc)
@@ -465,6 +467,43 @@ def _oblige_type(tr: "Translator", a: Any, b: Any, loc: Loc) -> None:
             name, domain = hit
             tr.obl.add("type", loc, f"the value given to {name} is in its {tr.type_invariant} domain",
                        domain.member(other, loc))
+
+
+def _only_assigned(tr: "Translator", e: A.Binary, a: Any, b: Any, ctx: "Ctx") -> None:
+    """An untracked variable (TypeOK does not type it) may only be assigned: `x = e` in
+    Init, `x' = e` in Next.  Its value stands for any value, so `eq` makes such an
+    assignment TRUE (it is dropped, and so is the value assigned); anywhere else -- an
+    invariant, a guard, `#`, a tracked variable assigned from it -- that TRUE would be a
+    silent wrong answer (an invariant `x = e` would hold in every state), so reading it
+    is refused."""
+    if e.op == "=" and any(v is UNTRACKED and _is_assigned_variable(tr, side, ctx)
+                           for side, v in ((e.lhs, a), (e.rhs, b))):
+        return  # the assigned value goes nowhere, whatever it reads
+    for side, v in ((e.lhs, a), (e.rhs, b)):
+        if _has_untracked(v):
+            tracked(UNTRACKED, side.loc)
+
+
+def _is_assigned_variable(tr: "Translator", x: A.Expr, ctx: "Ctx") -> bool:
+    """Is `x` the variable an Init (unprimed) or Next (primed) conjunct assigns?"""
+    if not tr.assigning:
+        return False
+    primed = ctx.primed
+    if isinstance(x, A.Prime):
+        x, primed = x.arg, True
+    return isinstance(x, A.Name) and primed == tr.assigning_next
+
+
+def _has_untracked(v: Any) -> bool:
+    if v is UNTRACKED:
+        return True
+    if isinstance(v, Rec):
+        return any(_has_untracked(x) for x in v.fields.values())
+    if isinstance(v, (Tup, SeqV)):
+        return any(_has_untracked(x) for x in v.items)
+    if isinstance(v, Fn):
+        return any(_has_untracked(x) for x in v.vals.values())
+    return False
 
 
 def _oblige_type_of_choice(tr: "Translator", a: Any, b: Any, loc: Loc) -> None:

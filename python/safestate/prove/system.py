@@ -408,12 +408,13 @@ def _init_and_next(tr: Translator, ctx: Ctx, src: _Source, type_invariant: str,
     # in the domain (builtins._oblige_type).  A scalar can hold any value of its sort.
     actions = []
     for name, state in zip((init_name, next_name), states):  # Init assigns the state, Next the successor
+        tr.assigning_next = state is states[1]
         tr.type_targets = {id(state[v]): (v, d) for v, d in doms.items() if not is_z3(state[v])}
         formula = tr.act(_def_body(src.scope, name, src.path), ctx)
         aux, tr.skolems = tr.skolems, []
         actions.append(_Action(formula, aux, tr.obl.take()))
     tr.type_targets = {}
-    tr.assigning = False
+    tr.assigning = tr.assigning_next = False
     return actions[0], actions[1]
 
 

@@ -70,6 +70,7 @@ class Translator:
         self.skolems: list[z3.ExprRef] = []
         self.obl = Obligations()        # well-definedness obligations of what is translated
         self.assigning = False          # translating Init or Next (x = e may assign x)
+        self.assigning_next = False     # ... Next (x' = e assigns x)
         # while assigning: id of each structured variable value -> (name, TypeOK domain)
         self.type_targets: dict[int, tuple[str, Any]] = {}
         self.type_invariant = "TypeOK"

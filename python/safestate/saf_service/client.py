@@ -32,6 +32,7 @@ def run(args: argparse.Namespace) -> int:
     sock.setblocking(False)
     target = (cfg.service.address, cfg.service.port)
     sequence = time.time_ns() // 1000
+    last_sent: float | None = None
     mode = args.mode
     announce = True  # log the first datagram of each mode (the press time of the latency)
     quit_requested = False
@@ -56,6 +57,7 @@ def run(args: argparse.Namespace) -> int:
             datagram = wire.set_estop(mode == "set", cfg.client.component_id, sequence, key)
             try:
                 sock.sendto(datagram, target)
+                last_sent = time.monotonic()
             except OSError as e:  # the service is not there (ICMP): keep sending, as a real client
                 log.emit("send-failed", str(e.strerror or e))
             if announce:
@@ -63,7 +65,9 @@ def run(args: argparse.Namespace) -> int:
                          datagram=datagram.hex())
                 announce = False
         elif announce:
-            log.emit("mode", "SILENT (no more Set Estop)", mode=mode, last_sequence=sequence)
+            # the time of the last datagram sent: a late cycle must not skew a timeout measured from it
+            log.emit("mode", "SILENT (no more Set Estop)", mode=mode, last_sequence=sequence,
+                     last_sent=None if last_sent is None else round(last_sent, 6))
             announce = False
         ticker.wait(command)
     log.emit("stopped", f"last sequence {sequence}", last_sequence=sequence)

@@ -49,6 +49,9 @@ def run(args: argparse.Namespace) -> int:
     cfg = load(args.config)
     host = make_host(cfg)
     log = EventLog("service", args.json)
+    # SIGTERM/SIGINT handlers before "started": a supervisor that stops the service as
+    # soon as it reports itself started must get the clean stop and its counters.
+    ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
     auth = "HMAC-SHA256" if cfg.key_file else ("sequence" if cfg.require_sequence else "none")
     log.emit(
         "started",
@@ -57,7 +60,6 @@ def run(args: argparse.Namespace) -> int:
         f"{cfg.client.address}:{cfg.client.port} id {cfg.client.component_id:#010x}, freshness {auth}",
         client_port=host.client_port, subsystem_port=host.subsystem_port, state=host.state, freshness=auth,
     )
-    ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
     cycles = args.cycles
     while ticker.running and (cycles is None or ticker.cycle < cycles):
         c = host.step()

@@ -115,9 +115,9 @@ def run(args: argparse.Namespace) -> int:
         elif words:
             log.emit("error", f"unknown command {line!r} (health NORMAL|WARNING|ERROR|FATAL, quit)", command=line)
 
+    ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])  # the stop signals' handlers before "started"
     log.emit("started", f"{cfg.subsystem.address}:{cfg.subsystem.port}, state {sub.state}, expects the service "
              f"from {sub.service[0]}:{sub.service[1]} at least every {sub.timeout:.2f} s", state=sub.state)
-    ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
     while ticker.running and not quit_requested:
         sub.step()
         ticker.wait(command, sock, sub.receive)

@@ -3,7 +3,8 @@
 * ``python``: the reference evaluator (`checker/explore.py`), every feature.
 * ``native``: the C++ core (`search.py`); a model outside its subset is refused
   with the construct's file:line:col and "not supported by the native engine".
-* ``auto``: the native core when it accepts the model, else Python (said on stderr).
+* ``auto`` (the default of ``safestate check``): the native core when it accepts the
+  model, else Python (said in one line on stderr).
 
 An evaluation error inside the core (e.g. ``Head(<<>>)``) is never reported by the
 core itself: the model is checked again with the Python engine, which gives TLC's
@@ -25,7 +26,8 @@ ENGINES = ("python", "native", "auto")
 
 
 def _note(msg: str) -> None:
-    print(f"safestate check: {msg}", file=sys.stderr, flush=True)
+    """One line on stderr (a message with line breaks folded), never silence."""
+    print("safestate check: " + " ".join(msg.split()), file=sys.stderr, flush=True)
 
 
 def _translate(model: Model, graph: bool) -> "NativeRun | str":

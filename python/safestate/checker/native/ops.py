@@ -90,8 +90,18 @@ class Op(IntEnum):
     CHOOSE = 78
     SELECTSEQ = 79
     BIND_MEMO = 80
+    TOSTRING = 81
+    A_FORALL = 82
+    A_FORALL_NEXT = 83
+    POWERSET = 84
+    PRODUCT = 85
+    FNSET = 86
+    SD_SUBSET = 87
+    SD_PRODUCT = 88
 
 
 assert (core.OP_COUNT, core.OP_IN_SD, core.OP_SD_STRING, core.OP_A_BIND, core.OP_SELECTSEQ,
-        core.OP_BIND_MEMO) == (len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ, Op.BIND_MEMO), \
+        core.OP_BIND_MEMO, core.OP_TOSTRING, core.OP_A_FORALL_NEXT, core.OP_SD_PRODUCT) == (
+            len(Op), Op.IN_SD, Op.SD_STRING, Op.A_BIND, Op.SELECTSEQ, Op.BIND_MEMO, Op.TOSTRING, Op.A_FORALL_NEXT,
+            Op.SD_PRODUCT), \
     "checker/native/ops.py is out of step with the C++ core"

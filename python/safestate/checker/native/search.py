@@ -12,16 +12,18 @@ the model again with the Python engine, which reports TLC's exact error.
 from __future__ import annotations
 
 import time
-from typing import Callable
+from typing import Any, Callable, cast
 
 from ...tla import ast as A
 from ...tla.errors import TlaError, UnsupportedError
 from ...tla.tlcget import RUNTIME
-from ..explore import CheckResult, Step, default_memory_limit_mb, step_params
+from ...tla.values import exact_key, register_token_order
+from ..explore import RUNNING, CheckResult, Explorer, Step, default_memory_limit_mb, step_params
 from ..model import Model
 from .ops import Op
+from .printing import lazily_printed
 from .translate import TEnv, Translator, unsupported
-from .values import NOT_NATIVE, ValueBridge
+from .values import NOT_NATIVE, ValueBridge, known_string_ranks
 
 
 class NativeRun:
@@ -61,6 +63,12 @@ class NativeRun:
         self.nslots = tr.nslots
         self.leaf_params = tr.leaf_params  # per leaf: (name, slot) of its parameters
         self.translator = tr  # more trees for the same engine (conform/native_step.py)
+        lazy, self.rule_sets = lazily_printed(
+            tr.const_flags, len(model.variables),
+            [init, next_, *self.invariants, *self.constraints, *self.action_constraints, self.view])
+        if lazy:
+            raise unsupported("ToString of a value that may be or hold a set TLC prints as a rule (1..3, [a : S])",
+                              tr.locs[lazy[0][1]])
 
 
 def _refuse_model(model: Model) -> None:
@@ -110,12 +118,15 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
                      f"{left} states left on queue.")
     if progress is not None:
         progress("Computing initial states...")
+    eng.set_known_ranks(known_string_ranks())
     if run.view is not None:
         eng.set_view(run.view)
     eng.configure(run.init, run.next, run.invariants, run.constraints, run.action_constraints,
                   model.check_deadlock, limit, report)
     cpu_start = time.process_time()
+    RUNNING[:] = [cast(Explorer, _SoFar(eng))]  # Ctrl-C during eng.run(): the CLI reports these counts
     eng.run()
+    register_token_order(eng.made_strings())  # ranked as the core ranked them, after the spec's
     result = _result(run, limit)
     if result is not None:
         result.seconds = time.monotonic() - start
@@ -123,6 +134,31 @@ def explore_native(model: Model, max_memory_mb: int | None = None,
             result.parallel = _cpu_report(workers, list(eng.worker_cpu), eng.critical_cpu,
                                           time.process_time() - cpu_start)
     return result, eng.error
+
+
+class _SoFar:
+    """The core's counts while it searches, as `explore.counts_so_far` reads an Explorer's."""
+
+    states: tuple = ()
+
+    def __init__(self, eng: Any) -> None:
+        self.eng = eng
+
+    @property
+    def distinct_so_far(self) -> int:
+        return int(self.eng.distinct)
+
+    @property
+    def generated(self) -> int:
+        return int(self.eng.generated)
+
+    @property
+    def max_level(self) -> int:
+        return int(self.eng.depth)
+
+    @property
+    def head(self) -> int:
+        return int(self.eng.head)
 
 
 def _cpu_report(workers: int, worker_cpu: list[float], critical_cpu: float, run_cpu: float) -> dict:
@@ -154,14 +190,20 @@ def _result(run: NativeRun, limit_mb: int) -> CheckResult | None:
         if eng.trace_to >= 0:
             return CheckResult("safety failure", n, gen, depth, n, name, _trace(run, eng.trace_to),
                                initial_violation=True)
-        return CheckResult("safety failure", n, gen, 1, n, name, [Step(run.bridge.state(eng.extra), "Init", {})],
-                           initial_violation=True)
+        first = run.bridge.state(eng.extra)
+        if run.rule_sets:
+            first = _python_step(m, None, -1, first)[0]
+        return CheckResult("safety failure", n, gen, 1, n, name, [Step(first, "Init", {})], initial_violation=True)
     if not eng.extra:
         return CheckResult("safety failure", n, gen, depth, n - head - 2, name, _trace(run, eng.trace_to))
     trace = _trace(run, eng.trace_to)
     st = run.bridge.state(eng.extra)
     leaf = eng.extra_leaf
-    trace.append(Step(st, m.leaves[leaf].name, step_params(m, trace[-1].state, leaf, st)))
+    if run.rule_sets:
+        st, params = _python_step(m, trace[-1].state, leaf, st)
+    else:
+        params = step_params(m, trace[-1].state, leaf, st)
+    trace.append(Step(st, m.leaves[leaf].name, params))
     return CheckResult("safety failure", n, gen, depth, n - head - 1, name, trace)
 
 
@@ -173,8 +215,45 @@ def _trace(run: NativeRun, idx: int) -> list[Step]:
         idx = eng.parent(idx)
     path.reverse()
     states = [run.bridge.state(eng.state(i)) for i in path]
+    if run.rule_sets:
+        return _python_trace(m, states, [eng.leaf(i) for i in path[1:]])
     steps = [Step(states[0], "Init", {})]
     for a, b, i in zip(states, states[1:], path[1:]):
         leaf = eng.leaf(i)
         steps.append(Step(b, m.leaves[leaf].name, step_params(m, a, leaf, b)))
     return steps
+
+
+class _Found(Exception):
+    pass
+
+
+def _python_trace(m: Model, states: list[tuple], leaves: list[int]) -> list[Step]:
+    """The trace with each state as the Python engine holds it: the core keeps ``1..3``
+    as its elements, TLC (and the Python engine) print it as ``1..3``."""
+    steps = [Step(_python_step(m, None, -1, states[0])[0], "Init", {})]
+    for want, leaf in zip(states[1:], leaves):
+        st, params = _python_step(m, steps[-1].state, leaf, want)
+        steps.append(Step(st, m.leaves[leaf].name, params))
+    return steps
+
+
+def _python_step(m: Model, prev: tuple | None, leaf: int, want: tuple) -> tuple[tuple, dict]:
+    """`want` as the Python engine holds it, found again among its initial states (prev
+    None) or the successors of `prev` by action `leaf` (by TLA+ equality: TRUE is not
+    1), with the step's parameters."""
+    key = exact_key(want)
+    got: list[tuple[tuple, dict]] = []
+
+    def match(st: tuple, lf: int, L: list) -> None:
+        if (prev is None or lf == leaf) and st == want and exact_key(st) == key:
+            got.append((st, m.leaf_params(lf, L) if prev is not None else {}))
+            raise _Found()
+    try:
+        if prev is None:
+            m.run_init(match)
+        else:
+            m.run_next(prev, match)
+    except _Found:
+        return got[0]
+    return want, {}

@@ -23,6 +23,7 @@ from ...tla.modules import BuiltinSym, ConstSym, DefSym, Scope, VarSym
 from ...tla.values import BOOLEAN, string_rank
 from ..model import Model
 from .ops import Op
+from .printing import value_flags
 from .values import NOT_NATIVE, ValueBridge
 
 # Ops that iterate over a set: an operator call whose body has one is worth remembering.
@@ -130,6 +131,9 @@ class Translator:
         self._depth = 0
         self._free: dict[int, tuple[Node, frozenset[int]]] = {}
         self._iterates: dict[int, tuple[Node, bool]] = {}
+        self.foralls = 0  # A_FORALL nodes so far (each has its own index)
+        self.const_flags: dict[int, int] = {}  # printing.value_flags of the constants that have some
+        self._keep: list[Node] = []
 
     # ---------------------------------------------------------------- nodes
     def node(self, op: Op, loc: Loc, ints: Iterable[int] = (), v: int = 0, kids: tuple = (), k: Node | None = None) -> Node:
@@ -141,7 +145,12 @@ class Translator:
         return (int(op), li, tuple(int(i) for i in ints), v, tuple(kids), k)
 
     def const(self, value: Any, loc: Loc) -> Node:
-        return self.node(Op.CONST, loc, v=self.bridge.to_native(value, loc))
+        n = self.node(Op.CONST, loc, v=self.bridge.to_native(value, loc))
+        flags = value_flags(value)
+        if flags:
+            self.const_flags[id(n)] = flags
+            self._keep.append(n)  # its id stays its own
+        return n
 
     def alloc(self) -> int:
         self.nslots += 1
@@ -171,7 +180,12 @@ class Translator:
         return self.ref(e.name, [], env, e.loc)
 
     def x_Apply(self, e: A.Apply, env: TEnv) -> Node:
+        if e.name == "\\X":
+            return self.node(Op.PRODUCT, e.loc, kids=tuple(self.expr(x, env) for x in e.args))
         return self.ref(e.name, e.args, env, e.loc)
+
+    def x_FnSet(self, e: A.FnSet, env: TEnv) -> Node:
+        return self.node(Op.FNSET, e.loc, kids=(self.expr(e.domain, env), self.expr(e.range, env)))
 
     def ref(self, name: str, args: list[A.Expr], env: TEnv, loc: Loc) -> Node:
         local = env.locals.get(name)
@@ -371,6 +385,8 @@ class Translator:
         if b.name == "SelectSeq" and b.module == "Sequences" and len(args) == 2:
             slot = self.alloc()
             return self.node(Op.SELECTSEQ, loc, (slot,), kids=(self.expr(args[0], env), self.test_body(args[1], slot, env)))
+        if b.name == "ToString" and b.module == "TLC" and len(args) == 1:
+            return self.node(Op.TOSTRING, loc, kids=(self.expr(args[0], env),))
         spec = _BUILTIN_APPLY.get(b.name)
         if spec is None or b.module not in _NATIVE_MODULES or b.refused:
             raise unsupported(f"the operator {b.name} as a value", loc)
@@ -444,6 +460,10 @@ class Translator:
             if isinstance(e, A.Binary) and not isinstance(self.lookup(e.op, env), DefSym) else None
         if set_op is not None and isinstance(e, A.Binary):  # set_op implies a Binary
             return self.node(set_op, e.loc, kids=(self.set_test(e.lhs, env, depth + 1), self.set_test(e.rhs, env, depth + 1)))
+        if isinstance(e, A.Unary) and e.op == "SUBSET" and not isinstance(self.lookup("SUBSET", env), DefSym):
+            return self.node(Op.SD_SUBSET, e.loc, kids=(self.set_test(e.arg, env, depth + 1),))
+        if isinstance(e, A.Apply) and e.name == "\\X":
+            return self.node(Op.SD_PRODUCT, e.loc, kids=tuple(self.set_test(x, env, depth + 1) for x in e.args))
         if isinstance(e, A.Binary) and e.op == ".." and isinstance(self.lookup("..", env), BuiltinSym):
             return self.node(Op.SD_RANGE, e.loc, kids=(self.expr(e.lhs, env), self.expr(e.rhs, env)))
         if isinstance(e, (A.Name, A.Apply)):
@@ -481,6 +501,8 @@ class Translator:
             return self.node(Op.NEG, e.loc, kids=(self.expr(e.arg, env),))
         if op == "DOMAIN":
             return self.node(Op.DOMAIN, e.loc, kids=(self.expr(e.arg, env),))
+        if op == "SUBSET":
+            return self.node(Op.POWERSET, e.loc, kids=(self.expr(e.arg, env),))
         if op == "UNCHANGED" and not env.primed and not env.init:  # e' = e
             return self.node(Op.EQ, e.loc, kids=(self.expr(e.arg, replace(env, primed=True)), self.expr(e.arg, env)))
         raise unsupported(f"the operator {op}", e.loc)
@@ -669,7 +691,9 @@ class Translator:
         self.leaf_params.append(params)
         return self.action(e, env, self.node(Op.A_EMIT, e.loc, (leaf,)))
 
-    def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
+    def _bound_slots(self, e: A.Quant, env: TEnv) -> tuple[tuple, list, TEnv]:
+        """The bound sets of a quantifier over actions, a slot for each bound name, and
+        the environment of its body (each name read from its slot)."""
         pairs = self.names_of(e.bounds, e.loc)
         sets = tuple(self.expr(s, env) for _, s in pairs)
         locals_ = dict(env.locals)
@@ -677,7 +701,11 @@ class Translator:
         for n, _ in pairs:
             slots.append(self.alloc())
             locals_[n] = SlotArg(slots[-1], None)
-        return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(replace(env, locals=locals_)),))
+        return sets, slots, replace(env, locals=locals_)
+
+    def exists(self, e: A.Quant, env: TEnv, body_of: Any) -> Node:
+        sets, slots, inner = self._bound_slots(e, env)
+        return self.node(Op.A_EXISTS, e.loc, slots, kids=sets + (body_of(inner),))
 
     def action(self, e: A.Expr, env: TEnv, k: Node) -> Node:
         method = getattr(self, "a_" + type(e).__name__, None)
@@ -727,13 +755,23 @@ class Translator:
 
     def a_Quant(self, e: A.Quant, env: TEnv, k: Node) -> Node | None:
         if e.kind != "\\E":
-            # A plain boolean \A (its body never branches) is a guard; otherwise TLC takes it as
-            # a conjunction of actions, one per binding (`ActionCompiler._forall`): not here.
-            inner = self.exists(A.Quant(e.loc, "\\E", e.bounds, e.body), env, lambda env2: self.action(e.body, env2, k))
-            if not _guard_chain(inner[4][-1], k):
-                raise unsupported("\\A over an action whose body branches", e.loc)
-            return None
+            return self.forall(e, env, k)
         return self.exists(e, env, lambda env2: self.action(e.body, env2, k))
+
+    def forall(self, e: A.Quant, env: TEnv, k: Node) -> Node | None:
+        """A plain boolean \\A (its body never branches) is a guard (None); otherwise TLC
+        takes it as a conjunction of actions, one per binding (`ActionCompiler._forall`):
+        A_FORALL, its body and the same body as a guard both ending in A_FORALL_NEXT."""
+        sets, slots, env2 = self._bound_slots(e, env)
+        index = self.foralls
+        self.foralls += 1
+        after = self.node(Op.A_FORALL_NEXT, e.loc, (index,))
+        lo = self.nslots
+        body = self.action(e.body, env2, after)
+        if _guard_chain(body, after):
+            return None
+        test = self.guard(e.body, env2, after)
+        return self.node(Op.A_FORALL, e.loc, (index, lo, self.nslots, *slots), kids=sets + (body, test, after), k=k)
 
     def a_If(self, e: A.If, env: TEnv, k: Node) -> Node:
         return self.node(Op.A_IF, e.loc, kids=(self.expr(e.cond, env), self.action(e.then, env, k),

@@ -15,6 +15,13 @@ _BOOL, _INT, _STR, _MV, _SEQ, _FUN, _SET = range(7)
 _FALSE, _TRUE, _INT_TAG = 0, 1, 0x80000000
 
 
+def known_string_ranks() -> dict[str, int]:
+    """The ranks of the strings named so far (the spec's, in TLC's order), for a string
+    the core makes while checking (ToString)."""
+    from ...tla import values
+    return dict(values._STRING_RANK)
+
+
 def _step_error() -> type[Exception]:
     from ... import _tla_native  # type: ignore[attr-defined]
     return _tla_native.StepError  # type: ignore[no-any-return]

@@ -7,14 +7,14 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from .. import ast as A
-from ..constfold import const_value
+from ..constfold import NO_VALUE, const_value
 from ..env import Code, Env
 from ..errors import EvalError, Loc
 from ..modules import BuiltinSym, DefSym
 from ..specialise import membership_const
 from ..stdlib import non_integer_error
 from ..values import (FilteredSet, FnValue, IntervalSet, LazySet, ProductSet, as_set, check_set_kinds, interval_member,
-                      is_set, member)
+                      is_set, member, tlc_equals)
 from .binders import _enum_checked, _assign, _comprehension
 from .closures import Value, check_bool, _guard
 from .host import CompilerHost
@@ -74,6 +74,31 @@ class SetsMixin(CompilerHost):
             return _kinds_checked([c(s, t, L) for c in codes], loc)
         return setenum
 
+    def _in_enumeration(self, e: A.SetEnum, env: Env) -> Callable[[Any, Any, list, Value], bool]:
+        """``v \\in {e1, ..., en}`` as TLC decides it: a set enumeration is not yet
+        normalised, so its membership is a scan in the written order with each element's
+        ``equals(v)`` (ValueVec.search): elements of other kinds than `v` are an error
+        only where the scan reaches them, and none at all once an element equals `v`."""
+        codes = [self.expr(x, env) for x in e.elems]
+        loc = e.loc
+
+        def in_enum(s: Any, t: Any, L: list, v: Value) -> bool:
+            try:
+                for c in codes:
+                    if tlc_equals(c(s, t, L), v):
+                        return True
+            except EvalError as err:
+                raise err.with_loc(loc) from None
+            return False
+        # Constant elements of one simple type (`{Idle, Busy}`, names of constants): a value
+        # of that type is found by hashing, with the scan's answer; any other goes the scan.
+        values = [const_value(c) for c in codes] if self.fast_paths and self.folder.is_constant(e, env) else []
+        kinds = {type(x) for x in values}
+        if values and NO_VALUE not in values and len(kinds) == 1 and kinds <= {int, str, bool}:
+            S, T = frozenset(values), kinds.pop()
+            return lambda s, t, L, v: (v in S) if type(v) is T else in_enum(s, t, L, v)
+        return in_enum
+
     def c_SetFilter(self, e: A.SetFilter, env: Env) -> Code:
         inner, binds = self.bind_bounds([e.bound], env)
         pred = self.expr(e.pred, inner)
@@ -119,6 +144,9 @@ class SetsMixin(CompilerHost):
     def membership(self, set_expr: A.Expr, env: Env) -> Callable[[Any, Any, list, Value], bool]:
         """Compile ``v \\in set_expr`` without building structured sets."""
         e = set_expr
+        if isinstance(e, A.SetEnum) and e.elems and not (len({type(x) for x in e.elems}) == 1
+                                                         and isinstance(e.elems[0], (A.Num, A.Str, A.Bool))):
+            return self._in_enumeration(e, env)
         if self.fast_paths and self.folder.is_constant(e, env):
             fast = membership_const(const_value(self.expr(e, env)), e.loc)
             if fast is not None:
