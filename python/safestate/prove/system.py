@@ -195,7 +195,8 @@ class System:
 def _quantified(*formulas: z3.BoolRef) -> bool:
     """Does one of `formulas` contain a quantifier?  Asked of z3's own probe, inside z3:
     a walk of the DAG from Python (even through the C API) cost seconds on the press,
-    whose ~500,000 well-definedness obligations are asked about at once."""
+    whose well-definedness obligations (sites under long path conditions) are asked
+    about at once."""
     if not formulas:
         return False
     g = z3.Goal(ctx=formulas[0].ctx)
