@@ -3,71 +3,135 @@
 (* state-chain engine (EXTENDS StateChain; the tree is given to its         *)
 (* constants in HydraulicPress.cfg). One step = one scan with one input      *)
 (* event; the run function of the one state that reacts makes one request.  *)
+(* The modes sit directly under the root (the document's Figure 1): each     *)
+(* has its own stroke order and parameters, the selected mode survives a     *)
+(* motor stop, and a mode change exits the whole motor-on subtree.           *)
 EXTENDS StateChain
 
-StepNames == <<"Ready", "Feed", "Locate", "Clamp", "FastAdvance", "Pressing", "Blow", "Eject", "ClearScrap">>
-PressOrder == <<"Press", "MotorOff", "MotorOn", "Stroke", "Mode1", "M1_Ready", "M1_Feed", "M1_Locate", "M1_Clamp", "M1_FastAdvance", "M1_Pressing", "M1_Blow", "M1_Eject", "M1_ClearScrap", "Mode2", "M2_Ready", "M2_Feed", "M2_Locate", "M2_Clamp", "M2_FastAdvance", "M2_Pressing", "M2_Blow", "M2_Eject", "M2_ClearScrap", "Mode3", "M3_Ready", "M3_Feed", "M3_Locate", "M3_Clamp", "M3_FastAdvance", "M3_Pressing", "M3_Blow", "M3_Eject", "M3_ClearScrap", "Aux", "CoolIdle", "Cooling">>
-PressStates == {PressOrder[i] : i \in 1..Len(PressOrder)}
-ModeStates == {"Mode1", "Mode2", "Mode3"}
+\* Per mode m (design page §3): the mode state, its motor-off / motor-on states, the
+\* stroke sub-chain root, the aux sub-chain and the stroke states in stroke order.
 ModeOf == <<"Mode1", "Mode2", "Mode3">>
-\* The stroke state of mode m at step k (1 = Ready .. 9 = ClearScrap).
-StrokeState(m, k) == PressOrder[4 + (m - 1) * 10 + 1 + k]
-StrokeStates == {StrokeState(m, k) : m \in 1..3, k \in 1..9}
-StepIndex(s) == CHOOSE k \in 1..9 : \E m \in 1..3 : StrokeState(m, k) = s
+OffOf == <<"M1_Off", "M2_Off", "M3_Off">>
+OnOf == <<"M1_On", "M2_On", "M3_On">>
+StrokeOf == <<"M1_Stroke", "M2_Stroke", "M3_Stroke">>
+AuxOf == <<"M1_Aux", "M2_Aux", "M3_Aux">>
+CoolIdleOf == <<"M1_CoolIdle", "M2_CoolIdle", "M3_CoolIdle">>
+CoolingOf == <<"M1_Cooling", "M2_Cooling", "M3_Cooling">>
+\* The stroke order of each mode, Ready first (design page §3, "Modes").
+StepSeq ==
+    << <<"Ready", "Feed", "Locate", "Clamp", "FastAdvance", "Pressing", "Blow", "Eject", "ClearScrap">>,
+       <<"Ready", "Feed", "Locate", "Clamp", "FastAdvance", "Pressing", "Eject", "Blow", "ClearScrap">>,
+       <<"Ready", "Feed", "Locate", "Clamp", "Pressing", "Eject", "ClearScrap">> >>
+StrokeSeq ==
+    << <<"M1_Ready", "M1_Feed", "M1_Locate", "M1_Clamp", "M1_FastAdvance", "M1_Pressing", "M1_Blow", "M1_Eject", "M1_ClearScrap">>,
+       <<"M2_Ready", "M2_Feed", "M2_Locate", "M2_Clamp", "M2_FastAdvance", "M2_Pressing", "M2_Eject", "M2_Blow", "M2_ClearScrap">>,
+       <<"M3_Ready", "M3_Feed", "M3_Locate", "M3_Clamp", "M3_Pressing", "M3_Eject", "M3_ClearScrap">> >>
+\* The mode parameters (design page §3): press pressure in bar, fast-advance speed in mm/s.
+Pressure == <<160, 120, 60>>
+Speed == <<120, 80, 0>>
+
+ModeBlock(m) == <<ModeOf[m], OffOf[m], OnOf[m], StrokeOf[m]>> \o StrokeSeq[m] \o <<AuxOf[m], CoolIdleOf[m], CoolingOf[m]>>
+PressOrder == <<"Press">> \o ModeBlock(1) \o ModeBlock(2) \o ModeBlock(3)
+PressStates == {PressOrder[i] : i \in 1..Len(PressOrder)}
+ModeStates == {ModeOf[m] : m \in 1..3}
+StrokeStates == {StrokeSeq[m][k] : m \in 1..3, k \in 1..7} \cup {StrokeSeq[m][k] : m \in 1..2, k \in 8..9}
+StepState(m, k) == StrokeSeq[m][k]
+\* Bounded ranges (1..16, 1..9) with a length guard rather than 1..Len(...): the prover
+\* enumerates a CHOOSE or \E only over a range of constant bounds.
+ModeNum(s) == CHOOSE m \in 1..3 : \E i \in 1..16 : i <= Len(ModeBlock(m)) /\ ModeBlock(m)[i] = s
+StepNames == {"Ready", "Feed", "Locate", "Clamp", "FastAdvance", "Pressing", "Blow", "Eject", "ClearScrap"}
+StepNameOf ==
+    [s \in StrokeStates |->
+        CHOOSE n \in StepNames : \E m \in 1..3 : \E k \in 1..9 :
+            k <= Len(StrokeSeq[m]) /\ StrokeSeq[m][k] = s /\ StepSeq[m][k] = n]
 PressParent ==
     [s \in PressStates |->
         CASE s = "Press" -> "none"
-          [] s \in {"MotorOff", "MotorOn"} -> "Press"
-          [] s \in {"Stroke", "Aux"} -> "MotorOn"
-          [] s \in ModeStates -> "Stroke"
-          [] s \in {"CoolIdle", "Cooling"} -> "Aux"
-          [] OTHER -> ModeOf[CHOOSE m \in 1..3 : \E k \in 1..9 : StrokeState(m, k) = s]]
+          [] s \in ModeStates -> "Press"
+          [] s \in {OffOf[m] : m \in 1..3} \cup {OnOf[m] : m \in 1..3} -> ModeOf[ModeNum(s)]
+          [] s \in {StrokeOf[m] : m \in 1..3} \cup {AuxOf[m] : m \in 1..3} -> OnOf[ModeNum(s)]
+          [] s \in {CoolIdleOf[m] : m \in 1..3} \cup {CoolingOf[m] : m \in 1..3} -> AuxOf[ModeNum(s)]
+          [] OTHER -> StrokeOf[ModeNum(s)]]
 PressInitial ==
     [s \in PressStates |->
-        CASE s = "Press" -> "MotorOff"
-          [] s = "Stroke" -> "Mode1"
-          [] s = "Aux" -> "CoolIdle"
-          [] s \in ModeStates -> StrokeState(CHOOSE i \in 1..3 : ModeOf[i] = s, 1)
+        CASE s = "Press" -> "Mode1"
+          [] s \in ModeStates -> OffOf[ModeNum(s)]
+          [] s \in {StrokeOf[m] : m \in 1..3} -> StepState(ModeNum(s), 1)
+          [] s \in {AuxOf[m] : m \in 1..3} -> CoolIdleOf[ModeNum(s)]
           [] OTHER -> "none"]
-PressParallel == {"MotorOn"}
+PressParallel == {OnOf[m] : m \in 1..3}
 
 \* Outputs per state: set by the entry function, cleared by the exit function.
-Valves == <<"none", "feed_valve", "locate_valve", "clamp_valve", "fast_valve", "press_valve", "blow_valve", "eject_valve", "scrap_valve">>
-StrokeOutputs == {Valves[k] : k \in 2..9}
+ValveOf(n) ==
+    CASE n = "Feed" -> "feed_valve" [] n = "Locate" -> "locate_valve" [] n = "Clamp" -> "clamp_valve"
+      [] n = "FastAdvance" -> "fast_valve" [] n = "Pressing" -> "press_valve" [] n = "Blow" -> "blow_valve"
+      [] n = "Eject" -> "eject_valve" [] n = "ClearScrap" -> "scrap_valve" [] OTHER -> "none"
+StrokeOutputs == {"feed_valve", "locate_valve", "clamp_valve", "fast_valve", "press_valve", "blow_valve",
+                  "eject_valve", "scrap_valve"}
 Out(s) ==
-    CASE s = "MotorOn" -> "motor"
-      [] s = "Aux" -> "lamp"
-      [] s = "Cooling" -> "cool_pump"
-      [] s \in StrokeStates -> Valves[StepIndex(s)]
+    CASE s \in {OnOf[m] : m \in 1..3} -> "motor"
+      [] s \in {AuxOf[m] : m \in 1..3} -> "lamp"
+      [] s \in {CoolingOf[m] : m \in 1..3} -> "cool_pump"
+      [] s \in StrokeStates -> ValveOf(StepNameOf[s])
       [] OTHER -> "none"
 
 Inputs == {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2", "mode3",
            "continuous_on", "continuous_off", "temp_high", "temp_ok"}
 
-VARIABLES outputs, continuous, restarted, event
-vars == <<chainVars, outputs, continuous, restarted, event>>
+\* History variables of the hazard properties (design page §7), functions of the inputs
+\* and outputs only: `selector` the mode last selected (the selector switch; 1 at
+\* power-up), `cycleMode` the mode in which Start began the running work cycle (0: no
+\* cycle: set by Start, kept while a stroke output stays on, cleared when none is on),
+\* `clamped` the clamp valve has been on in this work cycle (cleared by the feed valve,
+\* which begins a cycle, and when no stroke output is on), `motorCmd` a motor-start was
+\* given and the motor has run since, with no motor-stop.
+VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd
+vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd>>
 
 \* Observables shared with HydraulicPressFlat (docs/design/hydraulic-press.md §6).
 motor == "motor" \in outputs
+mode == CHOOSE m \in 1..3 : ModeOf[m] \in active
 ActiveStep == {s \in StrokeStates : s \in active}
-step == IF ActiveStep = {} THEN "none" ELSE StepNames[StepIndex(CHOOSE s \in ActiveStep : TRUE)]
-mode == IF ModeStates \cap active = {} THEN 0 ELSE CHOOSE m \in 1..3 : ModeOf[m] \in active
+step == IF ActiveStep = {} THEN "none" ELSE StepNameOf[CHOOSE s \in ActiveStep : TRUE]
+\* The analog outputs set by the mode's Pressing / FastAdvance entry, 0 otherwise.
+pressure == IF "press_valve" \in outputs THEN Pressure[mode] ELSE 0
+speed == IF "fast_valve" \in outputs THEN Speed[mode] ELSE 0
+StrokeOn(outs) == outs \cap StrokeOutputs # {}
 
-\* §4: the request the run functions make for input e (none: <<>>).
+\* §4: the request the run function of the reacting state makes for input e in mode m,
+\* first matching arm wins. Written as actions over the concrete states of mode m (and
+\* of each stroke position) rather than as a value <<src, dst>>: the same steps for TLC,
+\* but the prover then translates each Request with a constant source and target, whose
+\* exit walk is over one known subtree (docs/prove.md, "Cost").
 InputMode(e) == CASE e = "mode1" -> 1 [] e = "mode2" -> 2 [] e = "mode3" -> 3 [] OTHER -> 0
-NextStep(k) == IF k < 9 THEN k + 1 ELSE IF continuous THEN 2 ELSE 1
-Reaction(e) ==
-    CASE e = "motor_on" /\ "MotorOff" \in active -> <<"MotorOff", "MotorOn">>
-      [] e = "motor_off" /\ "MotorOn" \in active -> <<"MotorOn", "MotorOff">>
-      [] InputMode(e) # 0 /\ mode \notin {0, InputMode(e)} -> <<ModeOf[mode], ModeOf[InputMode(e)]>>
-      [] e = "ret" /\ mode # 0 -> <<ModeOf[mode], ModeOf[mode]>>
-      [] e = "start" /\ step = "Ready" -> <<StrokeState(mode, 1), StrokeState(mode, 2)>>
-      [] e = "step_done" /\ step \notin {"none", "Ready"} ->
-            LET k == CHOOSE i \in 1..9 : StepNames[i] = step
-            IN <<StrokeState(mode, k), StrokeState(mode, NextStep(k))>>
-      [] e = "temp_high" /\ "CoolIdle" \in active -> <<"CoolIdle", "Cooling">>
-      [] e = "temp_ok" /\ "Cooling" \in active -> <<"Cooling", "CoolIdle">>
-      [] OTHER -> <<>>
+NoReaction == /\ log' = <<>> /\ result' = "ok" /\ UNCHANGED <<active, request>>
+StepIn(m, k) == k <= Len(StrokeSeq[m]) /\ StepState(m, k) \in active
+\* The stroke position k of mode m is done: the next one, after the last Ready (or Feed in
+\* continuous operation).
+StepFrom(m, k) ==
+    IF k < Len(StrokeSeq[m]) THEN Request(StepState(m, k), StepState(m, k + 1))
+    ELSE IF continuous THEN Request(StepState(m, k), StepState(m, 2))
+    ELSE Request(StepState(m, k), StepState(m, 1))
+StepDone(m) ==
+    CASE StepIn(m, 1) -> StepFrom(m, 1) [] StepIn(m, 2) -> StepFrom(m, 2) [] StepIn(m, 3) -> StepFrom(m, 3)
+      [] StepIn(m, 4) -> StepFrom(m, 4) [] StepIn(m, 5) -> StepFrom(m, 5) [] StepIn(m, 6) -> StepFrom(m, 6)
+      [] StepIn(m, 7) -> StepFrom(m, 7) [] StepIn(m, 8) -> StepFrom(m, 8) [] OTHER -> StepFrom(m, 9)
+ModeChange(m, e) ==
+    CASE InputMode(e) = 1 -> Request(ModeOf[m], ModeOf[1])
+      [] InputMode(e) = 2 -> Request(ModeOf[m], ModeOf[2])
+      [] OTHER -> Request(ModeOf[m], ModeOf[3])
+\* A CASE, not an IF chain: its arms are translated side by side (one path condition each)
+\* rather than nested nine deep.
+Reaction(e, m) ==
+    CASE e = "motor_on" /\ OffOf[m] \in active -> Request(OffOf[m], OnOf[m])
+      [] e = "motor_off" /\ OnOf[m] \in active -> Request(OnOf[m], OffOf[m])
+      [] InputMode(e) \notin {0, m} -> ModeChange(m, e)
+      [] e = "ret" /\ step # "none" -> Request(StrokeOf[m], StrokeOf[m])
+      [] e = "start" /\ step = "Ready" -> Request(StepState(m, 1), StepState(m, 2))
+      [] e = "step_done" /\ step \notin {"none", "Ready"} -> StepDone(m)
+      [] e = "temp_high" /\ CoolIdleOf[m] \in active -> Request(CoolIdleOf[m], CoolingOf[m])
+      [] e = "temp_ok" /\ CoolingOf[m] \in active -> Request(CoolingOf[m], CoolIdleOf[m])
+      [] OTHER -> NoReaction
 
 ApplyLog(outs, lg) ==
     (outs \ {Out(lg[i].state) : i \in {j \in DOMAIN lg : lg[j].kind = "exit"}})
@@ -79,15 +143,26 @@ Init ==
     /\ continuous = FALSE
     /\ restarted = FALSE
     /\ event = "init"
+    /\ selector = 1
+    /\ cycleMode = 0
+    /\ clamped = FALSE
+    /\ motorCmd = FALSE
 
 Scan(e) ==
-    LET r == Reaction(e) IN
-    /\ IF r = <<>> THEN /\ log' = <<>> /\ result' = "ok" /\ UNCHANGED <<active, request>>
-                     ELSE Request(r[1], r[2])
+    \* exactly one mode state is active (SCH-01): one disjunct applies
+    /\ \/ mode = 1 /\ Reaction(e, 1)
+       \/ mode = 2 /\ Reaction(e, 2)
+       \/ mode = 3 /\ Reaction(e, 3)
     /\ outputs' = ApplyLog(outputs, log')
     /\ continuous' = CASE e = "continuous_on" -> TRUE [] e = "continuous_off" -> FALSE [] OTHER -> continuous
     /\ restarted' = (e = "motor_on" /\ ~motor)
     /\ event' = e
+    \* Spelt out, not through InputMode: the property must not share the reaction's decoding.
+    /\ selector' = CASE e = "mode1" -> 1 [] e = "mode2" -> 2 [] e = "mode3" -> 3 [] OTHER -> selector
+    /\ cycleMode' = IF e = "start" THEN selector' ELSE IF StrokeOn(outputs') THEN cycleMode ELSE 0
+    /\ clamped' = IF ~StrokeOn(outputs') \/ "feed_valve" \in outputs' THEN FALSE
+                  ELSE clamped \/ "clamp_valve" \in outputs'
+    /\ motorCmd' = IF e = "motor_on" THEN TRUE ELSE motorCmd /\ e # "motor_off" /\ "motor" \in outputs'
 
 Next == \E e \in Inputs : Scan(e)
 
@@ -102,7 +177,39 @@ INV_PRESS ==
 \* SCH-05: the energised outputs are exactly those of the active states.
 INV_PRESS_OUTPUTS_OF_ACTIVE == outputs = {Out(s) : s \in active} \ {"none"}
 
-Witness_RestartAfterStroke == ~(restarted /\ mode = 1)  \* INV_PRESS (restart conjunct)
-Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE
+\* The hazard properties of docs/design/hydraulic-press.md §7 (UCA-1 .. UCA-7): over the
+\* inputs (event, and the history above) and the outputs, across scans.
+\* UCA-1: no stroke output unless Start began the work cycle it belongs to: after a
+\* motor stop, a RET or a mode change, none until the next Start, whatever sensor edges come.
+UCA1_STROKE_ONLY_AFTER_START == StrokeOn(outputs) => cycleMode # 0
+\* UCA-2: a motor-stop input switches the motor and every stroke output off in that scan.
+UCA2_MOTOR_STOP_SAME_SCAN == event = "motor_off" => ~motor /\ ~StrokeOn(outputs)
+\* UCA-3: RET switches every stroke output off in that scan.
+UCA3_RET_SAME_SCAN == event = "ret" => ~StrokeOn(outputs)
+\* UCA-4: the fast-advance and press valves only after the clamp valve in the same work cycle.
+UCA4_PRESS_ONLY_CLAMPED == ("fast_valve" \in outputs \/ "press_valve" \in outputs) => clamped
+\* UCA-5: a work cycle runs in the mode (order, pressure, speed) it was started in, and the
+\* press is always in the mode last selected, across motor stops and restarts.
+UCA5_CYCLE_IN_SELECTED_MODE ==
+    /\ mode = selector
+    /\ StrokeOn(outputs) => cycleMode = mode
+    /\ "press_valve" \in outputs => pressure = Pressure[selector]
+    /\ "fast_valve" \in outputs => speed = Speed[selector]
+\* UCA-6: the motor runs only after a motor-start with no motor-stop since.
+UCA6_MOTOR_ONLY_AFTER_MOTOR_START == motor => motorCmd
+\* UCA-7: a stroke output comes on only in a scan with the sensor edge that ends the stroke
+\* before it (step_done), or with Start, which energises the feed valve and no other
+\* (bound 0 scans: no stroke advances on another input, none is skipped at Start). The
+\* outputs switched on in a scan are those of its entry calls (the entry functions set
+\* them), which conformance compares with the C++ engine's call log.
+SwitchedOn == {Out(log[i].state) : i \in Kinds("entry")} \cap StrokeOutputs
+UCA7_ADVANCE_ONLY_ON_SENSOR ==
+    /\ SwitchedOn # {} => event \in {"start", "step_done"}
+    /\ event = "start" /\ SwitchedOn # {} => outputs \cap StrokeOutputs = {"feed_valve"}
+
+Witness_RestartAfterStroke == ~(restarted /\ mode = 2)  \* INV_PRESS (restart conjunct), UCA-5 across a restart
+Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE, UCA-4
 Witness_Cooling == ~("cool_pump" \in outputs /\ step = "Eject")
+Witness_FeedBySensor == ~(event = "step_done" /\ SwitchedOn = {"feed_valve"})  \* UCA-7: continuous operation re-enters Feed on the sensor edge
+Witness_ModeChangeMidCycle == ~(event = "mode3" /\ Len(log) = 8)  \* UCA-5: a mode change in a running cycle exits the motor-on subtree (6 exits, 2 entries)
 ===============================================================================

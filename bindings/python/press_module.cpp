@@ -1,12 +1,15 @@
 // safestate._press: drives the C++ hydraulic press (chain) and its flat defective reference
-#include <algorithm>
-// from Python (docs/design/hydraulic-press.md §7). cycle(event) takes one model input event
+// from Python (docs/design/hydraulic-press.md §8). cycle(event) takes one model input event
 // ("motor_on", "start", "mode2", ...); observe() returns the models' observables under the
-// models' names: motor, mode, step, outputs (a sorted list of output names).
+// models' names: motor, mode, step, outputs (a sorted list of output names); the chain
+// press adds pressure, speed (the mode parameters driven), active (its active states) and
+// log (the entry/exit calls of the last scan, [{kind, state}]).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,37 +43,63 @@ py::dict to_dict(const sc::PressObservation& o) {
   return d;
 }
 
-template <class Press>
+// The chain press's active states, in table (pre-)order: what `safestate demo press` prints.
+std::vector<std::string> active_states(const sc::HydraulicPress& p) {
+  std::vector<std::string> names;
+  for (sc::StateIndex s = 0; s < sc::press::state_count; ++s) {
+    if (p.chain().is_active(s)) names.emplace_back(sc::press::table[s].name);
+  }
+  return names;
+}
+
+// The chain's entry/exit calls of the last scan, as the model's log records them.
+py::list call_log(const sc::HydraulicPress& p) {
+  const auto& calls = p.chain().calls();
+  if (calls.overflow()) throw std::runtime_error("the press chain's call log overflowed");
+  py::list out;
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    py::dict c;
+    c["kind"] = sc::to_string(calls[i].kind);
+    c["state"] = sc::press::table[calls[i].state].name;
+    out.append(c);
+  }
+  return out;
+}
+
+py::dict observe_chain(const sc::HydraulicPress& p) {
+  const sc::PressObservation o = p.observe();
+  py::dict d = to_dict(o);
+  d["pressure"] = o.outputs.pressure_bar;
+  d["speed"] = o.outputs.speed_mm_s;
+  d["active"] = active_states(p);
+  d["log"] = call_log(p);
+  return d;
+}
+
+py::dict observe_flat(const sc::PressFlat& p) { return to_dict(p.observe()); }
+
+template <class Press, py::dict (*Observe)(const Press&)>
 struct Driver {
   Press press;
   bool continuous = false;
   void cycle(const std::string& e) { press.cycle(inputs_of(e, continuous)); }
-  py::dict observe() const {
-    sc::PressObservation o = press.observe();
-    return to_dict(o);
-  }
+  py::dict observe() const { return Observe(press); }
+  std::vector<std::string> active() const { return active_states(press); }
 };
-
-// The chain press's active states, in table (pre-)order: what `safestate demo press` prints.
-std::vector<std::string> active_states(const Driver<sc::HydraulicPress>& d) {
-  std::vector<std::string> names;
-  for (sc::StateIndex s = 0; s < sc::press::state_count; ++s) {
-    if (d.press.chain().is_active(s)) names.emplace_back(sc::press::table[s].name);
-  }
-  return names;
-}
+using ChainDriver = Driver<sc::HydraulicPress, &observe_chain>;
+using FlatDriver = Driver<sc::PressFlat, &observe_flat>;
 
 }  // namespace
 
 PYBIND11_MODULE(_press, m) {
   m.doc() = "The hydraulic press on the state chain and the flat defective reference (SCH-05)";
-  py::class_<Driver<sc::HydraulicPress>>(m, "HydraulicPress")
+  py::class_<ChainDriver>(m, "HydraulicPress")
       .def(py::init<>())
-      .def("cycle", &Driver<sc::HydraulicPress>::cycle, py::arg("event"))
-      .def("observe", &Driver<sc::HydraulicPress>::observe)
-      .def("active", &active_states, "the active states, in table order");
-  py::class_<Driver<sc::PressFlat>>(m, "PressFlat", "DEFECTIVE REFERENCE: reproduces the accident; never a product")
+      .def("cycle", &ChainDriver::cycle, py::arg("event"))
+      .def("observe", &ChainDriver::observe)
+      .def("active", &ChainDriver::active, "the active states, in table order");
+  py::class_<FlatDriver>(m, "PressFlat", "DEFECTIVE REFERENCE: reproduces the accident; never a product")
       .def(py::init<>())
-      .def("cycle", &Driver<sc::PressFlat>::cycle, py::arg("event"))
-      .def("observe", &Driver<sc::PressFlat>::observe);
+      .def("cycle", &FlatDriver::cycle, py::arg("event"))
+      .def("observe", &FlatDriver::observe);
 }

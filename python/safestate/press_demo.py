@@ -20,8 +20,14 @@ REPO = Path(__file__).resolve().parents[2]
 TRACE = REPO / "models" / "traces" / "HydraulicPressFlat_INV_PRESS.itf.json"
 STROKE_OUTPUTS = {"feed_valve", "locate_valve", "clamp_valve", "fast_valve", "press_valve", "blow_valve",
                   "eject_valve", "scrap_valve"}
-# Shown of the chain press: the structural states are implied by the leaves.
-STRUCTURAL = {"Press", "MotorOn", "Stroke", "Aux"}
+# Shown of the chain press: the mode and the leaves; the structural states (the root, each
+# mode's motor-on, stroke and aux states) are implied by them.
+STRUCTURAL_SUFFIXES = ("_On", "_Stroke", "_Aux")
+
+
+def shown(state: str) -> bool:
+    """Whether the demo prints this active state of the chain press."""
+    return state != "Press" and not state.endswith(STRUCTURAL_SUFFIXES)
 
 
 def counterexample_events(trace: Path = TRACE) -> list[str]:
@@ -45,7 +51,7 @@ def lines(press: ModuleType, events: list[str]) -> list[str]:
         flat.cycle(e)
         chain.cycle(e)
         f, c = flat.observe(), chain.observe()
-        active = [s for s in chain.active() if s not in STRUCTURAL]
+        active = [s for s in chain.active() if shown(s)]
         flat_col = f"step {f['step']:<11} out {','.join(f['outputs']) or '-'}"
         chain_col = f"{' > '.join(active):<38} out {','.join(c['outputs']) or '-'}"
         mark = "   <== ACCIDENT: restart energises a stroke output (flat)" if accident(f0, f) else ""

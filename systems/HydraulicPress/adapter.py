@@ -5,7 +5,10 @@ defective reference `safestate._press.PressFlat` against models/HydraulicPressFl
 * Scan(e): one `cycle(e)` with the operator input event e, spelt as in the model.
 * Projection: the shared observables of both models (design §6): the operators `motor`,
   `mode`, `step` and the variable `outputs` (a set; the binding returns a sorted list).
-  The chain's active set and call log, and both models' history variables, are hidden.
+  The chain press adds the mode parameters `pressure` and `speed` and the engine's own
+  state: the active set `active` and the call log `log` of the scan (the entry/exit calls
+  in order, SCH-01..04 compared call by call). The request and its result, and both
+  models' history variables, are hidden.
 * Input-complete alphabet: the twelve input events, enabled in every state of both models.
   The C++ press objects cannot be copied (the chain refers to its context), so each probe
   replays its prefix on a fresh press.
@@ -22,10 +25,10 @@ SCAN = "Scan"
 
 
 class HydraulicPressAdapter(Adapter):
-    observed_variables = ("outputs",)
-    observed_operators = ("motor", "mode", "step")
-    hidden_variables: ClassVar[tuple[str, ...]] = ("active", "log", "result", "request", "continuous",
-                                                   "restarted", "event")
+    observed_variables: ClassVar[tuple[str, ...]] = ("outputs", "active", "log")
+    observed_operators: ClassVar[tuple[str, ...]] = ("motor", "mode", "step", "pressure", "speed")
+    hidden_variables: ClassVar[tuple[str, ...]] = ("result", "request", "continuous", "restarted", "event",
+                                                   "selector", "cycleMode", "clamped", "motorCmd")
     #: the class of safestate._press this adapter drives
     press_class: ClassVar[str] = "HydraulicPress"
 
@@ -40,7 +43,9 @@ class HydraulicPressAdapter(Adapter):
 
     def observe(self, sut: Any) -> dict[str, Any]:
         o = dict(sut.observe())
-        o["outputs"] = frozenset(o["outputs"])  # the model's outputs is a set
+        for key in ("outputs", "active"):  # sets in the model, sorted lists from the binding
+            if key in o:
+                o[key] = frozenset(o[key])
         return o
 
     def input_alphabet(self, state: tuple) -> list[Probe]:
@@ -60,5 +65,7 @@ class HydraulicPressAdapter(Adapter):
 class PressFlatAdapter(HydraulicPressAdapter):
     """DEFECTIVE REFERENCE: the flat press conforms to the flat model, accident included."""
 
+    observed_variables = ("outputs",)
+    observed_operators = ("motor", "mode", "step")
     hidden_variables = ("MoToOut", "cur", "FangShi", "continuous", "restarted", "event")
     press_class = "PressFlat"

@@ -2,8 +2,9 @@
 the flat C++ press against its model (HydraulicPressFlat.tla) on every reachable transition of
 the model's state graph, and the flat model's counterexample replayed through both C++
 presses: the flat one energises the stroke valve at the restart, the chain one not.  The
-chain press's every reachable transition (24,252) is replayed by the generic conformance
-suite (tests/python/test_conform_suite.py, system HydraulicPress), on the cached graph."""
+chain press's every reachable transition is replayed by the generic conformance
+suite (tests/python/test_conform_suite.py, system HydraulicPress), on the cached graph,
+its active set and call log included (tests/python/test_press_conform_observables.py)."""
 
 from __future__ import annotations
 

@@ -156,3 +156,14 @@ def test_an_argument_the_body_does_not_reach_is_not_obliged(capsys: pytest.Captu
     results = by_invariant(report)
     assert {n: results[n]["status"] for n in ("TypeOK", "Lazy")} == {"TypeOK": "proved", "Lazy": "proved"}
     assert code == 0
+
+
+def test_a_site_met_on_two_paths_is_one_obligation_failing_where_either_path_fails(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    # Val(x + 1) is evaluated under x < 3 (defined) and under x = 3 (outside arr's domain):
+    # one obligation for the site, under the disjunction of its paths, and it fails.
+    r = _ill_defined(capsys, "WdTwoPaths")["Bounded"]
+    assert r["status"] == "ill-defined"
+    assert "WdTwoPaths.tla:8:11: in Next, domain obligation fails" in r["undefined"]
+    assert [s["x"]["#bigint"] for s in r["trace"]["states"]] == ["0", "1", "2", "3"]
+    assert r["obligations"] == 1

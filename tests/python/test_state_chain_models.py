@@ -2,7 +2,7 @@
 press violates INV-PRESS with the accident trace (and the committed ITF is that trace);
 every StateChainDoc mutant is caught by `safestate check` with TLC's figures (the press's
 mutants belong to registered systems and run in test_model_mutants.py, with the same
-assertions); the StateChain witnesses are reached. The full chain models take minutes, so their runs (1,667 and 2,021
+assertions); the StateChain witnesses are reached. The full chain models take minutes, so their runs (1,667 and 1,929
 distinct states, TLC-equal) are recorded in models/README.md, not repeated here."""
 
 from __future__ import annotations

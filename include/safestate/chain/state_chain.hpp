@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 
+#include "safestate/chain/call_log.hpp"
 #include "safestate/chain/request_result.hpp"
 #include "safestate/chain/state_def.hpp"
 #include "safestate/chain/table_error.hpp"
@@ -66,6 +67,7 @@ class StateChain {
 
   // Power-up (SCH-01): activate the root down to its initial leaves.
   void start() noexcept {
+    log_.clear();
     if (!active_[0]) enter(0);
   }
 
@@ -82,13 +84,18 @@ class StateChain {
 
   // SCH-04: the run functions of the active states, leaf to root per sub-chain. A state
   // exited by a request earlier in the same walk is skipped.
-  void run() noexcept { walk(&StateDef<Ctx>::run); }
+  void run() noexcept {
+    log_.clear();
+    walk(&StateDef<Ctx>::run);
+  }
   // The do functions, same order (document: ST_Do).
   void work() noexcept { walk(&StateDef<Ctx>::work); }
 
   [[nodiscard]] bool is_active(StateIndex s) const noexcept { return s < N && active_[s]; }
   [[nodiscard]] const StateTable<Ctx, N>& table() const noexcept { return table_; }
   [[nodiscard]] static constexpr std::size_t size() noexcept { return N; }
+  // The entry/exit calls of the last start() or run() (every request it made), in order.
+  [[nodiscard]] const CallLog<2 * N>& calls() const noexcept { return log_; }
 
  private:
   static RequestResult request_thunk(void* self, StateIndex src, StateIndex dst) noexcept {
@@ -106,6 +113,7 @@ class StateChain {
         if (!active_[table_[j].parent] || !(parent.parallel || parent.initial == j)) continue;
       }
       active_[j] = true;
+      log_.push(CallKind::entry, static_cast<StateIndex>(j));
       if (table_[j].entry != nullptr) table_[j].entry(ctx_, requests());
     }
   }
@@ -114,6 +122,7 @@ class StateChain {
   void exit(std::size_t s) noexcept {
     for (std::size_t j = subtree_end(table_, s); j-- > s;) {
       if (!active_[j]) continue;
+      log_.push(CallKind::exit, static_cast<StateIndex>(j));
       if (table_[j].exit != nullptr) table_[j].exit(ctx_, requests());
       active_[j] = false;
     }
@@ -129,6 +138,7 @@ class StateChain {
   const StateTable<Ctx, N>& table_;
   Ctx& ctx_;
   std::array<bool, N> active_{};
+  CallLog<2 * N> log_{};
 };
 
 }  // namespace safestate::chain

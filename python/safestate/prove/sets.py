@@ -16,7 +16,7 @@ from typing import Any, Callable
 import z3
 
 from ..tla.errors import Loc
-from .values import ProveError, eq, fresh_like
+from .values import ProveError, eq, fresh_like, or_, value_key
 
 
 class SetV:
@@ -34,9 +34,35 @@ class EnumSet(SetV):
     shape: Any = None
     # DOMAIN of a bounded sequence: the set is 1..prefix_len (a function over it is a sequence)
     prefix_len: Any = None
+    _index: Any = field(default=False, init=False, repr=False)   # see _by_key
+    _shape: Any = field(default=None, init=False, repr=False)
 
     def member(self, x: Any, loc: Loc | None = None) -> z3.BoolRef:
+        k = value_key(x)
+        if k is not None:
+            by_key = self._by_key()
+            if by_key is not None and (not by_key or k[0] == self._shape):
+                # a concrete element met by concrete elements of its shape: found by its
+                # key, not by an equality per element (most of the press's membership
+                # tests: a state name in a set of state names)
+                return or_(by_key.get(k[1], []))
         return z3.Or([z3.And(g, eq(x, e, loc)) for g, e in self.items])
+
+    def _by_key(self) -> dict[Any, list[z3.BoolRef]] | None:
+        """The guards of the elements by value key, when every element is concrete and of
+        one shape (None otherwise; the elements are never changed once the set is made)."""
+        if self._index is False:
+            by: dict[Any, list[z3.BoolRef]] | None = {}
+            shape = None
+            for g, e in self.items:
+                k = value_key(e)
+                if k is None or (shape is not None and k[0] != shape):
+                    by = None
+                    break
+                shape = k[0]
+                by.setdefault(k[1], []).append(g)  # type: ignore[union-attr]
+            self._index, self._shape = by, shape
+        return self._index  # type: ignore[return-value]
 
     def fresh(self, name: str, loc: Loc | None = None) -> Any:
         proto = self.items[0][1] if self.items else self.shape

@@ -30,7 +30,7 @@ from ..tla.modules import (BuiltinSym, ConstSym, DefSym, InstanceSym, ModuleLoad
                            build_root_scope, load_module)
 from ..tla.values import ModelValue
 from .builtins import powerset
-from .obligations import Obligation, conjunction, distinct
+from .obligations import Obligation, conjunction, distinct, flatten
 from .sets import EnumSet, PredSet, SetV
 from .translate import Ctx, Translator
 from .values import UNTRACKED, ProveError, SeqV, Strings, Tup, concrete, is_z3, leaves
@@ -97,8 +97,8 @@ class System:
             raise TlaError("config", f"{name} is not a state predicate of {self.module.name}", None)
         with self.tr.obl.capture() as obligations:
             f = self.tr.boolean(sym.defn.body, Ctx(self.scope, {}, False))
-        self._predicates[name] = (f, obligations)
-        return f, obligations
+        self._predicates[name] = (f, flatten(obligations))
+        return self._predicates[name]
 
     def implications(self, name: str) -> list[tuple[str, z3.BoolRef]]:
         """The antecedents of the conjuncts of `name` written A => B, labelled by position (vacuity)."""
@@ -195,7 +195,8 @@ class System:
 def _quantified(*formulas: z3.BoolRef) -> bool:
     """Does one of `formulas` contain a quantifier?  Asked of z3's own probe, inside z3:
     a walk of the DAG from Python (even through the C API) cost seconds on the press,
-    whose ~500,000 well-definedness obligations are asked about at once."""
+    whose well-definedness obligations (sites under long path conditions) are asked
+    about at once."""
     if not formulas:
         return False
     g = z3.Goal(ctx=formulas[0].ctx)

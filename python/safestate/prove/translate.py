@@ -24,7 +24,7 @@ from ..tla import ast as A
 from ..tla.errors import Loc
 from ..tla.modules import BuiltinSym, ConstSym, DefSym, InstanceSym, Scope, SubstSym, VarSym
 from . import builtins as B
-from .obligations import Obligation, Obligations
+from .obligations import Obligation, Obligations, flatten
 from .sets import EnumSet, PredSet, need_enum, need_set
 from .values import UNDEF, Fn, ProveError, tracked, Rec, SeqV, Strings, Tup, concrete, eq, is_z3, ite
 
@@ -463,7 +463,7 @@ class Translator:
             inner = self._quant(kind, rest, body, ctx.bind(self._pattern(b, x)), loc)
         vs = leaves(x)
         member = s.member(x, loc)
-        for o in obligations:  # the body is evaluated for every element of the set
+        for o in flatten(obligations):  # the body is evaluated for every element of the set
             self.obl.emit([Obligation(o.kind, o.loc, o.what, z3.ForAll(vs, z3.Implies(member, o.cond)))])
         if kind == "\\A":
             return z3.ForAll(vs, z3.Implies(s.member(x, loc), inner))

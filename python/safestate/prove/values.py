@@ -19,6 +19,8 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 import z3
+from z3 import z3core as C
+from z3.z3types import Ast
 
 from ..tla.errors import Loc, UnsupportedError
 
@@ -138,6 +140,61 @@ def key_value(k: Key, strings: Strings) -> Any:
     if isinstance(k, tuple):
         return Tup(tuple(key_value(x, strings) for x in k))
     raise ProveError(f"domain element {k!r} of unsupported kind")
+
+
+_VALUE_KINDS = (C.Z3_OP_ANUM, C.Z3_OP_DT_CONSTRUCTOR, C.Z3_OP_TRUE, C.Z3_OP_FALSE)
+
+
+def value_key(v: Any) -> tuple[Any, Any] | None:
+    """(shape, identity) of a fully concrete value: two values of the same shape are
+    equal (`eq` is TRUE) exactly when their identities are (z3 shares equal terms, so a
+    concrete leaf is known by its id; the shape gives each leaf's sort).  None when some
+    leaf is symbolic, or for a set, sequence or function (compared otherwise)."""
+    if isinstance(v, z3.ExprRef):
+        ctx, a = v.ctx.ref(), v.as_ast()
+        if C.Z3_get_ast_kind(ctx, a) != C.Z3_APP_AST or C.Z3_get_app_num_args(ctx, a) != 0:
+            return None
+        if C.Z3_get_decl_kind(ctx, C.Z3_get_app_decl(ctx, a)) not in _VALUE_KINDS:
+            return None
+        return C.Z3_get_ast_id(ctx, C.Z3_sort_to_ast(ctx, C.Z3_get_sort(ctx, a))), C.Z3_get_ast_id(ctx, a)
+    if isinstance(v, (Rec, Tup)):
+        names = sorted(v.fields) if isinstance(v, Rec) else range(len(v.items))
+        parts = [value_key(v.fields[f] if isinstance(v, Rec) else v.items[f]) for f in names]  # type: ignore[index]
+        if any(p is None for p in parts):
+            return None
+        shape = tuple(p[0] for p in parts)  # type: ignore[index]
+        ident = tuple(p[1] for p in parts)  # type: ignore[index]
+        return (("rec", tuple(names), shape) if isinstance(v, Rec) else ("tup", shape)), ident
+    return None
+
+
+def and_(fs: list[z3.BoolRef]) -> z3.BoolRef:
+    """z3.And(fs) through the C API (z3py's coerces and sort-checks every argument), with
+    the TRUE conjuncts left out and FALSE when one is FALSE."""
+    keep = []
+    for f in fs:
+        if z3.is_false(f):
+            return f
+        if not z3.is_true(f):
+            keep.append(f)
+    if len(keep) <= 1:
+        return keep[0] if keep else z3.BoolVal(True, fs[0].ctx if fs else None)
+    args = (Ast * len(keep))(*(f.as_ast() for f in keep))
+    return z3.BoolRef(C.Z3_mk_and(keep[0].ctx.ref(), len(keep), args), keep[0].ctx)
+
+
+def or_(fs: list[z3.BoolRef]) -> z3.BoolRef:
+    """z3.Or(fs) likewise: the FALSE disjuncts left out, TRUE when one is TRUE."""
+    keep = []
+    for f in fs:
+        if z3.is_true(f):
+            return f
+        if not z3.is_false(f):
+            keep.append(f)
+    if len(keep) <= 1:
+        return keep[0] if keep else z3.BoolVal(False, fs[0].ctx if fs else None)
+    args = (Ast * len(keep))(*(f.as_ast() for f in keep))
+    return z3.BoolRef(C.Z3_mk_or(keep[0].ctx.ref(), len(keep), args), keep[0].ctx)
 
 
 def eq(a: Any, b: Any, loc: Loc | None = None) -> z3.BoolRef:
