@@ -70,6 +70,7 @@ class Compiler(AnalysisMixin, NamesMixin, CallsMixin, ExpansionMixin, InstancesM
         # id(symbol) -> replacing symbol, for `C <- Op` and definitions given values
         self.sym_overrides: dict[int, Any] = {}
         self._inline_depth = 0
+        self._inlined_nodes = 0  # body nodes inlined so far (inline.MAX_INLINED_NODES)
         # > 0 while compiling a body that runs re-entrantly on a shared frame (see inline.py).
         self._no_inline = 0
         self.folder = ConstFolder(self)
