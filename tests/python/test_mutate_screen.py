@@ -112,3 +112,25 @@ def test_speed_screening_cfg_the_original_violates_is_an_input_error(
                  "--screen-config", str(d / "Small.cfg")])
     err = capsys.readouterr().err
     assert code == 2 and "Small.cfg" in err and "LargeLimit" in err
+
+
+def test_speed_a_witness_lost_on_the_screening_cfg_is_a_kill_there(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    # Witness_Seen: the original reaches seen under either constant.  `count >= 1` ->
+    # `count >= 2` passes every property with Limit = 1 (count never reaches 2), but seen
+    # is then never reached there: killed by the witness on the screening cfg, without
+    # the CI cfg's check (which would kill it by Seen).
+    d = tmp_path / "m"
+    d.mkdir()
+    (d / "Screened.tla").write_text(SCREENED.replace("====", "Witness_Seen == ~seen\n===="))
+    (d / "Screened.cfg").write_text("CONSTANT Limit = 3\n" + BODY)
+    (d / "Screened_small.cfg").write_text("CONSTANT Limit = 1\n" + BODY)
+    monkeypatch.setenv("SAFESTATE_CACHE_DIR", str(tmp_path / "cache"))
+    code, report = _mutate(d / "Screened.tla", capsys, "--screen-config", str(d / "Screened_small.cfg"))
+    assert code == 0
+    m = _find(report, "literal", "count >= 2)")
+    assert (m["status"], m["by"], m["cfg"], m["witnesses"]) == ("killed", "witness", "Screened_small.cfg",
+                                                                 ["Witness_Seen"])
+    _code, unscreened = _mutate(d / "Screened.tla", capsys, "--no-screen")
+    m = _find(unscreened, "literal", "count >= 2)")
+    assert (m["status"], m["by"], m["cfg"]) == ("killed", "property", "Screened.cfg")

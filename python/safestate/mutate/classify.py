@@ -19,9 +19,10 @@ screen_config`): the same model and properties (a subset of the CI cfg's) with o
 smaller constants.  Every mutant is checked there first; a violated property there is a
 real kill -- the mutant violates a property of the model for a valid choice of its
 constants -- and is reported with that cfg (`cfg`), at the cost of the small state space
-instead of the CI cfg's.  So is an evaluation error there that the Python engine
-reproduces (the mutant is not a well-formed model for those constants; an error is
-never counted).  Every other mutant is classified on the CI cfg as without screening:
+instead of the CI cfg's.  So is a reachability witness the original reaches there and
+the mutant, passing every property, does not (killed by the witness on that cfg), and
+an evaluation error there that the Python engine reproduces (the mutant is not a
+well-formed model for those constants; an error is never counted).  Every other mutant is classified on the CI cfg as without screening:
 the check, the witnesses and the difference search decide survived and equivalent there.
 
 Only killed and survived count in the score.  Each mutant is classified in a forked
@@ -104,6 +105,8 @@ class Subject:
     side: OriginalSide | None = None  # its successors, explored once before the fork (Python engine)
     graph: LabelledGraph | None = None  # or its labelled graph from the native core (graph.py)
     witnesses: WitnessSet | None = None  # the reachability witnesses the original reaches (witness.py)
+    screen_witnesses: WitnessSet | None = None  # ... on the screening cfg (the native core's states)
+    screen_original: Model | None = None        # the original with the screening cfg, for those witnesses
 
     def load_original(self) -> Model:
         if self.original is None:
@@ -212,23 +215,73 @@ def _classify_ci(subject: Subject, mutant: Mutant, start: float, deadline: float
 
 def _screen(subject: Subject, mutant: Mutant, tmp: str, start: float) -> Outcome | None:
     """The mutant's check on the screening cfg: its outcome when that check decides it
-    (a violated property, or an evaluation error the Python engine reproduces), else
-    None (the CI cfg decides)."""
+    (a violated property; a reachability witness the original reaches there and the
+    mutant, passing every property, does not; an evaluation error the Python engine
+    reproduces), else None (the CI cfg decides)."""
     assert subject.screen is not None
     try:
         tla, cfg = materialise(subject, mutant, Path(tmp), screen=True)
-        # auto: an evaluation error of the core is checked again by the Python engine
-        result = check_model(load_model(str(tla), str(cfg)), subject.engine, subject.max_memory_mb)
+        model = load_model(str(tla), str(cfg))
+        result, run = _screen_check(subject, model)
     except UnsupportedError:
         return None
     except TlaError as e:
         return Outcome(mutant.id, "error", reason=_where(e, tmp), seconds=time.monotonic() - start,
                        cfg=subject.screen.name)
     verdict = _verdict(mutant, result, tmp, start)
+    if verdict is None and run is not None and subject.screen_witnesses and subject.screen_original:
+        try:
+            lost = on_native_states(subject.screen_witnesses, subject.screen_original, run, model, mutant.definition)
+        except TlaError:
+            return None  # the CI cfg's own witness evaluation reports it
+        if lost:
+            verdict = Outcome(mutant.id, "killed", violated=lost[0], by="witness", witnesses=lost,
+                              reason=f"no longer reached: {', '.join(lost)}", seconds=time.monotonic() - start)
     if verdict is None or verdict.status == "timeout":
         return None
     verdict.cfg = subject.screen.name
     return verdict
+
+
+def _screen_check(subject: Subject, model: Model) -> tuple[Any, Any]:
+    """(result, the native run holding the states it stored, or None): on the native core
+    where the original's witnesses on the screening cfg are known and the core takes the
+    mutant, else `check_model`'s engine choice (no witnesses evaluated there)."""
+    ws = subject.screen_witnesses
+    if ws is None or not ws.names or subject.engine == "python":
+        return check_model(model, subject.engine, subject.max_memory_mb), None
+    from ..checker.native.search import NativeRun, explore_native
+    try:
+        run = NativeRun(model)
+    except UnsupportedError:
+        return check_model(model, subject.engine, subject.max_memory_mb), None
+    with contextlib.redirect_stderr(io.StringIO()):
+        result, _error = explore_native(model, subject.max_memory_mb, None, run, 1)
+    if result is None:  # an evaluation error of the core: the Python engine reports it as TLC does
+        return check_model(model, "python", subject.max_memory_mb), None
+    return result, run
+
+
+def _screen_witness_set(subject: Subject) -> None:
+    """The witnesses the original reaches on the screening cfg (native core), once before
+    the workers fork; none where the core does not take the model there."""
+    from ..checker.native.search import NativeRun, explore_native
+    assert subject.screen is not None
+    subject.screen_witnesses = WitnessSet()
+    with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
+        tla, cfg = materialise(subject, None, Path(tmp), screen=True)
+        model = load_model(str(tla), str(cfg))
+        try:
+            run = NativeRun(model)
+        except UnsupportedError:
+            return
+        with contextlib.redirect_stderr(io.StringIO()):
+            result, _error = explore_native(model, subject.max_memory_mb, None, run, 1)
+        if result is None or result.result != "success":
+            return
+        original = load_model(str(subject.model), str(subject.screen))
+        subject.screen_witnesses = witness_set(subject.model, original, native=(run, model))
+        subject.screen_original = original
 
 
 def _lost_witnesses(subject: Subject, original: Model, model: Model, mutant: Mutant, result: Any,
@@ -324,6 +377,8 @@ def prepare(subject: Subject, search: bool = True) -> None:
     model, else explores its successors with the Python engine, and finds which of its
     reachability witnesses it reaches -- once, before the workers fork.  `search`
     False: only the witnesses (every outcome came from the cache)."""
+    if search and subject.screen is not None and subject.screen_witnesses is None and subject.engine != "python":
+        _screen_witness_set(subject)
     if subject.witnesses is not None and (not search or subject.side is not None or subject.graph is not None):
         return
     original = subject.load_original()
