@@ -248,39 +248,42 @@ def _screen_check(subject: Subject, model: Model) -> tuple[Any, Any]:
     where the original's witnesses on the screening cfg are known and the core takes the
     mutant, else `check_model`'s engine choice (no witnesses evaluated there)."""
     ws = subject.screen_witnesses
-    if ws is None or not ws.names or subject.engine == "python":
+    checked = None if ws is None or not ws.names or subject.engine == "python" else \
+        _native_check(model, subject.max_memory_mb)
+    if checked is None:
         return check_model(model, subject.engine, subject.max_memory_mb), None
+    if checked[0] is None:  # an evaluation error of the core: the Python engine reports it as TLC does
+        return check_model(model, "python", subject.max_memory_mb), None
+    return checked
+
+
+def _native_check(model: Model, max_memory_mb: int) -> tuple[Any, Any] | None:
+    """(result, the run holding the states it stored) of the native core's check, the
+    result None after an evaluation error of the core; None when the core does not take
+    the model."""
     from ..checker.native.search import NativeRun, explore_native
     try:
         run = NativeRun(model)
     except UnsupportedError:
-        return check_model(model, subject.engine, subject.max_memory_mb), None
+        return None
     with contextlib.redirect_stderr(io.StringIO()):
-        result, _error = explore_native(model, subject.max_memory_mb, None, run, 1)
-    if result is None:  # an evaluation error of the core: the Python engine reports it as TLC does
-        return check_model(model, "python", subject.max_memory_mb), None
+        result, _error = explore_native(model, max_memory_mb, None, run, 1)
     return result, run
 
 
 def _screen_witness_set(subject: Subject) -> None:
     """The witnesses the original reaches on the screening cfg (native core), once before
     the workers fork; none where the core does not take the model there."""
-    from ..checker.native.search import NativeRun, explore_native
     assert subject.screen is not None
     subject.screen_witnesses = WitnessSet()
     with tempfile.TemporaryDirectory(prefix="safestate-mutate-") as tmp:
         tla, cfg = materialise(subject, None, Path(tmp), screen=True)
         model = load_model(str(tla), str(cfg))
-        try:
-            run = NativeRun(model)
-        except UnsupportedError:
-            return
-        with contextlib.redirect_stderr(io.StringIO()):
-            result, _error = explore_native(model, subject.max_memory_mb, None, run, 1)
-        if result is None or result.result != "success":
+        checked = _native_check(model, subject.max_memory_mb)
+        if checked is None or checked[0] is None or checked[0].result != "success":
             return
         original = load_model(str(subject.model), str(subject.screen))
-        subject.screen_witnesses = witness_set(subject.model, original, native=(run, model))
+        subject.screen_witnesses = witness_set(subject.model, original, native=(checked[1], model))
         subject.screen_original = original
 
 
