@@ -359,3 +359,27 @@ def test_evidence_fails_a_check_whose_counts_differ_from_tlcs_recorded_figures()
     # a cfg with no figures, or figures of another model's cfg of that name: nothing to compare
     assert tlc_difference(table, Path("models/Other.cfg"), Path("models/Other.tla"), off) is None
     assert tlc_difference(table, Path("models/M_small.cfg"), Path("models/N.tla"), off) is None
+
+
+def test_evidence_coverage_replay_is_a_step_keyed_by_the_flagships_cpp_model_and_adapter() -> None:
+    # The coverage replay is reused on a second run only while nothing it replays changed:
+    # the C++ under test, the binding, the model and its cfgs, the adapter, the scripts.
+    from concurrent.futures import Future
+
+    from safestate.evidence.steps import submit_coverage
+    from safestate.systems.registry import load_all
+
+    class Recorder:
+        def submit(self, name: str, argv: list[str], inputs: list[Path], outputs: list[str]) -> Future[None]:
+            self.name, self.argv, self.inputs, self.outputs = name, argv, set(inputs), outputs
+            return Future()
+
+    flagship = next(s for s in load_all(REPO / "systems") if s.model.stem == "SystemStateManager")
+    rec = Recorder()
+    submit_coverage(rec, REPO, flagship, Path("build/coverage"))  # type: ignore[arg-type]
+    assert rec.argv[:2] == ["bash", "conform/coverage.sh"] and "{out}" in rec.argv
+    assert set(rec.outputs) == {"index.html", "summary.json"}
+    for rel in ("src/transition_table.cpp", "models/SystemStateManager.tla", "models/SystemStateManager.cfg",
+                "conform/coverage.sh", "conform/wrong_variant/CMakeLists.txt", "python/safestate/conform/__main__.py"):
+        assert REPO / rel in rec.inputs, rel
+    assert flagship.conformance and flagship.conformance.adapter in rec.inputs

@@ -107,6 +107,30 @@ def test_second_run_is_served_from_the_cache(planted: Path, capsys: pytest.Captu
     assert [m["status"] for m in first["mutants"]] == [m["status"] for m in second["mutants"]]
 
 
+def test_second_run_with_every_outcome_cached_checks_not_even_the_original(
+        planted: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    import safestate.mutate.classify as classify
+    _, first = _mutate(planted, capsys, "--operator", "boundary")
+    checks: list[str] = []
+
+    def counted(name: str) -> object:
+        real = getattr(classify, name)
+
+        def call(*a: object, **k: object) -> object:
+            checks.append(name)
+            return real(*a, **k)
+        return call
+    for name in ("check_model", "native_labelled"):
+        monkeypatch.setattr(classify, name, counted(name))
+    _, second = _mutate(planted, capsys, "--operator", "boundary")
+    assert checks == [] and second["cached"] == second["classified"] > 0
+    assert (second["score"], second["not_used_invariants"]) == (first["score"], first["not_used_invariants"])
+    # One byte of the original changed: it is checked again (and so is every mutant).
+    planted.write_text(planted.read_text().replace("Safe == inp = out", "Safe == out = inp"))
+    _, third = _mutate(planted, capsys, "--operator", "boundary")
+    assert "check_model" in checks and third["cached"] == 0
+
+
 def test_min_score_fails_below_and_usage_errors_exit_2(planted: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code, _ = _mutate(planted, capsys, "--operator", "unchanged", "--min-score", "0.99")
     assert code == 3

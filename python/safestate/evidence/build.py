@@ -7,8 +7,6 @@ import json
 import os
 import re
 import shutil
-import subprocess
-import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from html import escape
@@ -23,7 +21,8 @@ from .matrix import (INVARIANT_GAP_KINDS, REQUIREMENT_GAP_KINDS, SystemFacts, bu
                      check_verdict, conform_summary, proofs_by_invariant)
 from .render import SystemPage
 from ..checker.cfg import parse_config
-from .steps import (SystemRuns, cpp_files, model_files, submit_conform, submit_ctest, submit_pytest, submit_system,
+from .steps import (SystemRuns, cpp_files, model_files, submit_conform, submit_coverage, submit_ctest, submit_pytest,
+                    submit_system,
                     system_inputs)
 
 REQUIREMENTS_ENV = "SAFESTATE_REQUIREMENTS"
@@ -33,6 +32,7 @@ MUTATION_SCORE = Path("build") / "cpp-mutation" / "score.json"
 # main job has written MUTATION_SCORE.
 STORED_MUTATION_SCORE = Path("conform") / "cpp_mutants" / "score.json"
 COVERAGE_DIR = Path("build") / "coverage"
+COVERAGE_MODEL = "SystemStateManager"  # conform/coverage.sh replays the flagship
 
 
 @dataclass
@@ -148,7 +148,7 @@ def build(opts: Options) -> Result:
                    for f in facts}
     sys_pages = [_system_page(out, f, corpus) for f in facts]
     if coverage is not None:
-        _write_coverage(out, root, coverage, extras)
+        _write_coverage(out, coverage, extras)
     _mutation_score(out, root, extras)
     mutation_gaps = model_mutation.write(out, systems, sys_pages, extras)
     header = {"date": manifest.now(), "tools": manifest.tool_versions(root), "machine": manifest.machine()}
@@ -173,7 +173,7 @@ def build(opts: Options) -> Result:
 
 def _run_steps(runner: Runner, root: Path, systems: list[System], corpus: sources.Corpus,
                opts: Options) -> tuple[list[SystemFacts], list[sources.TestCase], StepResult, StepResult | None,
-                                       subprocess.CompletedProcess[str] | None]:
+                                       StepResult | None]:
     """Every step of the package queued at once (opts.jobs run side by side), then
     waited for: the systems' checks, proofs, conformance and mutants, the tests, and the
     flagship's coverage."""
@@ -189,7 +189,8 @@ def _run_steps(runner: Runner, root: Path, systems: list[System], corpus: source
         rid for s in systems for d in defs[s.name] if d.name in invariants[s.name] for rid in d.requirements}
     selected = _tests_of(corpus, owned, known, elsewhere)
     pyt = submit_pytest(runner, root, [t.name for t in selected if t.kind == "pytest"]) if opts.pytest else None
-    coverage = runner.pool.submit(_coverage, root, opts.log) if opts.coverage else None
+    flagship = next((s for s in systems if s.model.stem == COVERAGE_MODEL), None)
+    coverage = submit_coverage(runner, root, flagship, COVERAGE_DIR) if opts.coverage and flagship else None
     pending = [submit_system(runner, s, conform[s.name]) for s in systems]
     ctest = submit_ctest(runner, root, None if not opts.systems else
                          "^([^/ ]*/)?(" + "|".join(re.escape(t.name) for t in selected if t.kind == "gtest") + ")(/.*)?$")
@@ -437,26 +438,16 @@ def _mutation_score(out: Path, root: Path, extras: list[tuple[str, str]]) -> Non
     extras.append(("C++ mutation survivors", "mutation/index.html"))
 
 
-def _coverage(root: Path, log: Callable[[str], None]) -> subprocess.CompletedProcess[str]:
-    """gcovr branch coverage of the flagship's C++ under its conformance replay
-    (conform/coverage.sh builds the coverage variant in build/coverage)."""
-    log("evidence: coverage: conform/coverage.sh (flagship only: the coverage build and a full replay)")
-    return subprocess.run(["bash", str(root / "conform" / "coverage.sh"), str(root / COVERAGE_DIR)], cwd=root,
-                          capture_output=True, text=True)
-
-
-def _write_coverage(out: Path, root: Path, p: subprocess.CompletedProcess[str], extras: list[tuple[str, str]]) -> None:
-    build_dir = root / COVERAGE_DIR
+def _write_coverage(out: Path, p: StepResult, extras: list[tuple[str, str]]) -> None:
     _write(out, "coverage/summary.txt", p.stdout + p.stderr)
     extras.append((f"gcovr branch coverage of src/ under the flagship's conformance (exit {p.returncode})",
                    "coverage/summary.txt"))
-    if p.returncode == 0:
-        subprocess.run([sys.executable, "-m", "gcovr", "--root", str(root), "--object-directory", str(build_dir),
-                        "--filter", str(root / "src") + "/", "--exclude-unreachable-branches", "--exclude-throw-branches",
-                        "--html-details", str(out / "coverage" / "index.html"), "--json-summary",
-                        str(out / "coverage" / "summary.json")], cwd=root, capture_output=True, text=True)
-        if (out / "coverage" / "index.html").is_file():
-            extras.append(("gcovr HTML report", "coverage/index.html"))
+    for name, title in (("index.html", "gcovr HTML report"), ("summary.json", None)):
+        f = p.files.get(name)
+        if p.returncode == 0 and f is not None:
+            shutil.copyfile(f, out / "coverage" / name)
+            if title:
+                extras.append((title, f"coverage/{name}"))
 
 
 def _screenshots(out: Path, pages: list[SystemPage], log: Callable[[str], None]) -> None:

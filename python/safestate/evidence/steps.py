@@ -186,6 +186,20 @@ def submit_ctest(runner: Runner, root: Path, regex: str | None) -> Future[StepRe
     return runner.submit("ctest", argv, inputs, outputs=["ctest.xml"])
 
 
+def submit_coverage(runner: Runner, root: Path, flagship: System, build: Path) -> Future[StepResult]:
+    """gcovr branch coverage of src/ under the flagship's conformance replay
+    (conform/coverage.sh builds the coverage variant in `build`); keyed, like every step,
+    by what decides it: the C++ and its binding, the flagship's model, cfgs and adapter,
+    the conformance tool and the coverage build's own scripts."""
+    argv = ["bash", "conform/coverage.sh", str(build), "--report", "{out}"]
+    inputs = [*files_under([root / "include", root / "src", root / "bindings", root / "conform" / "coverage.sh",
+                            root / "conform" / "wrong_variant"], (".hpp", ".cpp", ".h", ".txt", ".sh", ".def")),
+              *model_files(flagship.model), *flagship.configs, flagship.manifest, *tool_files("conform")]
+    if flagship.conformance:
+        inputs.append(flagship.conformance.adapter)
+    return runner.submit("coverage", argv, inputs, outputs=["index.html", "summary.json"])
+
+
 def submit_pytest(runner: Runner, root: Path, node_ids: list[str]) -> Future[StepResult] | None:
     if not node_ids:
         return None

@@ -8,6 +8,11 @@ observables, the budgets, and the sources of the checker and of the classifier (
 "version": any change to the checker gives new keys).  Timeouts and errors of the worker
 itself are not cached, so a later run with a larger budget retries them.
 
+The original's own check (the invariants it violates, the witnesses it reaches) is cached
+beside the outcomes under `originals/`, keyed the same way with no mutant applied (and
+the CLI's source, which decides what is checked of it): a re-run whose every outcome is
+cached checks nothing.
+
 Folder: $SAFESTATE_CACHE_DIR/mutate, else $XDG_CACHE_HOME/safestate/mutate, else
 ~/.cache/safestate/mutate.
 """
@@ -17,6 +22,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
@@ -57,20 +63,40 @@ def checker_version() -> str:
     return h.hexdigest()[:16]
 
 
+@dataclass(frozen=True)
+class OriginalRecord:
+    """What checking the original found: the invariants it violates itself (left out of
+    every mutant's cfg) and the witnesses it reaches and does not reach."""
+
+    dropped: tuple[str, ...]
+    witnesses: tuple[str, ...]
+    not_reached: tuple[str, ...]
+
+
 def key(subject: Subject, mutant: Mutant) -> str:
+    return _key(subject, mutant, subject.dropped)
+
+
+def original_key(subject: Subject) -> str:
+    h = hashlib.sha256((_PACKAGE / "mutate" / "cli.py").read_bytes())
+    h.update(_key(subject, None, ()).encode())
+    return h.hexdigest()
+
+
+def _key(subject: Subject, mutant: Mutant | None, dropped: tuple[str, ...]) -> str:
     h = hashlib.sha256()
     for f in sorted(subject.model.parent.iterdir()):
         if f.is_file() and f.suffix in (".tla", ".cfg"):
             data = f.read_bytes()
-            if f.name == mutant.file:
+            if mutant is not None and f.name == mutant.file:
                 data = mutant.apply(data)
             h.update(f.name.encode() + b"\0" + data + b"\0")
-    cfg = without_invariants(subject.cfg.read_text(encoding="utf-8"), subject.dropped)
+    cfg = without_invariants(subject.cfg.read_text(encoding="utf-8"), dropped)
     h.update(b"cfg\0" + subject.model.name.encode() + b"\0" + cfg.encode())
     if subject.screen is None:
         h.update(b"no screen\0")
     else:
-        screen = without_invariants(subject.screen.read_text(encoding="utf-8"), subject.dropped)
+        screen = without_invariants(subject.screen.read_text(encoding="utf-8"), dropped)
         h.update(b"screen\0" + subject.screen.name.encode() + b"\0" + screen.encode())
     p = subject.projection
     h.update(json.dumps([p.inputs, p.observables, subject.engine, subject.timeout, subject.max_pairs]).encode())
@@ -100,10 +126,28 @@ class Cache:
             return
         if out.status == "timeout" and "exceeded" in out.reason:
             return
+        self._write(self.folder / f"{key(subject, mutant)}.json", out.to_json())
+
+    def get_original(self, subject: Subject) -> OriginalRecord | None:
+        if not self.enabled:
+            return None
         try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-            tmp = self.folder / f".{os.getpid()}.tmp"
-            tmp.write_text(json.dumps(out.to_json()), encoding="utf-8")
-            tmp.replace(self.folder / f"{key(subject, mutant)}.json")
+            d = json.loads((self.folder / "originals" / f"{original_key(subject)}.json").read_text(encoding="utf-8"))
+            return OriginalRecord(tuple(d["dropped"]), tuple(d["witnesses"]), tuple(d["not_reached"]))
+        except (OSError, ValueError, TypeError, KeyError):
+            return None
+
+    def put_original(self, subject: Subject, record: OriginalRecord) -> None:
+        if self.enabled:
+            self._write(self.folder / "originals" / f"{original_key(subject)}.json",
+                        {"dropped": list(record.dropped), "witnesses": list(record.witnesses),
+                         "not_reached": list(record.not_reached)})
+
+    def _write(self, path: Path, data: object) -> None:
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            tmp = path.parent / f".{os.getpid()}.tmp"
+            tmp.write_text(json.dumps(data), encoding="utf-8")
+            tmp.replace(path)
         except OSError:
             pass  # a read-only cache folder costs time, never a result

@@ -24,13 +24,14 @@ from typing import Any
 
 from ..errors import SafestateError, closed_stdout_exit, one_line
 from ..tla.errors import TlaError
-from .cache import Cache
+from .cache import Cache, OriginalRecord
 from .classify import Outcome, Subject, classify_all, materialise, prepare
 from .generate import Mutant, dedupe, generate
 from .operators import OPERATORS
 from .product import Projection
 from . import results
 from .report import score, summary, write_text
+from .witness import WitnessSet
 
 USAGE = 2
 BELOW_MIN_SCORE = 3
@@ -244,8 +245,9 @@ def _run(args: argparse.Namespace) -> int:
             print(f"# {m.id}: {m.what}\n{m.toml(_folder(model))}")
         return 0
     subject = Subject(model, cfg, proj, screen=screen, engine=args.engine, timeout=args.timeout)
-    subject.dropped = _original(subject, name)
     cache = Cache(None, enabled=not args.no_cache)
+    known = cache.get_original(subject)
+    subject.dropped = known.dropped if known else _original(subject, name)
     outcomes: dict[str, Outcome] = {}
     todo: list[Mutant] = []
     for m in chosen:
@@ -257,7 +259,12 @@ def _run(args: argparse.Namespace) -> int:
     if todo:
         print(f"mutate: {name}: exploring the original once (its graph) for the difference searches",
               file=sys.stderr, flush=True)
-    prepare(subject, search=bool(todo))  # and which witnesses it reaches, for the report
+    if todo or known is None:
+        prepare(subject, search=bool(todo))  # and which witnesses it reaches, for the report
+        found = subject.witnesses or WitnessSet()
+        cache.put_original(subject, OriginalRecord(subject.dropped, found.names, found.not_reached))
+    else:  # every outcome cached: what the original reaches is cached too, nothing is checked
+        subject.witnesses = WitnessSet(names=known.witnesses, not_reached=known.not_reached)
     progress = _Progress(len(chosen), len(outcomes), len(todo))
 
     def done(m: Mutant, o: Outcome) -> None:
