@@ -149,6 +149,7 @@ class Engine {
   uint32_t fn_set(Node* n, Ctx& c);
   uint32_t rec_set(Node* n, Ctx& c);
   bool member_sd(uint32_t x, Node* sd, Ctx& c);
+  bool items_members(uint32_t x, uint32_t first, uint32_t count, Node* kid, Ctx& c);
   bool not_of_kind(uint32_t x, int loc) const;
 
   // eval_functions.cpp

@@ -183,6 +183,14 @@ bool Engine::not_of_kind(uint32_t x, int loc) const {
   return false;
 }
 
+// Items first .. first + count - 1 of x (a sequence's or set's elements, or a
+// function's range after its domain) are each a member of the set `kid` describes.
+bool Engine::items_members(uint32_t x, uint32_t first, uint32_t count, Node* kid, Ctx& c) {
+  for (uint32_t i = first; i < first + count; ++i)
+    if (!member_sd(st.items(x)[i], kid, c)) return false;
+  return true;
+}
+
 bool Engine::member_sd(uint32_t x, Node* sd, Ctx& c) {
   switch (sd->op) {
     case SD_SET: return st.member(set(sd->kids[0], c), x, sd->loc);
@@ -204,12 +212,7 @@ bool Engine::member_sd(uint32_t x, Node* sd, Ctx& c) {
     case SD_CUP: return member_sd(x, sd->kids[0], c) || member_sd(x, sd->kids[1], c);
     case SD_CAP: return member_sd(x, sd->kids[0], c) && member_sd(x, sd->kids[1], c);
     case SD_DIFF: return member_sd(x, sd->kids[0], c) && !member_sd(x, sd->kids[1], c);
-    case SD_SEQ: {
-      if (st.kind(x) != K_SEQ) return false;
-      for (uint32_t i = 0; i < st.len(x); ++i)
-        if (!member_sd(st.items(x)[i], sd->kids[0], c)) return false;
-      return true;
-    }
+    case SD_SEQ: return st.kind(x) == K_SEQ && items_members(x, 0, st.len(x), sd->kids[0], c);
     case SD_FN: {
       uint32_t dom = set(sd->kids[0], c);
       Kind k = st.kind(x);
@@ -217,17 +220,13 @@ bool Engine::member_sd(uint32_t x, Node* sd, Ctx& c) {
         if (st.len(dom) != st.len(x)) return false;
         for (uint32_t i = 0; i < st.len(x); ++i)
           if (!st.member(dom, Store::mk_int(i + 1, sd->loc), sd->loc)) return false;
-        for (uint32_t i = 0; i < st.len(x); ++i)
-          if (!member_sd(st.items(x)[i], sd->kids[1], c)) return false;
-        return true;
+        return items_members(x, 0, st.len(x), sd->kids[1], c);
       }
       if (k != K_FUN || st.len(x) != st.len(dom)) return false;
       uint32_t n = st.len(x);
       for (uint32_t i = 0; i < n; ++i)  // TLC compares the domains: kinds too
         if (!st.equal_walk(st.items(x)[i], st.items(dom)[i], sd->loc)) return false;
-      for (uint32_t i = 0; i < n; ++i)
-        if (!member_sd(st.items(x)[n + i], sd->kids[1], c)) return false;
-      return true;
+      return items_members(x, n, n, sd->kids[1], c);
     }
     case SD_REC: {
       if (st.kind(x) != K_FUN || st.len(x) != sd->ints.size()) return false;
@@ -240,12 +239,7 @@ bool Engine::member_sd(uint32_t x, Node* sd, Ctx& c) {
       }
       return true;
     }
-    case SD_SUBSET: {
-      if (st.kind(x) != K_SET) return false;
-      for (uint32_t i = 0; i < st.len(x); ++i)
-        if (!member_sd(st.items(x)[i], sd->kids[0], c)) return false;
-      return true;
-    }
+    case SD_SUBSET: return st.kind(x) == K_SET && items_members(x, 0, st.len(x), sd->kids[0], c);
     case SD_PRODUCT: {
       if (st.kind(x) != K_SEQ || st.len(x) != sd->kids.size()) return false;
       for (uint32_t i = 0; i < st.len(x); ++i)

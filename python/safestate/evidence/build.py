@@ -132,8 +132,9 @@ def build(opts: Options) -> Result:
     corpus = sources.Corpus(reqs, [r for p in pages for r in sources.design_rows(p, root, known)], tests,
                             [u for p in pages for u in sources.unreachable_rows(p, root)], reasons)
     runner = Runner(root, cache_dir(root), opts.reuse, opts.log, opts.jobs)
+    figures = tlc_figures(root)
     try:
-        facts, selected, ctest, pyt, coverage = _run_steps(runner, root, systems, corpus, opts)
+        facts, selected, ctest, pyt, coverage = _run_steps(runner, root, systems, corpus, opts, figures)
     finally:
         runner.close()
     elsewhere = _elsewhere(root, systems)
@@ -158,7 +159,7 @@ def build(opts: Options) -> Result:
     if opts.screenshots:
         _screenshots(out, sys_pages, opts.log)
 
-    failures = _failures(facts, ctest, pyt)
+    failures = _failures(facts, ctest, pyt, figures)
     inputs = sorted({f for s in systems for f in system_inputs(s)} | {opts.requirements, *pages}
                     | {root / t.loc.file for t in selected})
     checks = [_check_record(f.runs, root) for f in facts]
@@ -172,7 +173,7 @@ def build(opts: Options) -> Result:
 
 
 def _run_steps(runner: Runner, root: Path, systems: list[System], corpus: sources.Corpus,
-               opts: Options) -> tuple[list[SystemFacts], list[sources.TestCase], StepResult, StepResult | None,
+               opts: Options, figures: dict[str, Any]) -> tuple[list[SystemFacts], list[sources.TestCase], StepResult, StepResult | None,
                                        StepResult | None]:
     """Every step of the package queued at once (opts.jobs run side by side), then
     waited for: the systems' checks, proofs, conformance and mutants, the tests, and the
@@ -180,7 +181,7 @@ def _run_steps(runner: Runner, root: Path, systems: list[System], corpus: source
     known = {r.id for r in corpus.requirements}
     # Longest first, so that the two job slots end together: the conformance runs (the
     # largest state space first), the pytest run and the coverage replay, then the rest.
-    by_size = sorted(systems, key=lambda s: -_states_generated(s))
+    by_size = sorted(systems, key=lambda s: -_states_generated(figures, s))
     conform = {s.name: submit_conform(runner, s, opts.conform_args) for s in by_size}
     defs = {s.name: [d for f in model_files(s.model) for d in sources.model_defs(f, root, known)] for s in systems}
     invariants = {s.name: [e.name for e in parse_config(str(s.ci_config)).invariants] for s in systems}
@@ -266,14 +267,15 @@ def _all_steps(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | No
     return out + [ctest] + ([pyt] if pyt else [])
 
 
-def _failures(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | None) -> list[str]:
+def _failures(facts: list[SystemFacts], ctest: StepResult, pyt: StepResult | None,
+              figures: dict[str, Any]) -> list[str]:
     """Steps that did not succeed: these make `safestate evidence` exit non-zero."""
     out = []
     for f in facts:
         r, n = f.runs, f.runs.system.name
         if not check_ok(r):
             out.append(f"{n}: model check {check_verdict(r)}")
-        elif (differ := _differs_from_tlc(r)):
+        elif (differ := tlc_difference(figures, r.system.ci_config, r.system.model, r.check.json())):
             out.append(f"{n}: model check {differ}")
         if r.prove and r.prove.returncode != (12 if r.system.expected_violation else 0):
             out.append(f"{n}: prove exit {r.prove.returncode}")
@@ -294,20 +296,16 @@ TLC_FIGURES = Path("models") / "expected.json"
 _COUNTS = ("distinct_states", "states_generated", "depth")
 
 
-def _tlc_figures(system: System) -> dict[str, Any]:
-    path = system.root / TLC_FIGURES
+def tlc_figures(root: Path) -> dict[str, Any]:
+    path = root / TLC_FIGURES
     return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
 
 
-def _states_generated(system: System) -> int:
+def _states_generated(figures: dict[str, Any], system: System) -> int:
     """TLC's states generated for the system's CI cfg (0: not recorded): the size of
     the search its check and conformance run make."""
-    want = _tlc_figures(system).get(system.ci_config.stem)
+    want = figures.get(system.ci_config.stem)
     return int(want.get("states_generated", 0)) if isinstance(want, dict) else 0
-
-
-def _differs_from_tlc(r: SystemRuns) -> str | None:
-    return tlc_difference(_tlc_figures(r.system), r.system.ci_config, r.system.model, r.check.json())
 
 
 def tlc_difference(table: dict[str, Any], cfg: Path, model: Path, got: object) -> str | None:
