@@ -31,8 +31,12 @@ from .model import Model, default_config_path, load_model
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("model", help="the .tla module to check")
     p.add_argument("--config", help="the .cfg file (default: MODEL.cfg beside the module)")
-    p.add_argument("--workers", default="1",
-                   help="workers (processes of the Python engine, threads of the native one): a number or 'auto' (default 1)")
+    p.add_argument("--workers", default=None,
+                   help="workers (processes of the Python engine, threads of the native one, shards with --ray): "
+                   "a number or 'auto' (default 1; with --ray 2)")
+    p.add_argument("--ray", metavar="ADDRESS", help="shard the search over Ray actors, each running the Python "
+                   "engine on its shard: 'local' starts a cluster on this machine for the run, else the address "
+                   "of a running cluster (`ray start --head`); docs/distributed.md")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.add_argument("--itf", metavar="FILE", help="write the counterexample as an ITF JSON trace")
     p.add_argument("--graph", metavar="FILE", help="write the whole reachable state graph as JSON")
@@ -52,6 +56,15 @@ def available_cores() -> int:
         return len(os.sched_getaffinity(0)) or 1
     except (AttributeError, OSError):
         return os.cpu_count() or 1
+
+
+def _ray_workers(text: str | None) -> int:
+    """--workers with --ray: shards, one per CPU of the cluster, not capped by this machine's cores."""
+    if text is None:
+        return 2
+    if not text.isdigit() or int(text) < 1:
+        raise UsageError(f"--workers with --ray expects a number of shards (at least 1), not {text!r}")
+    return int(text)
 
 
 def _workers(text: str) -> int:
@@ -88,7 +101,9 @@ def run(args: argparse.Namespace) -> int:
         for option in ("itf", "graph"):
             if getattr(args, option):
                 check_writable_file(getattr(args, option), f"--{option}")
-        args.workers = _workers(str(args.workers))
+        args.workers = _ray_workers(args.workers) if args.ray else _workers(args.workers or "1")
+        if args.ray and args.engine == "native":
+            raise UsageError("--ray runs the Python engine on each shard; --engine native is one process only")
     except UsageError as e:
         return _usage_error(args, e)
     previous = signal.getsignal(signal.SIGTERM)
@@ -105,6 +120,8 @@ def run(args: argparse.Namespace) -> int:
 def _guarded(args: argparse.Namespace, start: float) -> int:
     try:
         return _run(args, start)
+    except UsageError as e:
+        return _usage_error(args, e)
     except TlaError as e:
         return _fail(args, e, start)
     except KeyboardInterrupt:
@@ -205,7 +222,12 @@ def _run(args: argparse.Namespace, start: float) -> int:
     workers = args.workers
     model = load_model(args.model, args.config)
     progress = None if args.json else print_progress
-    if args.engine == "python":
+    if args.ray:
+        from ..distributed.ray_search import RayTarget
+        target = RayTarget(args.ray, args.model, args.config or default_config_path(args.model))
+        result = explore_states(model, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
+                                progress=progress, ray=target)
+    elif args.engine == "python":
         result = explore_states(model, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
                                 progress=progress)
     else:

@@ -41,6 +41,7 @@ from ..tla.errors import EvalError, JavaOverrideError, ModuleEvalError, TlaError
 from ..tla.modules import DefSym
 from ..tla.tlcget import RUNTIME
 from ..tla.values import CONTAINER_TYPES, exact_key, same_kinds
+from ..errors import UsageError
 from .model import Model
 from .deep_stack import call_with_deep_stack, stack_overflow_message
 
@@ -541,23 +542,29 @@ from ..tla.env import UNSET as _UNSET  # noqa: E402
 
 
 def explore_states(model: Model, workers: int = 1, graph: bool = False, max_memory_mb: int | None = None,
-                   progress: Callable[[str], None] | None = None) -> CheckResult:
-    """Explore every reachable state; see the module docstring for the semantics."""
+                   progress: Callable[[str], None] | None = None, ray: Any = None) -> CheckResult:
+    """Explore every reachable state; see the module docstring for the semantics.
+    `ray`: a `distributed.ray_search.RayTarget`, the search sharded over Ray actors."""
     start = time.monotonic()
-    if workers > 1:
+    if workers > 1 or ray is not None:
         reason = _needs_one_worker(model, graph)
+        if reason and ray is not None:
+            raise UsageError(f"--ray: {reason}, which a search sharded over a cluster does not have")
         if reason:
             print(f"safestate check: {reason}; using one worker", file=sys.stderr, flush=True)
             workers = 1
-    if workers > 1:
+    if ray is not None:
+        from ..distributed.ray_search import RayExplorer
+        explorer: Explorer = RayExplorer(model, graph, max_memory_mb, progress, workers, ray)
+    elif workers > 1:
         from .parallel import ParallelExplorer
-        explorer: Explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
+        explorer = ParallelExplorer(model, graph, max_memory_mb, progress, workers)
     else:
         explorer = Explorer(model, graph, max_memory_mb, progress)
     cpu_start = time.process_time()
     RUNNING[:] = [explorer]
     result = call_with_deep_stack(explorer.run)
-    if workers > 1:
+    if workers > 1 or ray is not None:
         result.parallel = explorer.cpu_report(time.process_time() - cpu_start)  # type: ignore[attr-defined]
     if result.result == "success" and model.liveness:
         from .liveness_run import check_liveness

@@ -31,7 +31,6 @@ import atexit
 import functools
 import multiprocessing
 import os
-import pickle
 import shutil
 import signal
 import sys
@@ -46,6 +45,7 @@ from ..tla.values import exact_key
 from . import explore
 from .explore import CheckResult, Explorer
 from .model import Model
+from .shard_link import PipeLink, read_dump
 from .shard_worker import ShardWorker
 
 
@@ -57,7 +57,7 @@ def _worker_main(model: Model, me: int, n: int, folder: str, conn: Connection, m
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
     try:
-        ShardWorker(model, me, n, folder, conn, max_memory_mb).run(initial)
+        ShardWorker(model, me, n, PipeLink(me, n, folder, conn), max_memory_mb).run(initial)
     except BaseException as e:  # a defect: the coordinator searches again with one worker
         try:
             conn.send(("crash", f"{type(e).__name__}: {e}"))
@@ -219,10 +219,7 @@ class ParallelExplorer(Explorer):
         """Rebuild the single-worker search at the start of level `depth` from the
         workers' stored states; `_expand_all` then expands that level sequentially."""
         self._broadcast(conns, "dump")
-        parts = []
-        for (path,) in self._gather(conns):
-            with open(path, "rb") as f:
-                parts.append(pickle.load(f))
+        parts = [self._read_dump(reply) for reply in self._gather(conns)]
         sizes = [0] * (depth + 2)
         for _, levels, _, _, _ in parts:
             for lv in levels:
@@ -249,6 +246,10 @@ class ParallelExplorer(Explorer):
         self.head = offset[depth]
         self.max_level = depth
         self.next_check = total
+
+    @staticmethod
+    def _read_dump(reply: tuple) -> Any:
+        return read_dump(reply)
 
     def _reseen(self, states: list) -> None:
         """The state table of `states` (the workers flag a level where two states are

@@ -19,23 +19,26 @@ coordinator (messages over a pipe):
 Anything a single worker would stop at (a violated invariant or action property,
 a deadlock, an evaluation error) is only flagged: the coordinator then replays the
 level sequentially (`parallel.py`), so counts and traces are those of one worker.
+
+How the batches, the key arrays and the barrier messages travel is the worker's
+`ShardLink` (`shard_link.py`): files in shared memory and a pipe on one machine, Ray's
+object store across machines (`distributed/`).
 """
 
 from __future__ import annotations
 
 import copyreg
-import os
 import pickle
 import time
 from array import array
 from bisect import bisect_left
-from multiprocessing.connection import Connection
 from typing import Any
 
 from ..tla.enum_watch import rss_mb
 from ..tla.env import UNSET
 from ..tla.values import FnValue, same_kinds
 from .model import Model
+from .shard_link import ShardLink
 
 RANK_BITS = 32  # a sort key packs (position in level, rank) into one signed 64-bit int
 
@@ -63,19 +66,20 @@ def _reduce_fn(fv: FnValue) -> tuple:
     return (_fn_with_hash, (fv.d, hash(fv)))
 
 
-# Records and functions travel with their hash: every worker is a fork of the same
-# process (same string-hash seed, same interned model values), so the receiver need not
-# rebuild a frozenset per record to hash it again.  Only for these files: a pickle that
-# outlives the run (the graph cache) must not carry hashes.
+# Records and functions travel with their hash: every worker hashes alike (a fork of the
+# same process, or a Ray actor started with the same PYTHONHASHSEED; model values hash
+# by name), so the receiver need not rebuild a frozenset per record to hash it again.
+# Only between workers: a pickle read by another process (the graph cache, a Ray
+# coordinator) must not carry hashes.
 _DISPATCH = dict(copyreg.dispatch_table)
 _DISPATCH[FnValue] = _reduce_fn
 
 
-def dump_between_workers(obj: Any, path: str) -> None:
-    with open(path, "wb") as f:
-        pickler = pickle.Pickler(f, protocol=pickle.HIGHEST_PROTOCOL)
-        pickler.dispatch_table = _DISPATCH
-        pickler.dump(obj)
+def dump_between_workers(obj: Any, f: Any) -> None:
+    """Pickles `obj` to the binary file `f`, records and functions with their hash."""
+    pickler = pickle.Pickler(f, protocol=pickle.HIGHEST_PROTOCOL)
+    pickler.dispatch_table = _DISPATCH
+    pickler.dump(obj)
 
 
 class _Flag(Exception):
@@ -83,13 +87,11 @@ class _Flag(Exception):
 
 
 class ShardWorker:
-    def __init__(self, model: Model, me: int, n: int, folder: str, conn: Connection,
-                 max_memory_mb: float) -> None:
+    def __init__(self, model: Model, me: int, n: int, link: ShardLink, max_memory_mb: float) -> None:
         self.m = model
         self.me = me
         self.n = n
-        self.folder = folder
-        self.conn = conn
+        self.link = link
         self.keyed = model.view is not None or model.symmetry is not None
         # The shards split the states evenly, so each worker gets an even share of the limit.
         self.memory_share_mb = max_memory_mb / n
@@ -106,14 +108,10 @@ class ShardWorker:
         self.phase_start = time.process_time()
 
     # ---------------------------------------------------------------- helpers
-    def _path(self, kind: str, src: int, dst: int = 0, depth: int | None = None) -> str:
-        return os.path.join(self.folder, f"{kind}{self.depth if depth is None else depth}_{src}_{dst}")
-
     def _barrier(self, flagged: bool, count: int) -> str:
         """Report this phase (with the CPU seconds it took), wait for the coordinator's decision."""
         now = time.process_time()
-        self.conn.send((flagged, self.memory_exceeded, count, now - self.phase_start))
-        decision = self.conn.recv()
+        decision = self.link.barrier((flagged, self.memory_exceeded, count, now - self.phase_start))
         self.phase_start = time.process_time()
         return decision
 
@@ -138,8 +136,8 @@ class ShardWorker:
             fresh: list = []
             flagged, generated = self._expand(fresh)
             decision = self._barrier(flagged, generated)
-            if self.depth > 1:  # every worker has read the previous level's key files
-                os.unlink(self._path("K", self.me, 0, self.depth - 1))
+            if self.depth > 1:  # every worker has read the previous level's key arrays
+                self.link.level_done(self.depth - 1)
             if decision != "merge":
                 return self._stop(decision)
             flagged, new = self._merge(fresh)
@@ -237,20 +235,14 @@ class ShardWorker:
             flagged = True
         for dest, batch in enumerate(outgoing):
             if dest != me:
-                dump_between_workers(list(batch.values()), self._path("B", me, dest))
+                self.link.send_batch(self.depth, dest, list(batch.values()))
         return flagged, generated
 
     def _merge(self, fresh: list) -> tuple[bool, int]:
         """Phase 2: merge the batches sent here, store the new states in BFS order and
         check the invariants on them.  Returns (flagged, number of new states)."""
         m, known, keyed = self.m, self.known, self.keyed
-        for src in range(self.n):
-            if src == self.me:
-                continue
-            path = self._path("B", src, self.me)
-            with open(path, "rb") as f:
-                entries = pickle.load(f)
-            os.unlink(path)
+        for entries in self.link.batches(self.depth):
             for c in entries:
                 key = c[3] if keyed else c[1]
                 old = known.get(key)
@@ -276,8 +268,7 @@ class ShardWorker:
             for i, c in enumerate(ordered):
                 known[c[1]] = first + i
         sort_keys = array("q", [c[0] for c in ordered])
-        with open(self._path("K", self.me), "wb") as f:
-            sort_keys.tofile(f)
+        self.link.send_keys(self.depth, sort_keys)
         new_states = [c[1] for c in ordered]
         self.states.extend(new_states)
         self.ppos.extend(array("q", [c[0] >> RANK_BITS for c in ordered]))
@@ -298,13 +289,7 @@ class ShardWorker:
     def _number(self) -> None:
         """Phase 3: positions of the new states in the next level (their rank among every
         worker's new sort keys); they become the level to expand."""
-        others = []
-        for src in range(self.n):
-            if src != self.me:
-                keys = array("q")
-                with open(self._path("K", src), "rb") as f:
-                    keys.frombytes(f.read())
-                others.append(keys)
+        others = self.link.keys(self.depth)
         sort_keys = self.sort_keys
         if len(others) == 1:
             other = others[0]
@@ -323,7 +308,4 @@ class ShardWorker:
             levels = array("i")
             for lv in range(1, self.depth + 1):
                 levels.extend(array("i", [lv]) * (self.level_start[lv + 1] - self.level_start[lv]))
-            path = self._path("D", self.me)
-            dump_between_workers((self.states[:keep], levels, self.pos[:keep], self.ppos[:keep],
-                                  self.leaf[:keep]), path)
-            self.conn.send((path,))
+            self.link.dump((self.states[:keep], levels, self.pos[:keep], self.ppos[:keep], self.leaf[:keep]))

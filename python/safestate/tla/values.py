@@ -42,9 +42,12 @@ Value = Any
 class ModelValue:
     """A TLC model value (declared in the .cfg as ``a = a`` or ``S = {a, b}``)."""
 
-    __slots__ = ("name", "rank")
+    # Hashed by name, not by identity: processes that each load the model (a search
+    # sharded over machines) must agree on which shard owns a state.
+    __slots__ = ("name", "rank", "_hash")
     name: str
     rank: int
+    _hash: int
     _interned: dict[str, "ModelValue"] = {}
 
     def __new__(cls, name: str) -> "ModelValue":
@@ -53,8 +56,12 @@ class ModelValue:
             mv = object.__new__(cls)
             mv.name = name
             mv.rank = len(cls._interned)
+            mv._hash = hash(("ModelValue", name))
             cls._interned[name] = mv
         return mv
+
+    def __hash__(self) -> int:
+        return self._hash
 
     def __reduce__(self) -> tuple:
         return (ModelValue, (self.name,))

@@ -1,0 +1,171 @@
+"""Issue 33: `safestate check --ray`, the search sharded over Ray actors, gives exactly
+the single worker's result -- verdict, distinct/generated counts, depth, states left,
+the violated property, the error and the counterexample trace -- on a local cluster of
+two workers started here, on the loopback only; a worker killed mid-run still gives it."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import secrets
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from conftest import CORPUS, ERRORS, REPO, load_expected, run_safestate
+from test_checker_parallel import WIDE
+from safestate.checker import explore
+from safestate.checker.explore import CheckResult, explore_states
+from safestate.checker.model import default_config_path, load_model
+from safestate.errors import UsageError
+
+# Ray reads its authentication settings when it is imported: only the fixture imports it.
+if importlib.util.find_spec("ray") is None:
+    pytest.skip("Ray is not installed", allow_module_level=True)
+
+from safestate.distributed.cluster import runtime_env  # noqa: E402
+from safestate.distributed.ray_search import RayTarget  # noqa: E402
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+@pytest.fixture(scope="module")
+def cluster() -> Iterator[str]:
+    """A Ray head with two CPUs on 127.0.0.1 for this module, with token authentication
+    (a fresh token in a 0600 file), joined by this process and the CLI runs it starts
+    (its folder short: Ray's socket paths must fit in 107 bytes)."""
+    temp = tempfile.mkdtemp(prefix="ssray", dir="/tmp")
+    token = Path(temp) / "auth_token"
+    token.write_text(secrets.token_hex(32))
+    token.chmod(0o600)
+    saved = {k: os.environ.get(k) for k in ("RAY_AUTH_MODE", "RAY_AUTH_TOKEN_PATH")}
+    os.environ.update(RAY_AUTH_MODE="token", RAY_AUTH_TOKEN_PATH=str(token))
+    import ray
+    port = _free_port()
+    address = f"127.0.0.1:{port}"
+    exe = Path(sys.executable).with_name("ray")
+    head = subprocess.Popen([str(exe), "start", "--head", "--block", "--node-ip-address", "127.0.0.1",
+                             "--port", str(port), "--num-cpus", "2", "--include-dashboard", "false",
+                             "--disable-usage-stats", "--temp-dir", temp],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        while True:
+            try:
+                ray.init(address=address, runtime_env=runtime_env(), include_dashboard=False, log_to_driver=False,
+                         configure_logging=False)
+                break
+            except Exception:
+                if time.monotonic() > deadline or head.poll() is not None:
+                    raise
+                time.sleep(1)
+        yield address
+    finally:
+        if ray.is_initialized():
+            ray.shutdown()
+        os.killpg(head.pid, signal.SIGTERM)
+        try:
+            head.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            os.killpg(head.pid, signal.SIGKILL)
+        shutil.rmtree(temp, ignore_errors=True)
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+
+
+def _outcome(r: CheckResult) -> tuple:
+    trace = [(s.state, s.action, s.params) for s in r.trace or []]
+    error = (r.error.kind, r.error.message) if r.error else None
+    return (r.result, r.distinct_states, r.states_generated, r.depth, r.left_on_queue, r.violated, error, trace)
+
+
+def _both(address: str, tla: Path, cfg: Path | None = None) -> tuple[tuple, tuple]:
+    cfg_path = str(cfg) if cfg else default_config_path(str(tla))
+    one = explore_states(load_model(str(tla), cfg_path), workers=1)
+    sharded = explore_states(load_model(str(tla), cfg_path), workers=2,
+                             ray=RayTarget(address, str(tla), cfg_path))
+    return _outcome(one), _outcome(sharded)
+
+
+@pytest.mark.parametrize("name", sorted(load_expected(CORPUS)))
+def test_ray_shards_give_the_single_worker_result_on_corpus_spec(cluster: str, name: str) -> None:
+    # SYMMETRY, VIEW, CONSTRAINT, deadlock, violations at depth: as the two-process search.
+    # A spec with liveness properties is refused: they need the whole graph in one process.
+    tla = CORPUS / f"{name}.tla"
+    if load_model(str(tla)).liveness:
+        with pytest.raises(UsageError, match="liveness checking needs the whole state graph"):
+            _both(cluster, tla)
+        return
+    one, sharded = _both(cluster, tla)
+    assert sharded == one
+
+
+@pytest.mark.parametrize("name", ["DomainError", "InvariantErrorInInit", "TypeMismatch"])
+def test_ray_shards_report_the_single_worker_evaluation_error(cluster: str, name: str) -> None:
+    one, sharded = _both(cluster, ERRORS / f"{name}.tla")
+    assert one[0] == "error" and sharded == one
+
+
+def test_ray_shards_give_the_single_worker_counterexample_on_the_flat_press(cluster: str) -> None:
+    # The defective reference: its INV_PRESS counterexample, step by step (Protection's
+    # counts against TLC's: test_ray_cli_counts_and_usage_errors).
+    one, sharded = _both(cluster, REPO / "models" / "HydraulicPressFlat.tla")
+    assert one[0] == "safety failure" and sharded == one
+
+
+def test_ray_a_worker_killed_mid_run_still_gives_the_single_worker_result(
+        cluster: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capfd: pytest.CaptureFixture[str]) -> None:
+    tla = tmp_path / "Wide.tla"
+    tla.write_text(WIDE)
+    (tmp_path / "Wide.cfg").write_text("INIT Init\nNEXT Next\n")
+    one = _outcome(explore_states(load_model(str(tla)), workers=1))
+    monkeypatch.setattr(explore, "PROGRESS_SECONDS", 0.0)
+    from safestate.distributed import ray_search
+    killed: list[int] = []
+    made: list[ray_search.RayExplorer] = []
+    real_init = ray_search.RayExplorer.__init__
+
+    def remember(self: ray_search.RayExplorer, *a: object, **k: object) -> None:
+        real_init(self, *a, **k)  # type: ignore[arg-type]
+        made.append(self)
+    monkeypatch.setattr(ray_search.RayExplorer, "__init__", remember)
+
+    def progress(line: str) -> None:  # at the end of level 5, SIGKILL the second worker once
+        if not killed and line.startswith("Progress(5)") and made and made[0].worker_pids:
+            killed.append(made[0].worker_pids[1])
+            os.kill(killed[0], signal.SIGKILL)
+    r = explore_states(load_model(str(tla)), workers=2, progress=progress,
+                       ray=RayTarget(cluster, str(tla), str(tmp_path / "Wide.cfg")))
+    assert killed, "the search ended before the kill"
+    assert _outcome(r) == one
+    assert "searching again with one worker" in capfd.readouterr().err
+
+
+def test_ray_cli_counts_and_usage_errors(cluster: str) -> None:
+    r = run_safestate("check", "models/Protection.tla", "--ray", cluster, "--workers", "2", "--json", cwd=REPO)
+    assert r.returncode == 0, r.stderr
+    j = json.loads(r.stdout)
+    assert (j["distinct_states"], j["states_generated"], j["depth"]) == (1120, 322561, 4)
+    assert j["parallel"]["workers"] == 2 and len(j["parallel"]["worker_cpu_seconds"]) == 2
+    bad = run_safestate("check", "models/Protection.tla", "--ray", "127.0.0.1:1", cwd=REPO)
+    assert bad.returncode == 2 and "no Ray cluster answers there" in bad.stderr
+    native = run_safestate("check", "models/Protection.tla", "--ray", cluster, "--engine", "native", cwd=REPO)
+    assert native.returncode == 2 and "--engine native" in native.stderr
+    many = run_safestate("check", "models/Protection.tla", "--ray", cluster, "--workers", "3", cwd=REPO)
+    assert many.returncode == 2 and "needs one per worker" in many.stderr
