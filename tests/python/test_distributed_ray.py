@@ -16,7 +16,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -129,15 +129,70 @@ def test_ray_shards_give_the_single_worker_counterexample_on_the_flat_press(clus
     assert one[0] == "safety failure" and sharded == one
 
 
+def _wide(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Path, Path, tuple]:
+    """A spec of many small levels, its cfg, its single-worker outcome; a progress line per level."""
+    tla, cfg = tmp_path / "Wide.tla", tmp_path / "Wide.cfg"
+    tla.write_text(WIDE)
+    cfg.write_text("INIT Init\nNEXT Next\n")
+    monkeypatch.setattr(explore, "PROGRESS_SECONDS", 0.0)
+    return tla, cfg, _outcome(explore_states(load_model(str(tla)), workers=1))
+
+
 def test_ray_a_worker_killed_mid_run_still_gives_the_single_worker_result(
         cluster: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capfd: pytest.CaptureFixture[str]) -> None:
-    tla = tmp_path / "Wide.tla"
-    tla.write_text(WIDE)
-    (tmp_path / "Wide.cfg").write_text("INIT Init\nNEXT Next\n")
-    one = _outcome(explore_states(load_model(str(tla)), workers=1))
-    monkeypatch.setattr(explore, "PROGRESS_SECONDS", 0.0)
-    from safestate.distributed import ray_search
+    tla, cfg, one = _wide(tmp_path, monkeypatch)
+    made = _remember_explorers(monkeypatch)
     killed: list[int] = []
+    r = explore_states(load_model(str(tla)), workers=2, progress=_kill_at_level(5, made, killed),
+                       ray=RayTarget(cluster, str(tla), str(cfg)))
+    assert killed, "the search ended before the kill"
+    assert _outcome(r) == one
+    assert "searching again with one worker" in capfd.readouterr().err
+
+
+def _kill_at_level(level: int, made: list, killed: list[int]) -> Callable[[str], None]:
+    def progress(line: str) -> None:  # at the end of `level`, SIGKILL the second worker once
+        if not killed and line.startswith(f"Progress({level})") and made and made[0].worker_pids:
+            killed.append(made[0].worker_pids[1])
+            os.kill(killed[0], signal.SIGKILL)
+    return progress
+
+
+def test_ray_a_killed_worker_is_replaced_from_the_last_checkpoint(
+        cluster: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capfd: pytest.CaptureFixture[str]) -> None:
+    tla, cfg, one = _wide(tmp_path, monkeypatch)
+    made = _remember_explorers(monkeypatch)
+    killed: list[int] = []
+    target = RayTarget(cluster, str(tla), str(cfg), str(tmp_path / "ckpt"), 0.0)
+    (tmp_path / "ckpt").mkdir()
+    r = explore_states(load_model(str(tla)), workers=2, progress=_kill_at_level(5, made, killed), ray=target)
+    assert killed and _outcome(r) == one
+    err = capfd.readouterr().err
+    assert "new workers go on from the checkpoint of level" in err and "with one worker" not in err
+
+
+def test_ray_a_stopped_search_resumes_from_its_checkpoint(
+        cluster: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    tla, cfg, one = _wide(tmp_path, monkeypatch)
+    (tmp_path / "ckpt").mkdir()
+
+    def stop(line: str) -> None:  # the whole search stopped at the end of level 8
+        if line.startswith("Progress(8)"):
+            raise KeyboardInterrupt
+    with pytest.raises(KeyboardInterrupt):
+        explore_states(load_model(str(tla)), workers=2, progress=stop,
+                       ray=RayTarget(cluster, str(tla), str(cfg), str(tmp_path / "ckpt"), 0.0))
+    assert json.loads((tmp_path / "ckpt" / "search.json").read_text())["depth"] >= 7
+    resumed = explore_states(load_model(str(tla)), workers=2,
+                             ray=RayTarget(cluster, str(tla), str(cfg), str(tmp_path / "ckpt"), 0.0, resume=True))
+    assert _outcome(resumed) == one
+    with pytest.raises(UsageError, match="no checkpoint of this model"):  # another --workers
+        explore_states(load_model(str(tla)), workers=1,
+                       ray=RayTarget(cluster, str(tla), str(cfg), str(tmp_path / "ckpt"), 0.0, resume=True))
+
+
+def _remember_explorers(monkeypatch: pytest.MonkeyPatch) -> list:
+    from safestate.distributed import ray_search
     made: list[ray_search.RayExplorer] = []
     real_init = ray_search.RayExplorer.__init__
 
@@ -145,16 +200,7 @@ def test_ray_a_worker_killed_mid_run_still_gives_the_single_worker_result(
         real_init(self, *a, **k)  # type: ignore[arg-type]
         made.append(self)
     monkeypatch.setattr(ray_search.RayExplorer, "__init__", remember)
-
-    def progress(line: str) -> None:  # at the end of level 5, SIGKILL the second worker once
-        if not killed and line.startswith("Progress(5)") and made and made[0].worker_pids:
-            killed.append(made[0].worker_pids[1])
-            os.kill(killed[0], signal.SIGKILL)
-    r = explore_states(load_model(str(tla)), workers=2, progress=progress,
-                       ray=RayTarget(cluster, str(tla), str(tmp_path / "Wide.cfg")))
-    assert killed, "the search ended before the kill"
-    assert _outcome(r) == one
-    assert "searching again with one worker" in capfd.readouterr().err
+    return made
 
 
 def test_ray_cli_counts_and_usage_errors(cluster: str) -> None:
@@ -169,3 +215,5 @@ def test_ray_cli_counts_and_usage_errors(cluster: str) -> None:
     assert native.returncode == 2 and "--engine native" in native.stderr
     many = run_safestate("check", "models/Protection.tla", "--ray", cluster, "--workers", "3", cwd=REPO)
     assert many.returncode == 2 and "needs one per worker" in many.stderr
+    alone = run_safestate("check", "models/Protection.tla", "--checkpoint", "build/ckpt", cwd=REPO)
+    assert alone.returncode == 2 and "give --ray too" in alone.stderr

@@ -37,6 +37,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--ray", metavar="ADDRESS", help="shard the search over Ray actors, each running the Python "
                    "engine on its shard: 'local' starts a cluster on this machine for the run, else the address "
                    "of a running cluster (`ray start --head`); docs/distributed.md")
+    p.add_argument("--checkpoint", metavar="DIR", help="with --ray: the shards keep a checkpoint in DIR (a folder "
+                   "every machine reaches) at the end of a level, at most every --checkpoint-every seconds; "
+                   "failed workers are replaced from it")
+    p.add_argument("--checkpoint-every", type=whole_number(0), default=60, metavar="S",
+                   help="seconds between checkpoints (default 60; 0: every level)")
+    p.add_argument("--resume", metavar="DIR", help="with --ray: go on from the last checkpoint in DIR (the same "
+                   "model, cfg and --workers), and keep checkpointing there")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.add_argument("--itf", metavar="FILE", help="write the counterexample as an ITF JSON trace")
     p.add_argument("--graph", metavar="FILE", help="write the whole reachable state graph as JSON")
@@ -102,6 +109,15 @@ def run(args: argparse.Namespace) -> int:
             if getattr(args, option):
                 check_writable_file(getattr(args, option), f"--{option}")
         args.workers = _ray_workers(args.workers) if args.ray else _workers(args.workers or "1")
+        if (args.checkpoint or args.resume) and not args.ray:
+            raise UsageError("--checkpoint and --resume are for the search on Ray: give --ray too")
+        if args.checkpoint and args.resume:
+            raise UsageError("--resume DIR keeps checkpointing in DIR: give --checkpoint or --resume, not both")
+        if args.checkpoint:
+            try:
+                os.makedirs(args.checkpoint, exist_ok=True)
+            except OSError as e:
+                raise UsageError(f"--checkpoint {args.checkpoint}: cannot make the folder ({e.strerror})") from None
         if args.ray and args.engine == "native":
             raise UsageError("--ray runs the Python engine on each shard; --engine native is one process only")
     except UsageError as e:
@@ -224,7 +240,9 @@ def _run(args: argparse.Namespace, start: float) -> int:
     progress = None if args.json else print_progress
     if args.ray:
         from ..distributed.ray_search import RayTarget
-        target = RayTarget(args.ray, args.model, args.config or default_config_path(args.model))
+        folder = args.resume or args.checkpoint
+        target = RayTarget(args.ray, args.model, args.config or default_config_path(args.model), folder,
+                           float(args.checkpoint_every), bool(args.resume))
         result = explore_states(model, workers=workers, graph=bool(args.graph), max_memory_mb=args.max_memory,
                                 progress=progress, ray=target)
     elif args.engine == "python":

@@ -171,11 +171,14 @@ class ParallelExplorer(Explorer):
         for c in conns:
             c.send(decision)
 
-    def _coordinate(self, conns: list[Connection]) -> None:
-        distinct, depth = len(self.states), 1
+    def _coordinate(self, conns: list[Connection], distinct: int = 0, depth: int = 1) -> None:
+        """The barriers of the search from level `depth` with `distinct` states found
+        (the initial states by default; a checkpoint's counts when resumed)."""
+        distinct = distinct or len(self.states)
         while True:
             self.distinct_so_far = distinct  # for an interrupted search's report
             expanded = self._gather(conns)  # phase 1: (flagged, memory exceeded, generated, CPU s)
+            self._level_started(depth, distinct)
             if self._memory_exceeded(conns, expanded, distinct, depth):
                 return
             if any(r[0] for r in expanded):
@@ -195,8 +198,16 @@ class ParallelExplorer(Explorer):
             distinct += new
             depth += 1
             self.max_level = depth
-            self._broadcast(conns, "number")
+            self._broadcast(conns, self._number_decision())
             self._level_progress(depth, distinct, new)
+
+    def _number_decision(self) -> str:
+        """The decision that ends a level: "number", or "checkpoint" (number, then keep a
+        checkpoint: the search on Ray)."""
+        return "number"
+
+    def _level_started(self, depth: int, distinct: int) -> None:
+        """Every worker has started expanding level `depth` (after any checkpoint it kept)."""
 
     def _level_progress(self, depth: int, distinct: int, queued: int) -> None:
         now = time.monotonic()

@@ -40,6 +40,9 @@ class ShardLink(Protocol):
     def dump(self, stored: tuple) -> None:
         """Sends the stored states (for the coordinator's sequential replay)."""
 
+    def save(self, depth: int, saved: tuple) -> None:
+        """Keeps the shard's checkpoint at the start of level `depth` (`ShardWorker.saved`)."""
+
 
 class PipeLink:
     """Files in a shared folder (RAM under /dev/shm) and a pipe to the coordinator; the
@@ -93,6 +96,10 @@ class PipeLink:
         with open(path, "wb") as f:
             dump_between_workers(stored, f)
         self.conn.send((path,))
+
+
+    def save(self, depth: int, saved: tuple) -> None:
+        raise RuntimeError("the search on one machine keeps no checkpoints")
 
 
 def read_dump(reply: tuple) -> Any:

@@ -121,9 +121,13 @@ class ShardWorker:
             raise _Flag()
 
     # ---------------------------------------------------------------- the search
-    def run(self, initial: list[tuple]) -> None:
+    def run(self, initial: list[tuple], saved: tuple | None = None) -> None:
+        """The search from the initial states, or from a checkpoint (`saved()` of an
+        earlier worker with the same shard, at the end of a level)."""
         m = self.m
-        for p, st in enumerate(initial):
+        if saved is not None:
+            (self.depth, self.known, self.states, self.level_start, self.pos, self.ppos, self.leaf) = saved
+        for p, st in enumerate(initial if saved is None else []):
             key = m.key(st) if self.keyed else st
             if hash(key) % self.n == self.me:
                 self.known[key] = len(self.states)
@@ -131,7 +135,8 @@ class ShardWorker:
                 self.pos.append(p)
                 self.ppos.append(-1)
                 self.leaf.append(-1)
-        self.level_start.append(len(self.states))
+        if saved is None:
+            self.level_start.append(len(self.states))
         while True:
             fresh: list = []
             flagged, generated = self._expand(fresh)
@@ -142,9 +147,15 @@ class ShardWorker:
                 return self._stop(decision)
             flagged, new = self._merge(fresh)
             decision = self._barrier(flagged, new)
-            if decision != "number":
+            if decision not in ("number", "checkpoint"):
                 return self._stop(decision)
             self._number()
+            if decision == "checkpoint":
+                self.link.save(self.depth, self.saved())
+
+    def saved(self) -> tuple:
+        """Everything the shard holds between two levels: what `run` resumes from."""
+        return (self.depth, self.known, self.states, self.level_start, self.pos, self.ppos, self.leaf)
 
     def _expand(self, fresh: list) -> tuple[bool, int]:
         """Phase 1: expand the level's states; `fresh` gets the keys of the new owned

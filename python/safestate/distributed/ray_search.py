@@ -12,9 +12,13 @@ again with one worker, as `parallel.py` does, so the result is the same.
 
 from __future__ import annotations
 
+import glob
+import hashlib
+import json
 import os
 import pickle
 import sys
+import time
 from dataclasses import dataclass
 from typing import Any, Callable
 
@@ -23,16 +27,25 @@ from ..checker.model import Model
 from ..checker.parallel import ParallelExplorer, _Fallback
 from ..errors import UsageError
 from .cluster import connect, one_line
-from .ray_link import ShardActor
+from .ray_link import ShardActor, checkpoint_file
 
 
 @dataclass(frozen=True)
 class RayTarget:
-    """Where to search (`--ray`), and the files each worker loads the model from."""
+    """Where to search (`--ray`), the files each worker loads the model from, and where
+    the shards keep their checkpoints (`--checkpoint DIR`, every `checkpoint_seconds`;
+    `resume`: go on from the checkpoint there)."""
 
     address: str
     model_path: str
     cfg_path: str
+    checkpoints: str | None = None
+    checkpoint_seconds: float = 60.0
+    resume: bool = False
+
+
+MANIFEST = "search.json"
+RESTARTS = 3  # failed workers replaced from the last checkpoint at most this often
 
 
 class _Router:
@@ -88,6 +101,11 @@ class RayExplorer(ParallelExplorer):
         super().__init__(model, graph, max_memory_mb, progress, workers)
         self.target = target
         self.worker_pids: list[int] = []
+        self.actors: list[Any] = []
+        self.files: tuple[dict[str, bytes], str, str] = ({}, "", "")
+        self.blob = b""
+        self.last_checkpoint = 0.0
+        self.checkpoint_pending = False
         # In the caller's thread (the search runs on another): Ray installs its signal
         # handlers there.
         self.ray, self.owned = connect(target.address, workers)
@@ -98,36 +116,109 @@ class RayExplorer(ParallelExplorer):
                              f"needs one per worker")
 
     def _expand_all(self) -> None:
-        ray = self.ray
-        actors: list[Any] = []
         try:
             if not self.states:
                 return
-            files, main, cfg = model_texts(self.m, self.target)
             initial = list(self.states)
             self._init_generated = self.generated
-            blob = pickle.dumps(initial, protocol=pickle.HIGHEST_PROTOCOL)
-            actor_class = ray.remote(num_cpus=1, max_concurrency=2)(ShardActor)
-            actors = [actor_class.remote(files, main, cfg, me, self.workers, self.max_memory_mb, blob)
-                      for me in range(self.workers)]
-            self.worker_pids = ray.get([a.pid.remote() for a in actors])
-            router = _Router(self.workers)
-            conns = [RayConn(ray, a, me, router) for me, a in enumerate(actors)]
-            try:
-                self._coordinate(conns)  # type: ignore[arg-type]
-            except _Fallback as why:
-                print(f"safestate check: the search on Ray failed ({why}); searching again with one worker",
-                      file=sys.stderr, flush=True)
-                self._restart_sequential(initial)
-        finally:
-            for a in actors:
+            self.files = model_texts(self.m, self.target)
+            self.blob = pickle.dumps(initial, protocol=pickle.HIGHEST_PROTOCOL)
+            start = self._resume_point() if self.target.resume else None
+            for attempt in range(RESTARTS + 1):
+                conns = self._start_workers(start)
                 try:
-                    ray.kill(a)
-                except Exception:  # already gone
-                    pass
+                    self._coordinate(conns, *(start[:2] if start else ()))  # type: ignore[arg-type]
+                    break
+                except _Fallback as why:
+                    self._stop_workers()
+                    start = self._last_checkpoint() if attempt < RESTARTS else None
+                    if start is None:
+                        print(f"safestate check: the search on Ray failed ({why}); searching again with one "
+                              f"worker", file=sys.stderr, flush=True)
+                        self._restart_sequential(initial)
+                        break
+                    print(f"safestate check: the search on Ray failed ({why}); new workers go on from the "
+                          f"checkpoint of level {start[1]}", file=sys.stderr, flush=True)
+        finally:
+            self._stop_workers()
             self._disconnect()
         if self.outcome is None and self.head < len(self.states):
             Explorer._expand_all(self)  # the level replayed sequentially, and any after it
+
+    def _start_workers(self, start: tuple[int, int, int] | None) -> list[RayConn]:
+        """New actors, from the initial states or from the checkpoint (distinct, depth, generated)."""
+        files, main, cfg = self.files
+        actor_class = self.ray.remote(num_cpus=1, max_concurrency=2)(ShardActor)
+        if start is not None:
+            self.generated, self.max_level = start[2], start[1]
+        self.actors = [actor_class.remote(files, main, cfg, me, self.workers, self.max_memory_mb, self.blob,
+                                          self.target.checkpoints, start[1] if start else 0)
+                       for me in range(self.workers)]
+        self.worker_pids = self.ray.get([a.pid.remote() for a in self.actors])
+        self.last_checkpoint = time.monotonic()
+        router = _Router(self.workers)
+        return [RayConn(self.ray, a, me, router) for me, a in enumerate(self.actors)]
+
+    def _stop_workers(self) -> None:
+        for a in self.actors:
+            try:
+                self.ray.kill(a)
+            except Exception:  # already gone
+                pass
+        self.actors = []
+
+    # ---------------------------------------------------------------- checkpoints
+    def _number_decision(self) -> str:
+        if self.target.checkpoints and time.monotonic() - self.last_checkpoint >= self.target.checkpoint_seconds:
+            self.last_checkpoint = time.monotonic()
+            self.checkpoint_pending = True
+            return "checkpoint"
+        return "number"
+
+    def _level_started(self, depth: int, distinct: int) -> None:
+        # Each worker saved its shard before expanding this level: the checkpoint is whole.
+        folder = self.target.checkpoints
+        if not (self.checkpoint_pending and folder):
+            return
+        self.checkpoint_pending = False
+        data = {"identity": self._identity(), "workers": self.workers, "depth": depth, "distinct": distinct,
+                "generated": self.generated}
+        path = os.path.join(folder, MANIFEST)
+        with open(path + ".tmp", "w", encoding="utf-8") as f:
+            json.dump(data, f)
+        os.replace(path + ".tmp", path)
+        for me in range(self.workers):  # the older levels' files: this one is whole now
+            for old in glob.glob(checkpoint_file(folder, me, 0).replace("-level-0", "-level-*")):
+                if old != checkpoint_file(folder, me, depth):
+                    os.remove(old)
+
+    def _identity(self) -> str:
+        """What a checkpoint belongs to: the model's files and cfg, as the workers load them."""
+        files, main, cfg = self.files
+        h = hashlib.sha256(f"{main}\0{cfg}\0".encode())
+        for name in sorted(files):
+            h.update(name.encode() + b"\0" + files[name] + b"\0")
+        return h.hexdigest()
+
+    def _last_checkpoint(self) -> tuple[int, int, int] | None:
+        """(distinct, depth, generated) of the last whole checkpoint of this search, or None."""
+        if not self.target.checkpoints:
+            return None
+        try:
+            with open(os.path.join(self.target.checkpoints, MANIFEST), encoding="utf-8") as f:
+                d = json.load(f)
+        except (OSError, ValueError):
+            return None
+        if d.get("identity") != self._identity() or d.get("workers") != self.workers:
+            return None
+        return int(d["distinct"]), int(d["depth"]), int(d["generated"])
+
+    def _resume_point(self) -> tuple[int, int, int]:
+        start = self._last_checkpoint()
+        if start is None:
+            raise UsageError(f"--resume {self.target.checkpoints}: no checkpoint of this model and cfg with "
+                             f"--workers {self.workers} there")
+        return start
 
     def _disconnect(self) -> None:
         if self.owned:
