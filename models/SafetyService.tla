@@ -638,6 +638,10 @@ Witness_Resent ==              \* INV_SAF_SET_STATE_WITH_CONTROL: a re-send whil
     ~(out_set_state = "EMERGENCY" /\ control = "HELD" /\ control_age > 0)
 Witness_ContestAlarm ==        \* INV_SAF_CONTEST
     ~(alarm /\ control = "REFUSED" /\ estop = "SET")
+Witness_ReleasedUnheld ==      \* INV_SAF_OPERATIONAL_BY_HOLDER: a release of control lost before, no OPERATIONAL
+    ~(out_request = "RELEASE" /\ out_set_state = "NONE" /\ h_told)
+Witness_HeldAtRecheck ==       \* INV_SAF_HELD_RECHECKED: held control at the REPORTDATATIMEOUT bound
+    ~(control = "HELD" /\ h_held_age = ReportDataTimeoutCycles)
 Witness_AskedAfterRefusal ==   \* INV_SAF_ASKS_AGAIN: the bound after a refusal is reached
     ~(h_ask_refused /\ h_ask_age = MessageIntervalCycles)
 Witness_AskedAfterSilence ==   \* INV_SAF_ASKS_AGAIN: ... and after an unanswered request
