@@ -590,7 +590,8 @@ INV_SAF_CONTROL_ANSWERED == h_heeded
 \* Request Control goes out at the latest REPORTDATATIMEOUT + 1 cycles after
 \* the grant or the last Report Control naming us, and not before
 \* REPORTDATATIMEOUT unless another holder was reported (believing too long
-\* hides a lost control; asking early drops a due re-send).
+\* hides a lost control; doubting early costs a control round trip, during
+\* which a due re-send waits for the grant).
 INV_SAF_HELD_RECHECKED ==
     /\ control = "HELD" => h_held_age <= ReportDataTimeoutCycles
     /\ ~h_recheck_early
