@@ -97,6 +97,12 @@ VARIABLES inbox, ever_faulted,
     h_due_age,  \* cycles it has waited
     h_ask_age,  \* cycles without Request Control while control is wanted and not held
     h_ask_refused, \* ... counted from a genuine refusal (else from the last request)
+    h_released_holding, \* this cycle released control the service held before it
+    h_heeded,   \* every access-control message of this cycle was acted on (UCA-2, UCA-6)
+    h_held_age, \* cycles control has been held since the grant or the last Report Control(us)
+    h_recheck_early, \* held control asked for again before REPORTDATATIMEOUT without cause
+    h_set_age,  \* cycles since the last Set Subsystem State(EMERGENCY) to a subsystem held, to Mi
+    h_resent_early, \* a re-send of it went out sooner than MESSAGEINTERVAL after the previous one
     shadow      \* the service after this cycle without the forged datagrams
 
 svcVars == <<state, estop, estop_age, health, health_age,
@@ -104,7 +110,8 @@ svcVars == <<state, estop, estop_age, health, health_age,
              alarm, resend, set_age>>
 histVars == <<ever_faulted, h_estop, h_silence, h_health, h_health_age,
               h_told, h_refused, h_owed, h_held_sent, h_due, h_due_age,
-              h_ask_age, h_ask_refused, shadow>>
+              h_ask_age, h_ask_refused, h_released_holding, h_heeded, h_held_age,
+              h_recheck_early, h_set_age, h_resent_early, shadow>>
 vars == <<svcVars, inbox, histVars>>
 
 \* The checker and TLC identify states by the service and the history; the
@@ -321,6 +328,19 @@ Cycle(in) ==
         due == /\ s.control = "HELD" /\ s.state \in RaisingStates
                /\ s.out_set_state # "EMERGENCY"
                /\ (h_due \/ in.subsys = "OPERATIONAL")
+        \* The genuine access-control message of this cycle, read against what
+        \* the service had asked before it (UCA-2, UCA-6): a Confirm Control
+        \* answering its pending Request Control, or a Report Control naming
+        \* another holder while it held control, while EMERGENCY is raised.
+        raising == s.state \in RaisingStates
+        granted == control = "REQUESTED" /\ in.control = "ACCEPTED"
+        refusal == control = "REQUESTED" /\ in.control = "REFUSED"
+        taken == control = "HELD" /\ in.control = "OTHER"
+        heeded == /\ (raising /\ granted) => s.out_set_state = "EMERGENCY"
+                  /\ (raising /\ refusal) => s.alarm
+                  /\ (raising /\ taken) => (s.alarm /\ s.out_request = "REQUEST")
+                  \* the alarm of a lost contest falls only on a grant
+                  /\ (raising /\ alarm /\ ~s.alarm) => (granted \/ in.control = "US")
     IN
     /\ SetSvc(s)
     /\ inbox' = in
@@ -350,6 +370,24 @@ Cycle(in) ==
                     ELSE IF h_ask_age <= ControlAgeMax THEN h_ask_age + 1 ELSE h_ask_age
     /\ h_ask_refused' = IF asked THEN FALSE
                         ELSE IF in.control = "REFUSED" THEN TRUE ELSE h_ask_refused
+    /\ h_released_holding' = (control = "HELD" /\ s.out_request = "RELEASE")
+    /\ h_heeded' = heeded
+    /\ h_held_age' = IF s.control # "HELD" \/ control # "HELD" \/ in.control = "US" THEN 0
+                     ELSE IF h_held_age <= ReportDataTimeoutCycles THEN h_held_age + 1
+                     ELSE h_held_age
+    \* Request Control while control was held, with no report of another
+    \* holder, before REPORTDATATIMEOUT without a Report Control(us).
+    /\ h_recheck_early' = /\ control = "HELD" /\ s.out_request = "REQUEST"
+                          /\ in.control # "OTHER" /\ h_held_age < ReportDataTimeoutCycles
+    /\ h_set_age' = IF s.out_set_state = "EMERGENCY" THEN 0
+                    ELSE IF s.control # "HELD" THEN MessageIntervalCycles
+                    ELSE IF h_set_age < MessageIntervalCycles THEN h_set_age + 1 ELSE h_set_age
+    \* Set Subsystem State(EMERGENCY) again to a subsystem held since before
+    \* this cycle (a re-send, not a grant) with fewer than MESSAGEINTERVAL
+    \* cycles since the previous one.
+    /\ h_resent_early' = /\ control = "HELD" /\ s.control = "HELD"
+                         /\ s.out_set_state = "EMERGENCY"
+                         /\ h_set_age + 1 < MessageIntervalCycles
     /\ shadow' = IF in.forged = "NONE" THEN s ELSE AfterCycle(Honest(in))
 
 \* Construction: PAIRING, nothing received yet, control not yet requested
@@ -373,6 +411,9 @@ Init ==
     /\ h_told = FALSE /\ h_refused = FALSE /\ h_owed = FALSE /\ h_held_sent = FALSE
     /\ h_due = FALSE /\ h_due_age = 0
     /\ h_ask_age = 0 /\ h_ask_refused = FALSE
+    /\ h_released_holding = FALSE /\ h_heeded = TRUE
+    /\ h_held_age = 0 /\ h_recheck_early = FALSE
+    /\ h_set_age = MessageIntervalCycles /\ h_resent_early = FALSE
     /\ shadow = SvcInit
 
 Next == \E in \in Inboxes : Cycle(in)
@@ -409,6 +450,9 @@ SvcTypeOK ==
     /\ h_told \in BOOLEAN /\ h_refused \in BOOLEAN /\ h_owed \in BOOLEAN /\ h_held_sent \in BOOLEAN
     /\ h_due \in BOOLEAN /\ h_due_age \in 0..MessageIntervalCycles
     /\ h_ask_age \in 0..(ControlAgeMax + 1) /\ h_ask_refused \in BOOLEAN
+    /\ h_released_holding \in BOOLEAN /\ h_heeded \in BOOLEAN
+    /\ h_held_age \in 0..(ReportDataTimeoutCycles + 1) /\ h_recheck_early \in BOOLEAN
+    /\ h_set_age \in 0..MessageIntervalCycles /\ h_resent_early \in BOOLEAN
     /\ shadow \in SvcRecords
 
 TypeOK == SvcTypeOK /\ inbox \in Inboxes
@@ -524,6 +568,41 @@ INV_SAF_CONTEST ==
 INV_SAF_ASKS_AGAIN ==
     h_ask_age <= IF h_ask_refused THEN MessageIntervalCycles ELSE ReportDataTimeoutCycles
 
+\* UCA-7: Set Subsystem State(OPERATIONAL) is sent by the holder of control
+\* when it releases control, and by nobody else: from a service that does
+\* not hold control it would override the EMERGENCY of the component that
+\* does (where the subsystem does not enforce its access control), and a
+\* holder that releases without it leaves the subsystem in an EMERGENCY no
+\* controller will end.  Bound: in the cycle of the release.
+INV_SAF_OPERATIONAL_BY_HOLDER ==
+    out_set_state = "OPERATIONAL" <=> h_released_holding
+
+\* UCA-2, UCA-6: every access-control message about our control is acted on
+\* in its cycle while EMERGENCY is raised: a Confirm Control(ACCEPTED)
+\* answering our pending Request Control is answered by Set Subsystem
+\* State(EMERGENCY), a Confirm Control(REFUSED) by the alarm, a Report
+\* Control naming another holder while we hold control by the alarm and a
+\* new Request Control; and the alarm falls only on a grant (a Confirm
+\* Control we did not ask for, or none, leaves the contest lost).
+INV_SAF_CONTROL_ANSWERED == h_heeded
+
+\* UCA-2: control believed held is checked against the access control: a
+\* Request Control goes out at the latest REPORTDATATIMEOUT + 1 cycles after
+\* the grant or the last Report Control naming us, and not before
+\* REPORTDATATIMEOUT unless another holder was reported (believing too long
+\* hides a lost control; doubting early costs a control round trip, during
+\* which a due re-send waits for the grant).
+INV_SAF_HELD_RECHECKED ==
+    /\ control = "HELD" => h_held_age <= ReportDataTimeoutCycles
+    /\ ~h_recheck_early
+
+\* UCA-8: Set Subsystem State(EMERGENCY) repeated too soon.  MESSAGEINTERVAL
+\* is the seed's pace for messages to the subsystem: a re-send to a
+\* subsystem we hold goes out no sooner than MessageIntervalCycles after the
+\* previous Set Subsystem State(EMERGENCY) (INV_SAF_RESEND_BOUNDED is the
+\* other side: no later than that once due).
+INV_SAF_RESEND_PACED == ~h_resent_early
+
 -----------------------------------------------------------------------------
 (* Reachability witnesses (non-vacuity): each Witness_X is the negation of *)
 (* a situation an invariant speaks about; tests/python/test_saf_model.py   *)
@@ -534,6 +613,8 @@ Witness_TimeoutEmergency ==    \* INV_SAF_EMERGENCY, B
     ~(estop = "CLEAR" /\ estop_age >= EstopTimeoutCycles /\ state = "EMERGENCY")
 Witness_HealthFatal ==         \* INV_SAF_EMERGENCY, C by health
     ~(health = "FATAL" /\ estop = "CLEAR" /\ state = "EMERGENCY")
+Witness_HealthError ==         \* INV_SAF_MSG_EMERGENCY, C by an Error health summary
+    ~(health = "ERROR" /\ estop = "CLEAR" /\ state = "EMERGENCY")
 Witness_HealthStale ==         \* INV_SAF_EMERGENCY, REPORTDATATIMEOUT
     ~(health_age > ReportDataTimeoutCycles /\ estop = "CLEAR" /\ state = "EMERGENCY")
 Witness_Released ==            \* INV_SAF_RELEASE_ONLY_OPERATIONAL, D with control held
@@ -558,6 +639,10 @@ Witness_Resent ==              \* INV_SAF_SET_STATE_WITH_CONTROL: a re-send whil
     ~(out_set_state = "EMERGENCY" /\ control = "HELD" /\ control_age > 0)
 Witness_ContestAlarm ==        \* INV_SAF_CONTEST
     ~(alarm /\ control = "REFUSED" /\ estop = "SET")
+Witness_ReleasedUnheld ==      \* INV_SAF_OPERATIONAL_BY_HOLDER: a release of control lost before, no OPERATIONAL
+    ~(out_request = "RELEASE" /\ out_set_state = "NONE" /\ h_told)
+Witness_HeldAtRecheck ==       \* INV_SAF_HELD_RECHECKED: held control at the REPORTDATATIMEOUT bound
+    ~(control = "HELD" /\ h_held_age = ReportDataTimeoutCycles)
 Witness_AskedAfterRefusal ==   \* INV_SAF_ASKS_AGAIN: the bound after a refusal is reached
     ~(h_ask_refused /\ h_ask_age = MessageIntervalCycles)
 Witness_AskedAfterSilence ==   \* INV_SAF_ASKS_AGAIN: ... and after an unanswered request

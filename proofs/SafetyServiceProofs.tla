@@ -64,7 +64,19 @@ Lemma_ASK ==
          => (h_ask_refused /\ h_ask_age <= control_age
              /\ control_age <= MessageIntervalCycles)
 
+\* UCA-2, UCA-7, UCA-8: the history's age of held control and of the last
+\* Set Subsystem State(EMERGENCY) are the service's control_age and set_age
+\* (so K08 and the re-send compare what the messages say), and held control
+\* is never older than the timeout K08 reacts to.
+Lemma_HELD ==
+    /\ control = "HELD" => (h_held_age = control_age /\ control_age <= ReportDataTimeoutCycles)
+    /\ control # "HELD" => h_held_age = 0
+    /\ h_set_age = set_age
+    /\ h_released_holding <=> out_set_state = "OPERATIONAL"
+
 Strengthen_LEMMAS ==
     /\ Strengthen_MSG /\ INV_SAF_ASKS_AGAIN
-    /\ Lemma_VIEWS /\ Lemma_OWED /\ Lemma_RESEND /\ Lemma_ASK
+    /\ INV_SAF_OPERATIONAL_BY_HOLDER /\ INV_SAF_CONTROL_ANSWERED
+    /\ INV_SAF_HELD_RECHECKED /\ INV_SAF_RESEND_PACED
+    /\ Lemma_VIEWS /\ Lemma_OWED /\ Lemma_RESEND /\ Lemma_ASK /\ Lemma_HELD
 =============================================================================

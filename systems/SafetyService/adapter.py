@@ -109,7 +109,9 @@ class SafetyServiceAdapter(Adapter):
     observed_variables = ("state", "estop", "estop_age", "health", "health_age", "control",
                           "control_age", "out_request", "out_set_state", "alarm", "resend", "set_age")
     hidden_variables = ("inbox", "ever_faulted", "h_estop", "h_silence", "h_health", "h_health_age", "h_told",
-                        "h_refused", "h_owed", "h_held_sent", "h_due", "h_due_age", "h_ask_age", "h_ask_refused", "shadow")
+                        "h_refused", "h_owed", "h_held_sent", "h_due", "h_due_age", "h_ask_age", "h_ask_refused",
+                        "h_released_holding", "h_heeded", "h_held_age", "h_recheck_early", "h_set_age",
+                        "h_resent_early", "shadow")
     config_constants = {
         "EstopTimeoutCycles": "estop_timeout_cycles",
         "ReportDataTimeoutCycles": "report_data_timeout_cycles",
