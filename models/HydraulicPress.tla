@@ -97,9 +97,11 @@ Inputs == {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2
 \* in the selected mode's valve order, of the last stroke output switched on in the running
 \* work cycle, counted by watching which output comes on (0: no cycle, or the cycle was
 \* abandoned by RET, a motor stop or another mode selected; Skipped: an output came on
-\* out of that order).
-VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos
-vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos>>
+\* out of that order). `coolDemand` (UCA-10) a temp_high edge came while the motor ran, and
+\* since then no temp_ok and the motor has kept running.
+VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos, coolDemand
+vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos,
+          coolDemand>>
 
 \* Observables shared with HydraulicPressFlat (docs/design/hydraulic-press.md §6).
 motor == "motor" \in outputs
@@ -161,6 +163,7 @@ Init ==
     /\ clamped = FALSE
     /\ motorCmd = FALSE
     /\ cyclePos = 0
+    /\ coolDemand = FALSE
 
 Scan(e) ==
     \* exactly one mode state is active (SCH-01): one disjunct applies
@@ -185,6 +188,7 @@ Scan(e) ==
               ELSE IF switched = {order[1]} /\ cyclePos \in {0, Len(order)} THEN 1
               ELSE IF cyclePos \in 1..(Len(order) - 1) /\ switched = {order[cyclePos + 1]} THEN cyclePos + 1
               ELSE Skipped
+    /\ coolDemand' = (("motor" \in outputs') /\ (e = "temp_high" \/ (coolDemand /\ e # "temp_ok")))
 
 Next == \E e \in Inputs : Scan(e)
 
@@ -240,6 +244,19 @@ UCA8_CYCLE_THROUGH_EVERY_STROKE ==
     /\ cyclePos # Skipped
     /\ ~StrokeOn(outputs) => cyclePos \in {0, Len(ValveOrder[selector])}
 
+\* UCA-9 (H-1): the running lamp (the aux chain's, lit by the motor-on state) shows the
+\* motor in every scan: never dark while the hydraulics run, never lit with them stopped
+\* (bound 0 scans), in every mode.
+UCA9_LAMP_SHOWS_MOTOR == ("lamp" \in outputs) <=> motor
+\* UCA-10 (H-5): the cooling pump runs from a temp_high edge that comes while the motor
+\* runs until a temp_ok edge or the motor stops, in every mode (bound 0 scans).
+UCA10_COOLING_ON_DEMAND == coolDemand => "cool_pump" \in outputs
+
+\* UCA-11 (H-1): in single-step operation (the run-kind switch at single step) a new work
+\* cycle waits for Start: the feed valve is switched on only in a scan with Start, or in
+\* continuous operation by the last stroke's sensor edge (bound 0 scans).
+UCA11_SINGLE_STEP_WAITS_FOR_START == "feed_valve" \in SwitchedOn /\ event # "start" => continuous
+
 Witness_RestartAfterStroke == ~(restarted /\ mode = 2)  \* INV_PRESS (restart conjunct), UCA-5 across a restart
 Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE, UCA-4
 Witness_Cooling == ~("cool_pump" \in outputs /\ step = "Eject")
@@ -252,5 +269,12 @@ Witness_Mode2CycleComplete == ~(selector = 2 /\ cyclePos = 8 /\ ~StrokeOn(output
 Witness_Mode3CycleComplete == ~(selector = 3 /\ cyclePos = 6 /\ ~StrokeOn(outputs))
 Witness_CoolingStops == ~(event = "temp_ok" /\ "cool_pump" \notin outputs /\ \E i \in Kinds("exit") : Out(log[i].state) = "cool_pump")
 Witness_Lamp == ~("lamp" \in outputs)
+\* ... a motor stop and a RET that each switch a stroke output off (UCA-2's and UCA-3's
+\* situations), a return to mode 1 from another mode, and the run kind switched back to
+\* single step during a running cycle.
+Witness_MotorStopMidStroke == ~(event = "motor_off" /\ \E i \in Kinds("exit") : Out(log[i].state) \in StrokeOutputs)
+Witness_RetMidStroke == ~(event = "ret" /\ \E i \in Kinds("exit") : Out(log[i].state) \in StrokeOutputs)
+Witness_BackToMode1 == ~(event = "mode1" /\ log # <<>>)
+Witness_SingleStepInCycle == ~(event = "continuous_off" /\ StrokeOn(outputs))
 Witness_ModeChangeMidCycle == ~(event = "mode3" /\ Len(log) = 8)  \* UCA-5: a mode change in a running cycle exits the motor-on subtree (6 exits, 2 entries)
 ===============================================================================
