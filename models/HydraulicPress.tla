@@ -75,6 +75,15 @@ Out(s) ==
       [] s \in StrokeStates -> ValveOf(StepNameOf[s])
       [] OTHER -> "none"
 
+\* The stroke outputs of each mode's work cycle in their order (design page §3), spelt out
+\* again for UCA-8 rather than read from StrokeSeq / StepSeq / ValveOf: the property must
+\* not share the tables the reaction uses.
+ValveOrder ==
+    << <<"feed_valve", "locate_valve", "clamp_valve", "fast_valve", "press_valve", "blow_valve", "eject_valve", "scrap_valve">>,
+       <<"feed_valve", "locate_valve", "clamp_valve", "fast_valve", "press_valve", "eject_valve", "blow_valve", "scrap_valve">>,
+       <<"feed_valve", "locate_valve", "clamp_valve", "press_valve", "eject_valve", "scrap_valve">> >>
+Skipped == 9
+
 Inputs == {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2", "mode3",
            "continuous_on", "continuous_off", "temp_high", "temp_ok"}
 
@@ -84,9 +93,15 @@ Inputs == {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2
 \* cycle: set by Start, kept while a stroke output stays on, cleared when none is on),
 \* `clamped` the clamp valve has been on in this work cycle (cleared by the feed valve,
 \* which begins a cycle, and when no stroke output is on), `motorCmd` a motor-start was
-\* given and the motor has run since, with no motor-stop.
-VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd
-vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd>>
+\* given and the motor has run since, with no motor-stop. `cyclePos` (UCA-8) the position,
+\* in the selected mode's valve order, of the last stroke output switched on in the running
+\* work cycle, counted by watching which output comes on (0: no cycle, or the cycle was
+\* abandoned by RET, a motor stop or another mode selected; Skipped: an output came on
+\* out of that order). `coolDemand` (UCA-10) a temp_high edge came while the motor ran, and
+\* since then no temp_ok and the motor has kept running.
+VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos, coolDemand
+vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos,
+          coolDemand>>
 
 \* Observables shared with HydraulicPressFlat (docs/design/hydraulic-press.md §6).
 motor == "motor" \in outputs
@@ -147,6 +162,8 @@ Init ==
     /\ cycleMode = 0
     /\ clamped = FALSE
     /\ motorCmd = FALSE
+    /\ cyclePos = 0
+    /\ coolDemand = FALSE
 
 Scan(e) ==
     \* exactly one mode state is active (SCH-01): one disjunct applies
@@ -163,6 +180,15 @@ Scan(e) ==
     /\ clamped' = IF ~StrokeOn(outputs') \/ "feed_valve" \in outputs' THEN FALSE
                   ELSE clamped \/ "clamp_valve" \in outputs'
     /\ motorCmd' = IF e = "motor_on" THEN TRUE ELSE motorCmd /\ e # "motor_off" /\ "motor" \in outputs'
+    /\ cyclePos' =
+           LET switched == (outputs' \cap StrokeOutputs) \ outputs
+               order == ValveOrder[selector']
+           IN IF e \in {"ret", "motor_off"} \/ selector' # selector THEN 0
+              ELSE IF switched = {} THEN cyclePos
+              ELSE IF switched = {order[1]} /\ cyclePos \in {0, Len(order)} THEN 1
+              ELSE IF cyclePos \in 1..(Len(order) - 1) /\ switched = {order[cyclePos + 1]} THEN cyclePos + 1
+              ELSE Skipped
+    /\ coolDemand' = (("motor" \in outputs') /\ (e = "temp_high" \/ (coolDemand /\ e # "temp_ok")))
 
 Next == \E e \in Inputs : Scan(e)
 
@@ -207,9 +233,48 @@ UCA7_ADVANCE_ONLY_ON_SENSOR ==
     /\ SwitchedOn # {} => event \in {"start", "step_done"}
     /\ event = "start" /\ SwitchedOn # {} => outputs \cap StrokeOutputs = {"feed_valve"}
 
+\* UCA-8 (loss L-2): a work cycle runs through each stroke output of its mode's order, in
+\* order, and ends only through all of them: a stroke output comes on only as the next of
+\* the selected mode's order after the one before it, the feed valve only when no cycle is
+\* running or the last one is complete; the stroke outputs go off with no RET, motor stop or
+\* mode selection (a cycle ended, not abandoned) only after the mode's last stroke output
+\* (bound 0 scans: the scan in which the output comes on or the outputs go off). A skipped
+\* eject, blow or scrap stroke leaves the part or the scrap in the die for the next feed.
+UCA8_CYCLE_THROUGH_EVERY_STROKE ==
+    /\ cyclePos # Skipped
+    /\ ~StrokeOn(outputs) => cyclePos \in {0, Len(ValveOrder[selector])}
+
+\* UCA-9 (H-1): the running lamp (the aux chain's, lit by the motor-on state) shows the
+\* motor in every scan: never dark while the hydraulics run, never lit with them stopped
+\* (bound 0 scans), in every mode.
+UCA9_LAMP_SHOWS_MOTOR == ("lamp" \in outputs) <=> motor
+\* UCA-10 (H-5): the cooling pump runs from a temp_high edge that comes while the motor
+\* runs until a temp_ok edge or the motor stops, in every mode (bound 0 scans).
+UCA10_COOLING_ON_DEMAND == coolDemand => "cool_pump" \in outputs
+
+\* UCA-11 (H-1): in single-step operation (the run-kind switch at single step) a new work
+\* cycle waits for Start: the feed valve is switched on only in a scan with Start, or in
+\* continuous operation by the last stroke's sensor edge (bound 0 scans).
+UCA11_SINGLE_STEP_WAITS_FOR_START == "feed_valve" \in SwitchedOn /\ event # "start" => continuous
+
 Witness_RestartAfterStroke == ~(restarted /\ mode = 2)  \* INV_PRESS (restart conjunct), UCA-5 across a restart
 Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE, UCA-4
 Witness_Cooling == ~("cool_pump" \in outputs /\ step = "Eject")
 Witness_FeedBySensor == ~(event = "step_done" /\ SwitchedOn = {"feed_valve"})  \* UCA-7: continuous operation re-enters Feed on the sensor edge
+\* The inputs each behaviour of the press needs reached, so a press that never takes one
+\* (never offered, or ignored) loses a witness (docs/mutate.md, "Reachability witnesses"):
+\* a cycle of mode 2 and of mode 3 completed through the mode's last stroke (UCA-8), the
+\* cooling pump switched off again by temp_ok, the lamp lit with the motor.
+Witness_Mode2CycleComplete == ~(selector = 2 /\ cyclePos = 8 /\ ~StrokeOn(outputs))
+Witness_Mode3CycleComplete == ~(selector = 3 /\ cyclePos = 6 /\ ~StrokeOn(outputs))
+Witness_CoolingStops == ~(event = "temp_ok" /\ "cool_pump" \notin outputs /\ \E i \in Kinds("exit") : Out(log[i].state) = "cool_pump")
+Witness_Lamp == ~("lamp" \in outputs)
+\* ... a motor stop and a RET that each switch a stroke output off (UCA-2's and UCA-3's
+\* situations), a return to mode 1 from another mode, and the run kind switched back to
+\* single step during a running cycle.
+Witness_MotorStopMidStroke == ~(event = "motor_off" /\ \E i \in Kinds("exit") : Out(log[i].state) \in StrokeOutputs)
+Witness_RetMidStroke == ~(event = "ret" /\ \E i \in Kinds("exit") : Out(log[i].state) \in StrokeOutputs)
+Witness_BackToMode1 == ~(event = "mode1" /\ log # <<>>)
+Witness_SingleStepInCycle == ~(event = "continuous_off" /\ StrokeOn(outputs))
 Witness_ModeChangeMidCycle == ~(event = "mode3" /\ Len(log) = 8)  \* UCA-5: a mode change in a running cycle exits the motor-on subtree (6 exits, 2 entries)
 ===============================================================================

@@ -290,6 +290,13 @@ INV_SUP_FAIL_SAFE ==
         /\ ~outputs_safe
         /\ sup_state \in {"RUN", "DEGRADED", "SHUTTING_DOWN"}
 
+\* PRO-05 (UCA-S10): once the first stop report of a shutdown has come (control's
+\* acknowledgement of step 1, outputs to the safe state), the outputs are held safe in
+\* that tick and every tick after: the regulated value never comes back while the
+\* remaining units stop. Counted from the stop reports (an input), not from the
+\* supervisor's step.
+INV_SUP_SAFE_FROM_STEP1 == stop_reports >= 1 => outputs_safe /\ outputs = "SAFE"
+
 -----------------------------------------------------------------------------
 (* Reachability witnesses (non-vacuity), checked one by one and expected  *)
 (* violated by tests/python/test_pro_model.py.                             *)
@@ -324,4 +331,6 @@ Witness_HalfwayDown ==      \* INV_SUP_SHUTDOWN_PROGRESS, four stop reports take
     ~(sup_state = "SHUTTING_DOWN" /\ stop_reports = 4)
 Witness_ShutdownProtects == \* INV_SUP_FAIL_SAFE, outputs safe, safety still running
     ~(sup_state = "SHUTTING_DOWN" /\ outputs_safe /\ safety_input = "FRESH")
+Witness_HeldSafeAfterStep1 == \* INV_SUP_SAFE_FROM_STEP1, step 1 acknowledged, safety still on fresh snapshots
+    ~(sup_state = "SHUTTING_DOWN" /\ stop_reports = 2 /\ safety_input = "FRESH")
 =============================================================================

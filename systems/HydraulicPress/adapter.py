@@ -28,7 +28,8 @@ class HydraulicPressAdapter(Adapter):
     observed_variables: ClassVar[tuple[str, ...]] = ("outputs", "active", "log")
     observed_operators: ClassVar[tuple[str, ...]] = ("motor", "mode", "step", "pressure", "speed")
     hidden_variables: ClassVar[tuple[str, ...]] = ("result", "request", "continuous", "restarted", "event",
-                                                   "selector", "cycleMode", "clamped", "motorCmd")
+                                                   "selector", "cycleMode", "clamped", "motorCmd", "cyclePos",
+                                                   "coolDemand")
     #: the class of safestate._press this adapter drives
     press_class: ClassVar[str] = "HydraulicPress"
 

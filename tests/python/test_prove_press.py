@@ -1,5 +1,5 @@
 """The hydraulic press on the state-chain engine (SCH-01..SCH-03, SCH-05, INV-PRESS): its
-18 properties (the hazard properties UCA1..UCA7 across scans among them) proved for every
+19 properties (the hazard properties UCA1..UCA8 across scans among them) proved for every
 reachable state by one joint 1-induction with the plan's strengthening
 (proofs/HydraulicPress.toml), every well-definedness obligation of the chain engine holding
 and no proof vacuous. The translation carries ~840 obligations, one per site (every call-log
