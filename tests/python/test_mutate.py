@@ -190,6 +190,33 @@ def test_each_operator_generates_its_mutants(tmp_path: Path, operator: str) -> N
         assert text.decode().count(m.original) == 1 and text.decode().replace(m.original, m.patched) == t
 
 
+TRAILING = r"""---- MODULE Trailing ----
+EXTENDS Naturals
+VARIABLES x
+Ok(v) ==
+    /\ v >= 0
+    /\ \/ v = 1
+       \/ v = 2
+
+\* a comment between two definitions
+Init == x = 0
+Next == /\ Ok(x) \/ x = 0
+        /\ x' = IF x < 2 THEN x + 1 ELSE 0
+===="""
+
+
+def test_every_mutant_of_a_definition_followed_by_comments_still_parses(tmp_path: Path) -> None:
+    # The grammar lets a list's last item run on over the comments after it: an edit
+    # there must not glue the next definition to its replacement (`TRUEInit ==`).
+    from safestate.tla.parser import parse_text
+    (tmp_path / "Trailing.tla").write_text(TRAILING)
+    mutants = generate(tmp_path / "Trailing.tla", "Init", "Next")
+    dropped = [m for m in mutants if m.operator == "drop-conjunct" and "v = 1" in m.what]
+    assert dropped and dropped[0].original.rstrip().endswith("v = 2")
+    for m in mutants:
+        parse_text(m.apply(TRAILING.encode()).decode(), "Trailing.tla")  # raises on a syntax error
+
+
 def test_every_operator_is_documented_in_docs_mutate() -> None:
     from safestate.mutate.operators import OPERATORS
     doc = (Path(__file__).resolve().parents[2] / "docs" / "mutate.md").read_text()

@@ -44,7 +44,20 @@ class Context:
     inputs: frozenset[str] = frozenset()
 
     def text(self, n: Node) -> str:
-        return self.data[n.start_byte:n.end_byte].decode("utf-8")
+        return self.data[n.start_byte:self.end(n)].decode("utf-8")
+
+    def end(self, n: Node) -> int:
+        """Where the node's text ends: the grammar lets the last item of a list run on over
+        the comments and blank lines after it, which an edit must keep (else the next
+        definition is glued to the replacement, or commented out)."""
+        end = n.end_byte
+        while True:
+            body = self.data[n.start_byte:end].rstrip()
+            end = n.start_byte + len(body)
+            nl = body.rfind(b"\n")
+            if nl < 0 or not body[nl + 1:].lstrip().startswith(b"\\*"):
+                return end
+            end = n.start_byte + nl  # a comment-only last line: not the node's
 
 
 @dataclass(frozen=True)
@@ -165,7 +178,7 @@ def drop_conjunct(n: Node, ctx: Context) -> Iterator[Edit]:
     for it in items:
         if _mentions_prime(it) or ctx.is_init:
             continue
-        yield Edit(it.start_byte, it.end_byte, "TRUE", f"conjunct `{_short(ctx.text(it))}` dropped")
+        yield Edit(it.start_byte, ctx.end(it), "TRUE", f"conjunct `{_short(ctx.text(it))}` dropped")
 
 
 def negate_condition(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -173,10 +186,10 @@ def negate_condition(n: Node, ctx: Context) -> Iterator[Edit]:
     ~(condition)."""
     if n.type == "if_then_else":
         c = _if_parts(n)[0]
-        yield Edit(c.start_byte, c.end_byte, f"~({ctx.text(c)})", f"IF condition `{_short(ctx.text(c))}` negated")
+        yield Edit(c.start_byte, ctx.end(c), f"~({ctx.text(c)})", f"IF condition `{_short(ctx.text(c))}` negated")
     elif n.type == "case_arm":
         c = _named(n)[0]
-        yield Edit(c.start_byte, c.end_byte, f"~({ctx.text(c)})", f"CASE guard `{_short(ctx.text(c))}` negated")
+        yield Edit(c.start_byte, ctx.end(c), f"~({ctx.text(c)})", f"CASE guard `{_short(ctx.text(c))}` negated")
 
 
 def move_boundary(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -190,7 +203,7 @@ def move_boundary(n: Node, ctx: Context) -> Iterator[Edit]:
     if sym.type in ("eq", "neq") and (ctx.is_init or _mentions_prime(lhs) or _mentions_prime(rhs)):
         return
     old, new = _RELATION_SWAP[sym.type]
-    yield Edit(sym.start_byte, sym.end_byte, new, f"`{old}` became `{new}`")
+    yield Edit(sym.start_byte, ctx.end(sym), new, f"`{old}` became `{new}`")
 
 
 def literal_step(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -198,9 +211,9 @@ def literal_step(n: Node, ctx: Context) -> Iterator[Edit]:
     if n.type != "nat_number":
         return
     v = int(ctx.text(n))
-    yield Edit(n.start_byte, n.end_byte, str(v + 1), f"{v} became {v + 1}")
+    yield Edit(n.start_byte, ctx.end(n), str(v + 1), f"{v} became {v + 1}")
     if v > 0:
-        yield Edit(n.start_byte, n.end_byte, str(v - 1), f"{v} became {v - 1}")
+        yield Edit(n.start_byte, ctx.end(n), str(v - 1), f"{v} became {v - 1}")
 
 
 def swap_if(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -209,7 +222,7 @@ def swap_if(n: Node, ctx: Context) -> Iterator[Edit]:
         return
     c, t, e = _if_parts(n)
     text = f"IF {ctx.text(c)} THEN {ctx.text(e)} ELSE {ctx.text(t)}"
-    yield Edit(n.start_byte, n.end_byte, text, f"branches of IF `{_short(ctx.text(c))}` swapped")
+    yield Edit(n.start_byte, ctx.end(n), text, f"branches of IF `{_short(ctx.text(c))}` swapped")
 
 
 def delete_arm(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -226,10 +239,10 @@ def delete_arm(n: Node, ctx: Context) -> Iterator[Edit]:
             if not guards:
                 continue
             text = "CASE " + " [] ".join(guards + other)
-            yield Edit(n.start_byte, n.end_byte, text, f"CASE arm `{_short(ctx.text(arm))}` deleted")
+            yield Edit(n.start_byte, ctx.end(n), text, f"CASE arm `{_short(ctx.text(arm))}` deleted")
     elif n.type == "if_then_else" and _in_chain(n):
         c, _, e = _if_parts(n)
-        yield Edit(n.start_byte, n.end_byte, ctx.text(e), f"priority step IF `{_short(ctx.text(c))}` deleted")
+        yield Edit(n.start_byte, ctx.end(n), ctx.text(e), f"priority step IF `{_short(ctx.text(c))}` deleted")
 
 
 def _in_chain(n: Node) -> bool:
@@ -252,7 +265,7 @@ def swap_steps(n: Node, ctx: Context) -> Iterator[Edit]:
     c2, b, r = _if_parts(inner)
     text = (f"IF {ctx.text(c2)} THEN {ctx.text(b)} ELSE IF {ctx.text(c1)} THEN {ctx.text(a)} "
             f"ELSE {ctx.text(r)}")
-    yield Edit(n.start_byte, n.end_byte, text,
+    yield Edit(n.start_byte, ctx.end(n), text,
                f"priority steps `{_short(ctx.text(c1))}` and `{_short(ctx.text(c2))}` swapped")
 
 
@@ -265,7 +278,7 @@ def unchanged(n: Node, ctx: Context) -> Iterator[Edit]:
     var = ctx.text(_named(_strip_parens(p[0]))[0])
     if ctx.text(p[2]).strip() == var or var in ctx.inputs:
         return
-    yield Edit(p[2].start_byte, p[2].end_byte, var, f"{var}' kept unchanged (was `{_short(ctx.text(p[2]))}`)")
+    yield Edit(p[2].start_byte, ctx.end(p[2]), var, f"{var}' kept unchanged (was `{_short(ctx.text(p[2]))}`)")
 
 
 def drop_except_update(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -278,7 +291,7 @@ def drop_except_update(n: Node, ctx: Context) -> Iterator[Edit]:
     for i, u in enumerate(updates):
         rest = [ctx.text(x) for j, x in enumerate(updates) if j != i]
         text = f"[{ctx.text(base)} EXCEPT {', '.join(rest)}]" if rest else f"({ctx.text(base)})"
-        yield Edit(n.start_byte, n.end_byte, text, f"EXCEPT update `{_short(ctx.text(u))}` dropped")
+        yield Edit(n.start_byte, ctx.end(n), text, f"EXCEPT update `{_short(ctx.text(u))}` dropped")
 
 
 def drop_next_disjunct(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -289,7 +302,7 @@ def drop_next_disjunct(n: Node, ctx: Context) -> Iterator[Edit]:
     if items is None or len(items) < 2 or (n.type == "bound_infix_op" and not _is_chain_top(n)):
         return
     for it in items:
-        yield Edit(it.start_byte, it.end_byte, "FALSE", f"disjunct `{_short(ctx.text(it))}` of Next deleted")
+        yield Edit(it.start_byte, ctx.end(it), "FALSE", f"disjunct `{_short(ctx.text(it))}` of Next deleted")
 
 
 def drop_input_value(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -304,17 +317,17 @@ def drop_input_value(n: Node, ctx: Context) -> Iterator[Edit]:
             return
         for i, el in enumerate(elems):
             rest = [ctx.text(x) for j, x in enumerate(elems) if j != i]
-            yield Edit(n.start_byte, n.end_byte, "{" + ", ".join(rest) + "}",
+            yield Edit(n.start_byte, ctx.end(n), "{" + ", ".join(rest) + "}",
                        f"input value {_short(ctx.text(el))} never offered")
     elif n.type == "boolean_set":
-        yield Edit(n.start_byte, n.end_byte, "{TRUE}", "input value FALSE never offered")
-        yield Edit(n.start_byte, n.end_byte, "{FALSE}", "input value TRUE never offered")
+        yield Edit(n.start_byte, ctx.end(n), "{TRUE}", "input value FALSE never offered")
+        yield Edit(n.start_byte, ctx.end(n), "{FALSE}", "input value TRUE never offered")
     else:
         p = _infix_parts(n)
         if p is not None and p[1].type == "dots_2":
             lo, hi = ctx.text(p[0]), ctx.text(p[2])
-            yield Edit(n.start_byte, n.end_byte, f"(({lo}) + 1)..({hi})", f"input value {lo} of {lo}..{hi} never offered")
-            yield Edit(n.start_byte, n.end_byte, f"({lo})..(({hi}) - 1)", f"input value {hi} of {lo}..{hi} never offered")
+            yield Edit(n.start_byte, ctx.end(n), f"(({lo}) + 1)..({hi})", f"input value {lo} of {lo}..{hi} never offered")
+            yield Edit(n.start_byte, ctx.end(n), f"({lo})..(({hi}) - 1)", f"input value {hi} of {lo}..{hi} never offered")
 
 
 def _short(s: str, width: int = 60) -> str:
