@@ -100,6 +100,11 @@ Strengthen_T1JOG ==
 \* power, which clears the observer).
 Strengthen_JOG ==
     /\ jog # NoJog => obs_jog_axis = jog.axis
+    \* (no Cat 1 stop shown where a jog is kept: ARMING starts without a stop
+    \* category, K12; OPERATIONAL is entered from ARMING, C15, or from a Cat 2
+    \* stop, C28 and K24; K18 and K29 keep it)
+    /\ state = "ARMING" => stop_category = "NONE"
+    /\ state \in Operational => stop_category \in {"NONE", "CAT2"}
 
 \* Every property of the .cfg at once: each is proved assuming all of them
 \* (and the lemmas above) in the pre-state; it is their conjunction that is
