@@ -138,6 +138,9 @@ Reasons == {"LOCKED_OUT", "ESTOP_PRESSED", "WRONG_STATE", "DRIVE_FAULT",
 \* PLCopenAxis.tla (which checks the step against the PLCopen diagram).
 PLCopen == INSTANCE PLCopenAxisStep
 Axes == 1..6
+\* The robot's six joints (a 6-axis arm, §8; ScanOutputs::axes): what the
+\* properties hold the model's Axes and the commands' axis numbers against.
+RobotJoints == 1..6
 
 NoJog == [axis |-> 0, direction |-> 0, speed_mm_s |-> 0]
 
@@ -188,7 +191,8 @@ VARIABLES inputs, event
 (*   obs_open_a/b  -- RSM-04 channel test: channel seen open since the    *)
 (*                    last CLEAR.                                          *)
 (*   obs_disagree  -- RSM-04/02: consecutive cycles the inputs disagreed  *)
-(*                    (pairs) or read an invalid selector, capped at D+1.  *)
+(*                    (pairs) or read an invalid selector; latched at D+1  *)
+(*                    (a disagreement that lasted D+1 cycles was read).    *)
 (*   obs_locked    -- RSM-04: a fault code was ever output.               *)
 (*   obs_ramp      -- RSM-11: the age of the stop episode: consecutive    *)
 (*                    cycles ending with the ramp-down request output on, *)
@@ -221,7 +225,8 @@ VARIABLES inputs, event
 (*                    whose feedback read disagreed with the output at    *)
 (*                    the cycle's start (contactor, brake release), 1     *)
 (*                    again when that output changed since the previous  *)
-(*                    cycle (capped at FeedbackCycles + 1).               *)
+(*                    cycle; latched at FeedbackCycles + 1 (a disagreement *)
+(*                    under one command lasted that long: was read).      *)
 (*   obs_was_released -- the brake release output at the start of the    *)
 (*                    last cycle (obs_was_enabled is the contactor's).    *)
 (*   obs_booted, obs_self_test_failed -- RSM-12: the first cycle read     *)
@@ -236,6 +241,10 @@ VARIABLES inputs, event
 (*   obs_panic     -- UCA-RSM-05 (ISO 10218-1 5.8.3): a cycle read either *)
 (*                    enabling channel in PANIC and none since read both  *)
 (*                    RELEASED.                                           *)
+(*   obs_jog_axis  -- UCA-RSM-14: the axis of the JOG_START last accepted *)
+(*                    (0 once that jog is over: a JOG_STOP accepted, a    *)
+(*                    Cat 1 stop shown or every power output off; a Cat 2 *)
+(*                    pause keeps it for the Resume).                     *)
 (*   obs_popped    -- RSM-13: the last event was a cycle that began with  *)
 (*                    a command queued (queue_length > 0).                *)
 (*   obs_submit_lost -- RSM-14: the last event was a Submit that neither  *)
@@ -247,7 +256,7 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           obs_booted, obs_self_test_failed,
           obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
           obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
-          obs_fb_contactor, obs_fb_brake, obs_was_released
+          obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
@@ -261,7 +270,7 @@ obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_r
               obs_booted, obs_self_test_failed,
               obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
               obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
-              obs_fb_contactor, obs_fb_brake, obs_was_released>>
+              obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
@@ -738,9 +747,11 @@ AfterSubmit(c) ==
 Popped == IF queue = << >> THEN "NONE" ELSE Head(queue).kind
 
 \* UCA-RSM-13's observer: consecutive cycles feedback # output at the start,
-\* 1 again when the output changed since the previous cycle's start.
+\* 1 again when the output changed since the previous cycle's start; latched
+\* once it exceeds FeedbackCycles (UCA-RSM-15 reads it after the lockout).
 ObsFb(o, prev, cmd, fb) ==
-    IF fb = cmd THEN 0
+    IF o > FeedbackCycles THEN o        \* latched: the disagreement lasted
+    ELSE IF fb = cmd THEN 0
     ELSE IF o > 0 /\ cmd # prev THEN 1
     ELSE Min(o + 1, FeedbackCycles + 1)
 
@@ -749,7 +760,8 @@ Cycle(in) ==
         m   == AxesStep(CommandStep(m2, in), in)     \* = AfterCycle(in)
         acc == IF m.command_result = "ACCEPTED" THEN Popped ELSE "NONE"
         tripped == EstopTripped(in)
-        n(c, bad) == IF bad THEN Min(c + 1, D + 1) ELSE 0
+        \* latched once a disagreement lasted D + 1 cycles (INV_DISCREPANCY: locked out)
+        n(c, bad) == IF c > D THEN c ELSE IF bad THEN Min(c + 1, D + 1) ELSE 0
     IN /\ SetMgr(m)
        /\ inputs' = in
        /\ event' = [kind |-> "cycle", inputs |-> in]
@@ -798,6 +810,11 @@ Cycle(in) ==
        /\ obs_popped' = (queue # << >>)
        /\ obs_submit_lost' = FALSE
        /\ obs_link_lost' = (~in.operator_link_ok /\ CommandedSpeedOut(Mgr) > 0)
+       \* the jog the operator started: over with its JOG_STOP, a Cat 1 stop or
+       \* power off; a Cat 2 pause (Pause, link loss) keeps it for the Resume
+       /\ obs_jog_axis' = IF acc = "JOG_START" THEN Head(queue).axis
+                          ELSE IF acc = "JOG_STOP" \/ ~PowerOut(m) \/ m.stop_category = "CAT1"
+                          THEN 0 ELSE obs_jog_axis
 
 \* A RESET queued after the E-stop release is "issued after the release"
 \* (RSM-05); the Submit's result (queued / queue_full) is its output.
@@ -816,7 +833,7 @@ Submit(c) ==
                    obs_drive_fault, obs_fieldbus_lost, obs_unexpected_motion, t1_overspeed,
                    obs_booted, obs_self_test_failed, obs_arming, obs_link_lost,
                    obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
-                   obs_fb_contactor, obs_fb_brake, obs_was_released>>
+                   obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis>>
 
 -----------------------------------------------------------------------------
 (************************** Environment and spec **************************)
@@ -890,11 +907,13 @@ LinkLoss(cur) ==
 
 \* A contactor or brake feedback that disagrees with its command (a welded or
 \* not pulling-in contactor, a brake that stays applied or released) is a cycle
-\* of its own, the other free signals at their defaults, in every state but
-\* lockout: the counters are read by C30 only, which precedes every row that
-\* reads a free signal but C02 (design page §13, the environment).
+\* of its own, the other free signals at their defaults, in every state: the
+\* counters are read by C30 only, which precedes every row that reads a free
+\* signal but C02 (design page §13, the environment).  With
+\* LockoutHoldsInputs the feedback, as the held signals, stops changing in
+\* ERROR_LOCKOUT: C01 and K01 read no counter there and the fault is shown.
 FeedbackDisagree(cur) ==
-    IF state = "ERROR_LOCKOUT" \/ ~FeedbackInputs THEN {}
+    IF ~FeedbackInputs \/ (state = "ERROR_LOCKOUT" /\ LockoutHoldsInputs) THEN {}
     ELSE {[WithFree(cur, FreeDefault) EXCEPT !.contactor_fb = ~ContactorOut(Mgr)],
           [WithFree(cur, FreeDefault) EXCEPT !.brake_fb = ~BrakeReleaseOut(Mgr)]}
 
@@ -951,6 +970,7 @@ Init ==
     /\ contactor_fb_cmd = FALSE   /\ brake_fb_cmd = FALSE
     /\ obs_fb_contactor = 0       /\ obs_fb_brake = 0 /\ obs_was_released = FALSE
     /\ enable_release_required = FALSE
+    /\ obs_jog_axis = 0
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
 \* last_reject_reason changes), so when it is full one representative
@@ -1016,6 +1036,7 @@ TypeOK ==
     /\ contactor_fb_cmd \in BOOLEAN /\ brake_fb_cmd \in BOOLEAN
     /\ obs_fb_contactor \in 0..(FeedbackCycles + 1) /\ obs_fb_brake \in 0..(FeedbackCycles + 1)
     /\ obs_was_released \in BOOLEAN
+    /\ obs_jog_axis \in {0} \cup Axes
     /\ enable_release_required \in BOOLEAN
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     /\ obs_link_lost \in BOOLEAN
@@ -1209,6 +1230,35 @@ UCA_T2_OVERSPEED ==
 UCA_FEEDBACK ==
     obs_fb_contactor > FeedbackCycles \/ obs_fb_brake > FeedbackCycles => Unpowered /\ Locked
 
+\* UCA-RSM-15 (RSM-03, RSM-07, RSM-04; the converse of UCA-RSM-13 and of
+\* INV-DISCREPANCY): no monitoring lockout without its cause.  A feedback
+\* lockout is shown only after its feedback disagreed with the output it
+\* monitors for FeedbackCycles + 1 consecutive cycles under one command (a
+\* command change gives the device its full switching time again), a
+\* discrepancy lockout only after its channels disagreed (or the selector
+\* read invalid) for D + 1 consecutive cycles: a healthy device switching
+\* within its time, or a discrepancy shorter than the discrepancy time, never
+\* removes power (Cat 0) from a moving arm.
+UCA_FEEDBACK_CAUSE ==
+    /\ fault_code = "CONTACTOR_FEEDBACK" => obs_fb_contactor > FeedbackCycles
+    /\ fault_code = "BRAKE_FEEDBACK" => obs_fb_brake > FeedbackCycles
+
+UCA_DISCREPANCY_CAUSE ==
+    /\ fault_code = "DISCREPANCY_ESTOP" => obs_disagree.estop > D
+    /\ fault_code = "DISCREPANCY_SAFEGUARD" => obs_disagree.gate > D
+    /\ fault_code = "DISCREPANCY_ENABLING" => obs_disagree.enable > D
+    /\ fault_code = "SELECTOR_INVALID" => obs_disagree.selector > D
+
+\* UCA-RSM-14 (RSM-09, RSM-17, issue 29 item 5 "nothing checks that only the
+\* jogged axis moves"): while a jog speed is commanded, the jogged axis is the
+\* one the accepted JOG_START named, one of the robot's six joints, and no
+\* other axis is commanded into a PLCopen motion state (bound: every cycle of
+\* the jog, the cycle that accepts it included).
+UCA_JOG_AXIS ==
+    commanded_speed_mm_s > 0 =>
+        /\ obs_jog_axis \in RobotJoints
+        /\ \A i \in DOMAIN axes : i # obs_jog_axis => axes[i] \notin PLCopen!MotionStates
+
 \* UCA-RSM-05 (RSM-09, ISO 10218-1 5.8.3, issue 29 item 6): once the
 \* enabling device was read in PANIC (either channel), no drive is enabled
 \* in a manual session until both channels were read RELEASED.
@@ -1293,6 +1343,16 @@ Witness_UCA_READY_LOST       == ~obs_ready_lost
 Witness_UCA_T2_OVERSPEED     == ~obs_t2_overspeed
 Witness_UCA_FEEDBACK         == ~(obs_fb_contactor > FeedbackCycles)
 Witness_UCA_FEEDBACK_BRAKE   == ~(obs_fb_brake > FeedbackCycles)
+\* (a welded contactor: the lockout with the contactor commanded open; one
+\* that does not pull in: commanded closed; the brake's: each needs the
+\* disagreement offered outside lockout)
+Witness_UCA_FEEDBACK_CAUSE   == ~(fault_code = "CONTACTOR_FEEDBACK" /\ ~obs_was_enabled)
+Witness_UCA_FEEDBACK_CAUSE_ON == ~(fault_code = "CONTACTOR_FEEDBACK" /\ obs_was_enabled)
+Witness_UCA_FEEDBACK_CAUSE_BRAKE == ~(fault_code = "BRAKE_FEEDBACK")
+Witness_UCA_DISCREPANCY_CAUSE == ~(fault_code = "DISCREPANCY_ESTOP")
+\* (a jog on its axis, and one resumed after a Pause)
+Witness_UCA_JOG_AXIS         == ~(commanded_speed_mm_s > 0)
+Witness_UCA_JOG_AXIS_RESUMED == ~(commanded_speed_mm_s > 0 /\ last_accepted = "RESUME")
 \* (the panic observer set and the device back in MIDDLE, unpowered)
 Witness_UCA_PANIC_REARM      == ~(obs_panic /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE")
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")

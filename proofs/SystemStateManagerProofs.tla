@@ -58,8 +58,11 @@ Strengthen_TEST ==
 \* The input observers count what §3 counts; a fault code shown once is the
 \* lockout for good; a fieldbus loss or a failed self-test was a lockout.
 Strengthen_OBSERVERS ==
-    /\ obs_disagree.estop = estop_mismatch /\ obs_disagree.gate = safeguard_mismatch
-    /\ obs_disagree.enable = enabling_mismatch /\ obs_disagree.selector = selector_invalid
+    \* (in lockout the observers latch a count above D, the counters follow
+    \* the inputs, which may stop disagreeing)
+    /\ state # "ERROR_LOCKOUT" =>
+          /\ obs_disagree.estop = estop_mismatch /\ obs_disagree.gate = safeguard_mismatch
+          /\ obs_disagree.enable = enabling_mismatch /\ obs_disagree.selector = selector_invalid
     /\ obs_locked <=> state = "ERROR_LOCKOUT"
     /\ obs_fieldbus_lost => state = "ERROR_LOCKOUT"
     /\ obs_self_test_failed => state = "ERROR_LOCKOUT" /\ fault_code = "SELF_TEST_FAILED"
@@ -91,6 +94,18 @@ Strengthen_T1JOG ==
     \* and every kept jog was bounded by K26 (UCA_T2_OVERSPEED after K24)
     /\ jog # NoJog => jog.speed_mm_s <= T2SpeedLimit
 
+\* The jog observer names the axis of the jog the manager keeps (K29 stores
+\* the accepted JOG_START's axis; Pause, link loss and Resume keep it; every
+\* row that drops the jog shows a Cat 1 stop, accepts the JOG_STOP or removes
+\* power, which clears the observer).
+Strengthen_JOG ==
+    /\ jog # NoJog => obs_jog_axis = jog.axis
+    \* (no Cat 1 stop shown where a jog is kept: ARMING starts without a stop
+    \* category, K12; OPERATIONAL is entered from ARMING, C15, or from a Cat 2
+    \* stop, C28 and K24; K18 and K29 keep it)
+    /\ state = "ARMING" => stop_category = "NONE"
+    /\ state \in Operational => stop_category \in {"NONE", "CAT2"}
+
 \* Every property of the .cfg at once: each is proved assuming all of them
 \* (and the lemmas above) in the pre-state; it is their conjunction that is
 \* inductive.
@@ -103,5 +118,5 @@ Strengthen_ALL ==
     /\ RSM07_DRIVE_FAULT /\ RSM12_SELF_TEST /\ RSM17_AXES /\ INV_1OO2
     /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
     /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM /\ UCA_T2_OVERSPEED
-    /\ UCA_FEEDBACK
+    /\ UCA_FEEDBACK /\ UCA_FEEDBACK_CAUSE /\ UCA_DISCREPANCY_CAUSE /\ UCA_JOG_AXIS
 =============================================================================

@@ -93,7 +93,7 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
                         "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
                         "obs_panic", "obs_t2_overspeed", "obs_fb_contactor", "obs_fb_brake",
-                        "obs_was_released",
+                        "obs_was_released", "obs_jog_axis",
                         # FeedbackMonitor's last command: read only while a disagreement
                         # counts, and then the command of the previous cycle (not in status).
                         "contactor_fb_cmd", "brake_fb_cmd")
@@ -255,6 +255,11 @@ class SystemStateManagerAdapter(Adapter):
             ev = Event.of(SUBMIT, {"c": FnValue({"kind": kind, "axis": 0, "direction": 0, "speed_mm_s": 0})})
             return ev, self.plan_call(ev)
 
+        def jog(axis: int) -> tuple[Event, Any]:
+            ev = Event.of(SUBMIT, {"c": FnValue({"kind": "JOG_START", "axis": axis, "direction": 1,
+                                                 "speed_mm_s": 100})})
+            return ev, self.plan_call(ev)
+
         def seq(label: str, steps: list[tuple[Event, Any]]) -> Probe:
             events = tuple(e for e, _ in steps)
             return Probe(events[-1], [c for _, c in steps], label, events[:-1])
@@ -290,6 +295,13 @@ class SystemStateManagerAdapter(Adapter):
             seq(f"UCA-RSM-13 E-stop with the brake feedback stuck, {feedback_cycles} cycles",
                 [cyc(dict(estop[0], brake_fb=stuck_brake), dict(estop[1], brake_feedback_released=stuck_brake))]
                 * feedback_cycles),
+            seq("UCA-RSM-15 contactor feedback disagreeing across a Servo-on, then the other way",
+                [cyc({"contactor_fb": stuck_contactor}, {"contactor_feedback_closed": stuck_contactor}),
+                 sub("SERVO_ON"),
+                 cyc({"contactor_fb": not stuck_contactor}, {"contactor_feedback_closed": not stuck_contactor}),
+                 cyc({"contactor_fb": stuck_contactor}, {"contactor_feedback_closed": stuck_contactor})]),
+            seq("UCA-RSM-14 JOG_START on axis 4, then 2 cycles moving", [jog(4), cyc(*moving), cyc(*moving)]),
+            seq("UCA-RSM-14 JOG_START on axis 7 (no such joint), then a cycle moving", [jog(7), cyc(*moving)]),
             seq("UCA-RSM-05 enabling PANIC, back to MIDDLE, then Servo-on",
                 [cyc(*panic), cyc(*middle), sub("SERVO_ON"), cyc(*middle)]),
             seq(f"UCA-RSM-07 JOG_STOP with the arm still moving, {stop_cycles} cycles",
