@@ -97,7 +97,6 @@ class PipeLink:
             dump_between_workers(stored, f)
         self.conn.send((path,))
 
-
     def save(self, depth: int, saved: tuple) -> None:
         raise RuntimeError("the search on one machine keeps no checkpoints")
 

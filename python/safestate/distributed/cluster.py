@@ -1,5 +1,6 @@
-"""Reaching a Ray cluster: `--ray local` starts one on this machine, on the loopback only,
-for the run; `--ray HOST:PORT` joins a running one (`ray start --head` there; the
+"""Reaching a Ray cluster: `--ray local` starts one on this machine for the run (its node
+address the loopback; Ray still binds some ports to the machine's address, so token
+authentication is what keeps other senders out: docs/distributed.md); `--ray HOST:PORT` joins a running one (`ray start --head` there; the
 token Ray's authentication writes must be on this machine too).  A process that is
 already connected (a test's fixture) keeps its connection.
 
@@ -23,7 +24,7 @@ def ray_module() -> Any:
     try:
         import ray
     except ImportError:
-        raise UsageError("--ray needs Ray: pip install 'ray>=2.9' (it is in the test dependencies)") from None
+        raise UsageError("--ray needs Ray: pip install 'ray>=2.52' (it is in the test dependencies)") from None
     return ray
 
 

@@ -81,7 +81,8 @@ class RayLink:
         os.replace(tmp, path)
 
 
-def checkpoint_file(folder: str, me: int, depth: int) -> str:
+def checkpoint_file(folder: str, me: int, depth: int | str) -> str:
+    """Shard `me`'s checkpoint of level `depth` (or "*": a glob pattern of all its levels')."""
     return os.path.join(folder, f"shard-{me}-level-{depth}.pkl")
 
 

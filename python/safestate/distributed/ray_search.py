@@ -188,7 +188,7 @@ class RayExplorer(ParallelExplorer):
             json.dump(data, f)
         os.replace(path + ".tmp", path)
         for me in range(self.workers):  # the older levels' files: this one is whole now
-            for old in glob.glob(checkpoint_file(folder, me, 0).replace("-level-0", "-level-*")):
+            for old in glob.glob(checkpoint_file(folder, me, "*") + "*"):  # and any partial .tmp
                 if old != checkpoint_file(folder, me, depth):
                     os.remove(old)
 
