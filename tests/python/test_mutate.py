@@ -131,6 +131,22 @@ def test_second_run_with_every_outcome_cached_checks_not_even_the_original(
     assert "check_model" in checks and third["cached"] == 0
 
 
+def test_cached_outcomes_survive_a_change_to_another_model_of_the_folder_not_to_a_module_the_spec_loads(
+        planted: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    other = planted.parent / "Other.tla"
+    other.write_text("---- MODULE Other ----\nEXTENDS Naturals\nK == 1\n====\n")
+    _, first = _mutate(planted, capsys, "--operator", "boundary")
+    other.write_text(other.read_text().replace("K == 1", "K == 2"))
+    _, second = _mutate(planted, capsys, "--operator", "boundary")
+    assert first["cached"] == 0 and second["cached"] == second["classified"] > 0
+    # Now the spec extends Other: a change to Other is a change to the spec's meaning.
+    planted.write_text(planted.read_text().replace("EXTENDS Naturals", "EXTENDS Naturals, Other"))
+    _, third = _mutate(planted, capsys, "--operator", "boundary")
+    other.write_text(other.read_text().replace("K == 2", "K == 3"))
+    _, fourth = _mutate(planted, capsys, "--operator", "boundary")
+    assert third["cached"] == 0 and fourth["cached"] == 0
+
+
 def test_min_score_fails_below_and_usage_errors_exit_2(planted: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code, _ = _mutate(planted, capsys, "--operator", "unchanged", "--min-score", "0.99")
     assert code == 3

@@ -1,7 +1,8 @@
 """The outcome cache: one JSON file per (mutant text, cfgs, projection, checker version).
 
-The key hashes the mutated model's files (every .tla and .cfg of its folder, the mutant
-applied), the cfg as used (invariants the original violates left out) and the screening
+The key hashes the mutated model's modules (the spec and every module of its folder it
+names, transitively: a superset of what EXTENDS and INSTANCE load; the mutant applied), so
+a change to another system's model keeps this one's outcomes; the cfg as used (invariants the original violates left out) and the screening
 cfg as used (or that there is none: an outcome decided without screening is not one
 decided with it, and the other way round -- the `cfg` it names differs), the inputs and
 observables, the budgets, and the sources of the checker and of the classifier (their
@@ -22,6 +23,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -83,14 +85,33 @@ def original_key(subject: Subject) -> str:
     return h.hexdigest()
 
 
+_WORD = re.compile(rb"[A-Za-z0-9_]+")
+
+
+def module_closure(model: Path) -> list[Path]:
+    """The spec and every .tla of its folder whose module name occurs as a word in a module
+    already included, transitively: each module EXTENDS or INSTANCE can load is one of them
+    (a name in a comment only adds a file, never leaves one out)."""
+    local = {f.stem.encode(): f for f in model.parent.glob("*.tla") if f.is_file()}
+    seen = {model.resolve()}
+    todo, out = [model], [model]
+    while todo:
+        for word in set(_WORD.findall(todo.pop().read_bytes())):
+            f = local.get(word)
+            if f is not None and f.resolve() not in seen:
+                seen.add(f.resolve())
+                todo.append(f)
+                out.append(f)
+    return sorted(out, key=lambda f: f.name)
+
+
 def _key(subject: Subject, mutant: Mutant | None, dropped: tuple[str, ...]) -> str:
     h = hashlib.sha256()
-    for f in sorted(subject.model.parent.iterdir()):
-        if f.is_file() and f.suffix in (".tla", ".cfg"):
-            data = f.read_bytes()
-            if mutant is not None and f.name == mutant.file:
-                data = mutant.apply(data)
-            h.update(f.name.encode() + b"\0" + data + b"\0")
+    for f in module_closure(subject.model):
+        data = f.read_bytes()
+        if mutant is not None and f.name == mutant.file:
+            data = mutant.apply(data)
+        h.update(f.name.encode() + b"\0" + data + b"\0")
     cfg = without_invariants(subject.cfg.read_text(encoding="utf-8"), dropped)
     h.update(b"cfg\0" + subject.model.name.encode() + b"\0" + cfg.encode())
     if subject.screen is None:
