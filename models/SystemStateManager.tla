@@ -245,6 +245,12 @@ VARIABLES inputs, event
 (*                    (0 once that jog is over: a JOG_STOP accepted, a    *)
 (*                    Cat 1 stop shown or every power output off; a Cat 2 *)
 (*                    pause keeps it for the Resume).                     *)
+(*   obs_ramp_cut  -- UCA-RSM-16: if the last cycle began with the        *)
+(*                    ramp-down request on and ended with a power output  *)
+(*                    off, the session output at its start and the speed  *)
+(*                    it read (the speed is a free signal, outside the    *)
+(*                    View); else NoCut, also after a Submit (the cycle's *)
+(*                    own state is the one checked).                      *)
 (*   obs_popped    -- RSM-13: the last event was a cycle that began with  *)
 (*                    a command queued (queue_length > 0).                *)
 (*   obs_submit_lost -- RSM-14: the last event was a Submit that neither  *)
@@ -256,7 +262,7 @@ VARIABLES obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_ramp,
           obs_booted, obs_self_test_failed,
           obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
           obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
-          obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis
+          obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis, obs_ramp_cut
 
 mgrVars  == <<state, selector, session_mode, stop_category, fault_code,
               last_reject_reason, command_result, estop_mismatch,
@@ -270,27 +276,14 @@ obsVars  == <<obs_estop, obs_open_a, obs_open_b, obs_disagree, obs_locked, obs_r
               obs_booted, obs_self_test_failed,
               obs_arming, obs_popped, obs_submit_lost, obs_link_lost,
               obs_was_enabled, obs_ready_lost, obs_panic, obs_t2_overspeed,
-              obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis>>
+              obs_fb_contactor, obs_fb_brake, obs_was_released, obs_jog_axis,
+              obs_ramp_cut>>
 histVars == <<inputs, obsVars>>
 vars     == <<mgrVars, histVars, event>>
 
 \* The held input signals (see the environment below).
 Held(in) == <<in.estop_a, in.estop_b, in.gate_a, in.gate_b, in.enable_a, in.enable_b,
               in.selector>>
-
-(* The fingerprint.  It leaves out what no guard, no environment choice   *)
-(* and no invariant reads, so that the quotient graph has the same        *)
-(* behaviours for every checked property: `event` (how this state was     *)
-(* reached), the free input signals of the last cycle (the invariants     *)
-(* read them only through observers), and the write-only status field     *)
-(* last_reject_reason.  Traces still show them: TLC rebuilds a trace from  *)
-(* real successor states.                                                 *)
-View == <<state, selector, session_mode, stop_category, fault_code,
-          command_result, estop_mismatch, safeguard_mismatch,
-          enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
-          resume_to, jog, queue, axes, stale_commands, estop_tested_a, estop_tested_b,
-          enable_release_required, contactor_fb_cycles, brake_fb_cycles,
-          contactor_fb_cmd, brake_fb_cmd, Held(inputs), obsVars>>
 
 \* The manager state as one record, so that the sections can be composed.
 Mgr == [state |-> state, selector |-> selector, session_mode |-> session_mode,
@@ -755,6 +748,9 @@ ObsFb(o, prev, cmd, fb) ==
     ELSE IF o > 0 /\ cmd # prev THEN 1
     ELSE Min(o + 1, FeedbackCycles + 1)
 
+\* No ramped stop cut short by the last event (obs_ramp_cut).
+NoCut == [session |-> "NONE", speed |-> "ZERO"]
+
 Cycle(in) ==
     LET m2  == AfterSafety(in)
         m   == AxesStep(CommandStep(m2, in), in)     \* = AfterCycle(in)
@@ -815,6 +811,8 @@ Cycle(in) ==
        /\ obs_jog_axis' = IF acc = "JOG_START" THEN Head(queue).axis
                           ELSE IF acc = "JOG_STOP" \/ ~PowerOut(m) \/ m.stop_category = "CAT1"
                           THEN 0 ELSE obs_jog_axis
+       /\ obs_ramp_cut' = IF RampDownOut(Mgr) /\ ~(ContactorOut(m) /\ DriveEnableOut(m) /\ BrakeReleaseOut(m))
+                          THEN [session |-> session_mode, speed |-> in.speed] ELSE NoCut
 
 \* A RESET queued after the E-stop release is "issued after the release"
 \* (RSM-05); the Submit's result (queued / queue_full) is its output.
@@ -824,6 +822,7 @@ Submit(c) ==
     /\ obs_estop' = IF obs_estop = "RELEASED" /\ c.kind = "RESET" /\ Len(queue) < QueueCapacity
                     THEN "RESET_ISSUED" ELSE obs_estop
     /\ obs_popped' = FALSE
+    /\ obs_ramp_cut' = NoCut
     \* RSM-14 over the outputs queue_length and last_reject_reason
     /\ obs_submit_lost' =
            ~IF Len(queue) < QueueCapacity THEN Len(queue') = Len(queue) + 1
@@ -971,6 +970,7 @@ Init ==
     /\ obs_fb_contactor = 0       /\ obs_fb_brake = 0 /\ obs_was_released = FALSE
     /\ enable_release_required = FALSE
     /\ obs_jog_axis = 0
+    /\ obs_ramp_cut = NoCut
 
 \* A full queue rejects every command alike (QUEUE_FULL, only
 \* last_reject_reason changes), so when it is full one representative
@@ -992,6 +992,24 @@ ramp_down_request    == RampDownOut(Mgr)
 reset_lamp           == ResetLampOut(Mgr)
 commanded_speed_mm_s == CommandedSpeedOut(Mgr)
 queue_length         == Len(queue)
+
+(* The fingerprint.  It leaves out what no guard, no environment choice   *)
+(* and no invariant reads, so that the quotient graph has the same        *)
+(* behaviours for every checked property: `event` (how this state was     *)
+(* reached), the free input signals of the last cycle (read by the       *)
+(* invariants through observers, and directly by two: the View keeps the  *)
+(* signal exactly where they read it -- a state is checked only when its   *)
+(* View is new), and the write-only status field last_reject_reason.      *)
+(* Traces still show them: TLC rebuilds a trace from real successor       *)
+(* states.                                                                 *)
+View == <<state, selector, session_mode, stop_category, fault_code,
+          command_result, estop_mismatch, safeguard_mismatch,
+          enabling_mismatch, selector_invalid, state_cycles, t2_confirmed,
+          resume_to, jog, queue, axes, stale_commands, estop_tested_a, estop_tested_b,
+          enable_release_required, contactor_fb_cycles, brake_fb_cycles,
+          contactor_fb_cmd, brake_fb_cmd, Held(inputs), obsVars,
+          IF brake_release THEN inputs.servo_ready ELSE FALSE,          \* UCA_BRAKE_ORDER
+          IF obs_ramp > MaxStopCycles + 1 THEN inputs.speed ELSE "ZERO">>  \* RSM11_STOP_BUDGET
 
 -----------------------------------------------------------------------------
 (******************************* Invariants ********************************)
@@ -1037,6 +1055,7 @@ TypeOK ==
     /\ obs_fb_contactor \in 0..(FeedbackCycles + 1) /\ obs_fb_brake \in 0..(FeedbackCycles + 1)
     /\ obs_was_released \in BOOLEAN
     /\ obs_jog_axis \in {0} \cup Axes
+    /\ obs_ramp_cut \in [session: Modes \cup {"NONE"}, speed: Speeds]
     /\ enable_release_required \in BOOLEAN
     /\ obs_popped \in BOOLEAN /\ obs_submit_lost \in BOOLEAN
     /\ obs_link_lost \in BOOLEAN
@@ -1259,6 +1278,21 @@ UCA_JOG_AXIS ==
         /\ obs_jog_axis \in RobotJoints
         /\ \A i \in DOMAIN axes : i # obs_jog_axis => axes[i] \notin PLCopen!MotionStates
 
+\* UCA-RSM-16 (RSM-11, IEC 60204-1 9.2.2: a Cat 1 stop removes power only
+\* once the stop is achieved): a ramped stop -- the ramp-down request on at
+\* the start of a cycle -- ends with a power output removed only in a cycle
+\* that read standstill, or with a Cat 0 cause read or shown in that cycle:
+\* a fault shown, an E-stop demand, the enabling device in PANIC in a manual
+\* session.  Power removed while the arm still moves turns the controlled
+\* stop into an uncontrolled one, whose stopping distance is not the one the
+\* risk assessment chose Cat 1 for (bound: the cycle that removes it).
+UCA_STOP_POWER_AT_STANDSTILL ==
+    obs_ramp_cut.session # "NONE" =>
+        \/ obs_ramp_cut.speed = "ZERO"
+        \/ Locked
+        \/ EstopTripped(inputs)
+        \/ EnablePanic(inputs) /\ obs_ramp_cut.session \in {"T1", "T2"}
+
 \* UCA-RSM-05 (RSM-09, ISO 10218-1 5.8.3, issue 29 item 6): once the
 \* enabling device was read in PANIC (either channel), no drive is enabled
 \* in a manual session until both channels were read RELEASED.
@@ -1354,6 +1388,7 @@ Witness_UCA_DISCREPANCY_CAUSE == ~(fault_code = "DISCREPANCY_ESTOP")
 Witness_UCA_JOG_AXIS         == ~(commanded_speed_mm_s > 0)
 Witness_UCA_JOG_AXIS_RESUMED == ~(commanded_speed_mm_s > 0 /\ last_accepted = "RESUME")
 \* (the panic observer set and the device back in MIDDLE, unpowered)
+Witness_UCA_STOP_POWER_AT_STANDSTILL == ~(obs_ramp_cut.session # "NONE" /\ ~Locked)
 Witness_UCA_PANIC_REARM      == ~(obs_panic /\ inputs.enable_a = "MIDDLE" /\ inputs.enable_b = "MIDDLE")
 Witness_RSM13_RESULT         == ~(obs_popped /\ command_result # "ACCEPTED")
 \* (a full queue: the next Submit takes RSM-14's QUEUE_FULL branch; that Submit

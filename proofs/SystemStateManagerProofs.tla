@@ -119,4 +119,5 @@ Strengthen_ALL ==
     /\ RSM07_ARMING_TIMEOUT /\ RSM13_RESULT /\ RSM14_QUEUE /\ RSM13_LINK_LOSS
     /\ UCA_BRAKE_ORDER /\ UCA_READY_LOST /\ UCA_PANIC_REARM /\ UCA_T2_OVERSPEED
     /\ UCA_FEEDBACK /\ UCA_FEEDBACK_CAUSE /\ UCA_DISCREPANCY_CAUSE /\ UCA_JOG_AXIS
+    /\ UCA_STOP_POWER_AT_STANDSTILL
 =============================================================================
