@@ -25,18 +25,24 @@ void expect_ramp_powered_while_moving(Rig& r, int n) {
   }
 }
 
-// UCA-RSM-16: the safeguard opened in AUTO with the arm moving: a Cat 1 ramp keeps power on
-// through every cycle that measures motion, and the first cycle that measures standstill
-// removes it, with no fault.
-// req: RSM-08 RSM-11
-TEST(UCA_RSM_16_StopPowerAtStandstill, ACat1StopInAutoKeepsPowerUntilTheArmIsAtStandstill) {
-  Rig r;
+/// AUTO_RUNNING with the arm moving, then the safeguard opened on both channels: a Cat 1
+/// ramp (C13) with power on.
+void to_cat1_ramp_in_auto(Rig& r) {
   r.to_auto_running();
   r.in.safeguard_closed = {false, false};
   r.cycle();
   ASSERT_EQ(r.state(), StateId::Stopping);
   ASSERT_EQ(r.st().stop_category, StopCategory::Cat1);
   ASSERT_TRUE(powered(r.out));
+}
+
+// UCA-RSM-16: the safeguard opened in AUTO with the arm moving: a Cat 1 ramp keeps power on
+// through every cycle that measures motion, and the first cycle that measures standstill
+// removes it, with no fault.
+// req: RSM-08 RSM-11
+TEST(UCA_RSM_16_StopPowerAtStandstill, ACat1StopInAutoKeepsPowerUntilTheArmIsAtStandstill) {
+  Rig r;
+  to_cat1_ramp_in_auto(r);
   expect_ramp_powered_while_moving(r, 50);
   r.in.qd = kRest;
   r.cycle();
@@ -69,8 +75,7 @@ TEST(UCA_RSM_16_StopPowerAtStandstill, AnArmStillMovingAtTheStopBudgetIsUnpowere
   Config c = flange_config();
   c.max_stop_cycles = 5;
   Rig r(c);
-  r.to_auto_running();
-  r.in.safeguard_closed = {false, false};
+  to_cat1_ramp_in_auto(r);
   r.in.qd = kSlow;
   int cycles = 0;
   do {
@@ -88,10 +93,7 @@ TEST(UCA_RSM_16_StopPowerAtStandstill, AnArmStillMovingAtTheStopBudgetIsUnpowere
 // req: RSM-05 RSM-03
 TEST(UCA_RSM_16_StopPowerAtStandstill, AnEstopDuringTheRampRemovesPowerAtOnce) {
   Rig r;
-  r.to_auto_running();
-  r.in.safeguard_closed = {false, false};
-  r.cycle();
-  ASSERT_EQ(r.state(), StateId::Stopping);
+  to_cat1_ramp_in_auto(r);
   r.in.estop_closed = {false, false};
   r.in.qd = kSlow;
   r.cycle();
