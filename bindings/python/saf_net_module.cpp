@@ -221,7 +221,14 @@ PYBIND11_MODULE(_saf_net, m) {
   m.def(
       "store_sequence_file",
       [](const std::string& path, const py::object& estop, const py::object& subsystem, std::uint64_t service) {
-        const SequenceFileResult r = store_sequence_file(path.c_str(), sequence_state(estop, subsystem, service));
+        const SequenceState state = sequence_state(estop, subsystem, service);
+        SequenceFileResult r{};
+        {
+          // The fsyncs take milliseconds: the service's writer thread stores while the
+          // scan cycles go on.
+          py::gil_scoped_release release;
+          r = store_sequence_file(path.c_str(), state);
+        }
         if (r.error != SequenceFileError::None) throw py::value_error(sequence_file_error(path, r));
       },
       py::arg("path"), py::arg("estop"), py::arg("subsystem"), py::arg("service"),

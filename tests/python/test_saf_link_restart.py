@@ -124,6 +124,23 @@ def test_a_clear_captured_before_a_restart_is_stale_after_it(tmp_path: Path) -> 
                 p.stop()
 
 
+def test_a_clean_stop_stores_the_last_accepted_sequence(tmp_path: Path) -> None:
+    sub, svc, cli, _, _ = start(tmp_path, sequence_file=True)
+    try:
+        svc.wait_for(is_state("OPERATIONAL"))
+        cli.send("quit")
+        last = cli.wait_for(lambda e: e.get("event") == "stopped")["last_sequence"]
+        svc.wait_for(lambda e: e.get("event") == "state" and e.get("after") == "EMERGENCY")  # timed out: all read
+        assert svc.stop(signal.SIGTERM) == 0
+        lines = (tmp_path / "saf.seq").read_text(encoding="utf-8").splitlines()
+        assert lines[0] == "safestate-saf-sequence 1"
+        assert lines[1] == f"estop {last}"
+        assert lines[2].startswith("subsystem ") and lines[2] != "subsystem none"
+    finally:
+        for p in (cli, svc, sub):
+            p.stop()
+
+
 def test_a_corrupt_sequence_file_stops_the_service_with_the_file_and_line(tmp_path: Path) -> None:
     config, _ = write_config(tmp_path, sequence_file=True)
     seq = tmp_path / "saf.seq"
