@@ -155,6 +155,21 @@ def test_a_corrupt_sequence_file_stops_the_service_with_the_file_and_line(tmp_pa
     assert seq.read_text(encoding="utf-8").startswith("safestate-saf-sequence 1\nestop twelve")  # not reset
 
 
+@pytest.mark.parametrize(("value", "expected"), [
+    ("5", "[security] sequence_file: expected a path (relative to the configuration file), got 5"),
+    ('"no/such/folder/saf.seq"', "saf.seq: sequence file cannot be written (No such file or directory)"),
+])
+def test_a_bad_sequence_file_setting_is_one_line_and_exit_2(tmp_path: Path, value: str, expected: str) -> None:
+    config, _ = write_config(tmp_path, sequence_file=True)
+    config.write_text(config.read_text(encoding="utf-8").replace('sequence_file = "saf.seq"',
+                                                                 f"sequence_file = {value}"), encoding="utf-8")
+    svc = Process("serve", config)
+    svc.proc.wait(timeout=20)
+    err = svc.proc.stderr.read() if svc.proc.stderr else ""
+    assert svc.proc.returncode == 2
+    assert expected in err and err.count("\n") == 1, err
+
+
 def test_a_process_on_the_dead_services_port_does_not_release_the_subsystem(tmp_path: Path) -> None:
     sub, svc, cli, ports, _ = start(tmp_path)
     impostor = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
