@@ -49,7 +49,7 @@ echo "sanitized runs failed: $asan_failures (tests: $(echo $TESTS | wc -w), plus
 echo "== 2. libFuzzer on the codec and intake ($RUNS executions)"
 "$CLANG" -std=c++17 -O1 -g -Iinclude -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
   src/saf/codec.cpp src/saf/config.cpp src/saf/inbound_batch.cpp src/saf/safety_service.cpp \
-  src/saf/intake.cpp src/saf/estop_extension.cpp src/saf/sha256.cpp src/saf/source.cpp \
+  src/saf/intake.cpp src/saf/estop_extension.cpp src/saf/link_auth.cpp src/saf/sha256.cpp src/saf/source.cpp \
   src/saf/fuzz_codec.cpp -o "$OUT/saf_fuzz_codec"
 # Seeds: one valid datagram of each of the nine types (design §10).
 printf '\x3c\x01\x00\x00\x01\x00\x00\x00\x01\x00\x01' >"$OUT/corpus/set_estop"

@@ -15,6 +15,8 @@
 
 #include "safestate/saf/estop_extension.hpp"
 #include "safestate/saf/key_file.hpp"
+#include "safestate/saf/link_auth.hpp"
+#include "safestate/saf/sequence_file.hpp"
 #include "safestate/saf/service_host.hpp"
 #include "safestate/saf/sha256.hpp"
 
@@ -120,6 +122,40 @@ py::dict counters(const ServiceHost& h) {
   return d;
 }
 
+py::object optional_u64(bool have, std::uint64_t v) { return have ? py::object(py::int_(v)) : py::object(py::none()); }
+
+py::dict sequence_dict(const SequenceState& s) {
+  py::dict d;
+  d["estop"] = optional_u64(s.have_estop, s.estop);
+  d["subsystem"] = optional_u64(s.have_subsystem, s.subsystem);
+  d["service"] = s.service;
+  return d;
+}
+
+SequenceState sequence_state(const py::object& estop, const py::object& subsystem, std::uint64_t service) {
+  SequenceState s{};
+  s.have_estop = !estop.is_none();
+  s.estop = s.have_estop ? estop.cast<std::uint64_t>() : 0;
+  s.have_subsystem = !subsystem.is_none();
+  s.subsystem = s.have_subsystem ? subsystem.cast<std::uint64_t>() : 0;
+  s.service = service;
+  return s;
+}
+
+std::string sequence_file_error(const std::string& path, const SequenceFileResult& r) {
+  std::string why = path + ": sequence file " + std::string(to_string(r.error));
+  if (r.error == SequenceFileError::CannotOpen || r.error == SequenceFileError::CannotWrite) {
+    why += std::string(" (") + std::strerror(r.error_number) + ")";
+  } else if (r.error == SequenceFileError::Permissions) {
+    char mode[8];
+    std::snprintf(mode, sizeof mode, "%04o", r.mode);
+    why += std::string(", it is ") + mode;
+  } else if (r.error == SequenceFileError::BadFormat) {
+    why = path + ":" + std::to_string(r.line) + ": sequence file: expected '" + std::string(r.expected) + "'";
+  }
+  return why;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_saf_net, m) {
@@ -170,12 +206,57 @@ PYBIND11_MODULE(_saf_net, m) {
       py::arg("emergency"), py::arg("client_id"), py::arg("sequence"), py::arg("key") = py::none(),
       "A Set Estop of the extension (design §14): Sequenced, or Authenticated with a key.");
 
+  m.def(
+      "load_sequence_file",
+      [](const std::string& path) -> py::object {
+        const SequenceFileResult r = load_sequence_file(path.c_str());
+        if (r.error == SequenceFileError::Missing) return py::none();
+        if (r.error != SequenceFileError::None) throw py::value_error(sequence_file_error(path, r));
+        return sequence_dict(r.state);
+      },
+      py::arg("path"),
+      "The replay state {estop, subsystem, service} of a sequence file, None when it does not exist; "
+      "ValueError naming the file (and line) and what was expected.");
+
+  m.def(
+      "store_sequence_file",
+      [](const std::string& path, const py::object& estop, const py::object& subsystem, std::uint64_t service) {
+        const SequenceState state = sequence_state(estop, subsystem, service);
+        SequenceFileResult r{};
+        {
+          // The fsyncs take milliseconds: the service's writer thread stores while the
+          // scan cycles go on.
+          py::gil_scoped_release release;
+          r = store_sequence_file(path.c_str(), state);
+        }
+        if (r.error != SequenceFileError::None) throw py::value_error(sequence_file_error(path, r));
+      },
+      py::arg("path"), py::arg("estop"), py::arg("subsystem"), py::arg("service"),
+      "Writes the replay state atomically (temporary file 0600, fsync, rename); ValueError with the reason.");
+
+  m.def(
+      "link_seal",
+      [](const py::bytes& message, std::uint64_t sequence, bool to_subsystem, const py::bytes& key) {
+        const std::string_view v = message;
+        Encoded e{};
+        if (v.size() > e.bytes.size()) throw py::value_error("a message is at most 64 bytes");
+        std::memcpy(e.bytes.data(), v.data(), v.size());
+        e.size = v.size();
+        const Encoded s =
+            link_seal(e, sequence, to_subsystem ? LinkDirection::ServiceToSubsystem : LinkDirection::SubsystemToService,
+                      key_of(std::optional<py::bytes>(key)));
+        return to_bytes(s.bytes.data(), s.size);
+      },
+      py::arg("message"), py::arg("sequence"), py::arg("to_subsystem"), py::arg("key"),
+      "The link's sealed form of a seed-form message (design §15; the C++ implementation).");
+
   py::class_<ServiceHost, std::unique_ptr<ServiceHost>>(m, "ServiceHost", py::module_local())
       .def(py::init([](const std::string& address, std::uint16_t client_port, std::uint16_t subsystem_port,
                        std::uint32_t component_id, const std::string& client_address, std::uint16_t client_peer_port,
                        std::uint32_t client_component_id, const std::string& subsystem_address,
                        std::uint16_t subsystem_peer_port, const py::dict& parameters, bool require_sequence,
-                       std::uint64_t replay_window, const std::optional<py::bytes>& key) {
+                       std::uint64_t replay_window, const std::optional<py::bytes>& key,
+                       std::uint64_t link_sequence_start) {
              HostConfig c{};
              c.parameters = parameters_of(parameters);
              c.component_id = component_id;
@@ -188,13 +269,14 @@ PYBIND11_MODULE(_saf_net, m) {
              c.intake.require_sequence = require_sequence;
              c.intake.replay_window = replay_window;
              c.intake.key = key_of(key);
+             c.link_sequence_start = link_sequence_start;
              return std::make_unique<ServiceHost>(c);
            }),
            py::kw_only(), py::arg("address"), py::arg("client_port"), py::arg("subsystem_port"),
            py::arg("component_id"), py::arg("client_address"), py::arg("client_peer_port"),
            py::arg("client_component_id"), py::arg("subsystem_address"), py::arg("subsystem_peer_port"),
            py::arg("parameters"), py::arg("require_sequence") = true, py::arg("replay_window") = 64,
-           py::arg("key") = py::none())
+           py::arg("key") = py::none(), py::arg("link_sequence_start") = 1)
       .def(
           "open",
           [](ServiceHost& h) {
@@ -208,6 +290,16 @@ PYBIND11_MODULE(_saf_net, m) {
           "step", [](ServiceHost& h, bool hardware_fault) { return cycle_dict(h.step(hardware_fault)); },
           py::arg("hardware_fault") = false, "One scan cycle; what it did (state change, rejections, sent).")
       .def("counters", &counters, "Accepted, rejected per reason, kernel drops, overflow cycles.")
+      .def(
+          "sequences", [](const ServiceHost& h) { return sequence_dict(h.sequences()); },
+          "The replay state for the sequence file: {estop, subsystem, service}.")
+      .def(
+          "restore",
+          [](ServiceHost& h, const py::object& estop, const py::object& subsystem, std::uint64_t service) {
+            h.restore(sequence_state(estop, subsystem, service));
+          },
+          py::arg("estop"), py::arg("subsystem"), py::arg("service"),
+          "Restores a sequence file's state before the first cycle (our own next sequence only rises).")
       .def_property_readonly("state", [](const ServiceHost& h) { return str(to_string(h.service().observe().state)); })
       .def_property_readonly("client_port", &ServiceHost::client_port)
       .def_property_readonly("subsystem_port", &ServiceHost::subsystem_port)

@@ -3,7 +3,8 @@
 // string is decoded; a rejected datagram must not change the service; an accepted one must
 // encode back to the same bytes (an authenticated Set Estop up to its MAC); the deployed
 // intake judges it from the client's and from another source without crashing, and
-// accepts nothing from another source. Built with clang -fsanitize=fuzzer,address,undefined
+// accepts nothing from another source, and on the subsystem socket (with a key) nothing but
+// a datagram that is exactly a sealed one. Built with clang -fsanitize=fuzzer,address,undefined
 // by bench/saf_fuzz.sh.
 #include <cstddef>
 #include <cstdint>
@@ -35,7 +36,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     d.size = size;
     if (size > 0) std::memcpy(d.bytes.data(), data, size < d.bytes.size() ? size : d.bytes.size());
     (void)intake.judge(d, Source{c.client, SocketRole::Client}, size > 0 && data[0] == 0x01);
-    (void)intake.judge(d, Source{c.subsystem, SocketRole::Subsystem}, false);
+    // With the key, the subsystem socket accepts only a sealed datagram whose MAC verifies
+    // (design §15): sealing what it handed on, with its sequence, gives the input back.
+    Datagram opened{};
+    const IntakeRejection sub = intake.judge(d, Source{c.subsystem, SocketRole::Subsystem}, false, opened);
+    if (sub.reason == IntakeReason::None) {
+      Encoded inner{};
+      inner.size = opened.size;
+      std::memcpy(inner.bytes.data(), opened.bytes.data(), opened.size);
+      const std::uint64_t seq = intake.sequences().subsystem;
+      const Encoded again = link_seal(inner, seq, LinkDirection::SubsystemToService, c.key);
+      if (again.size != size || std::memcmp(again.bytes.data(), data, size) != 0) std::abort();
+    }
     const IntakeRejection other = intake.judge(d, Source{Peer{kLoopback, 4002}, SocketRole::Client}, false);
     if (other.reason == IntakeReason::None) std::abort();  // nothing is accepted from an unconfigured source
   }

@@ -4,7 +4,21 @@
 namespace safestate::saf {
 
 ServiceHost::ServiceHost(const HostConfig& config) noexcept
-    : config_(config), service_(config.parameters, config.component_id), intake_(config.intake) {}
+    : config_(config),
+      service_(config.parameters, config.component_id),
+      intake_(config.intake),
+      link_next_(config.link_sequence_start) {}
+
+SequenceState ServiceHost::sequences() const noexcept {
+  SequenceState s = intake_.sequences();
+  s.service = link_next_;
+  return s;
+}
+
+void ServiceHost::restore(const SequenceState& s) noexcept {
+  intake_.restore(s);
+  if (s.service > link_next_) link_next_ = s.service;
+}
 
 HostError ServiceHost::open() noexcept {
   if (client_.open(config_.address, config_.client_port) != UdpError::None) {
@@ -50,7 +64,13 @@ HostCycle ServiceHost::step(bool hardware_fault) noexcept {
   c.after = service_.observe().state;
   c.sent = r.outbox;
   for (std::size_t i = 0; i < r.outbox.count; ++i) {
-    (void)subsystem_.send_to(config_.intake.subsystem, encode(r.outbox.messages[i]));
+    const Encoded e = encode(r.outbox.messages[i]);
+    if (config_.intake.key.present()) {
+      (void)subsystem_.send_to(config_.intake.subsystem,
+                               link_seal(e, link_next_++, LinkDirection::ServiceToSubsystem, config_.intake.key));
+    } else {
+      (void)subsystem_.send_to(config_.intake.subsystem, e);
+    }
   }
   return c;
 }

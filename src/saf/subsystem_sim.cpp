@@ -8,6 +8,15 @@ std::size_t SubsystemSim::step() noexcept {
   Datagram d{};
   std::uint16_t from = 0;
   while (ep_.receive_one(d, &from) == UdpError::None) {
+    if (key_.present()) {
+      Datagram opened{};
+      const LinkOpened lo = link_open(d.bytes.data(), d.size, LinkDirection::ServiceToSubsystem, key_, rx_, opened);
+      if (lo.verdict != LinkVerdict::Ok) {
+        ++rejected_[static_cast<std::size_t>(lo.verdict)];
+        continue;
+      }
+      d = opened;
+    }
     const DecodeResult r = decode(d.bytes.data(), d.size);
     if (!r.ok()) continue;
     handle(r.message, from);
@@ -16,8 +25,17 @@ std::size_t SubsystemSim::step() noexcept {
   return handled;
 }
 
+void SubsystemSim::send(std::uint16_t to, const Message& m) noexcept {
+  const Encoded e = encode(m);
+  if (key_.present()) {
+    (void)ep_.send_to(to, link_seal(e, next_sequence_++, LinkDirection::SubsystemToService, key_));
+  } else {
+    (void)ep_.send_to(to, e);
+  }
+}
+
 void SubsystemSim::report_control(std::uint16_t to) noexcept {
-  (void)ep_.send_to(to, encode(Message::report_control(holder_, holder_authority_)));
+  send(to, Message::report_control(holder_, holder_authority_));
 }
 
 void SubsystemSim::handle(const Message& m, std::uint16_t from) noexcept {
@@ -36,19 +54,19 @@ void SubsystemSim::handle(const Message& m, std::uint16_t from) noexcept {
         holder_ = m.component_id;
         holder_authority_ = m.authority;
         holder_port_ = from;
-        (void)ep_.send_to(from, encode(Message::confirm_control(ControlResponse::Accepted)));
+        send(from, Message::confirm_control(ControlResponse::Accepted));
       } else {
-        (void)ep_.send_to(from, encode(Message::confirm_control(ControlResponse::InsufficientAuthority)));
+        send(from, Message::confirm_control(ControlResponse::InsufficientAuthority));
       }
       break;
     case MessageId::QueryControl: report_control(from); break;
     case MessageId::SetSubsystemState:
       if (holder_ != 0 && from == holder_port_ && m.subsystem_state != state_) {
         state_ = m.subsystem_state;
-        (void)ep_.send_to(from, encode(Message::report_subsystem_state(state_)));
+        send(from, Message::report_subsystem_state(state_));
       }
       break;
-    case MessageId::QueryHealthSummary: (void)ep_.send_to(from, encode(Message::report_health(health_))); break;
+    case MessageId::QueryHealthSummary: send(from, Message::report_health(health_)); break;
     default: break;
   }
 }

@@ -34,7 +34,8 @@ def free_ports(n: int) -> list[int]:
     return ports
 
 
-def write_config(folder: Path, *, key: bool = True, service_timeout: float = 1.0) -> tuple[Path, dict[str, int]]:
+def write_config(folder: Path, *, key: bool = True, service_timeout: float = 1.0, sequence_file: bool = False,
+                 replay_window: int = 64) -> tuple[Path, dict[str, int]]:
     names = ["service", "service_subsystem", "client", "subsystem"]
     ports = dict(zip(names, free_ports(len(names))))
     key_line = ""
@@ -43,6 +44,8 @@ def write_config(folder: Path, *, key: bool = True, service_timeout: float = 1.0
         key_path.write_text(KEY_HEX + "\n", encoding="utf-8")
         key_path.chmod(0o600)
         key_line = 'key_file = "saf.key"'
+    if sequence_file:
+        key_line += '\nsequence_file = "saf.seq"'
     text = f"""\
 [service]
 address = "127.0.0.1"
@@ -70,7 +73,7 @@ AUTHORITYCODE = 225
 
 [security]
 require_sequence = true
-replay_window = 64
+replay_window = {replay_window}
 {key_line}
 """
     path = folder / "saf.toml"

@@ -1,5 +1,5 @@
-"""Issue 30 part B (docs/design/safety-service.md §14): the Set Estop extension and its
-HMAC agree between the C++ (safestate._saf_net) and the simulators' Python wire format
+"""Issue 30 part B (docs/design/safety-service.md §14, §15): the Set Estop extension, the
+sealed subsystem link and their HMAC agree between the C++ (safestate._saf_net) and the simulators' Python wire format
 (written from the design page, with Python's hmac); `safestate saf` fails with one line
 and exit code 2 on a missing configuration and on a port that is taken."""
 
@@ -39,6 +39,28 @@ def test_cpp_hmac_sha256_equals_pythons_on_random_keys_and_messages() -> None:
         key = bytes(rng.randrange(256) for _ in range(rng.randrange(0, 200)))
         data = bytes(rng.randrange(256) for _ in range(rng.randrange(0, 300)))
         assert _saf_net.hmac_sha256(key, data) == hmac.new(key, data, hashlib.sha256).digest()
+
+
+def test_cpp_and_python_sealed_link_messages_are_byte_identical_and_open() -> None:
+    """The link's sealed form (design §15.2) from the C++ (the service's end) and from
+    Python (the simulator's end) agree, and Python's open gives the seed form back."""
+    rng = random.Random(152)
+    seeds = [wire.report_health("ERROR"), wire.confirm_control(wire.CONTROL_ACCEPTED), wire.report_control(7, 225),
+             wire.report_subsystem_state("EMERGENCY"), wire.message(wire.QUERY_CONTROL),
+             wire.message(wire.SET_SUBSYSTEM_STATE, bytes([1])),
+             wire.message(wire.REQUEST_CONTROL, bytes([0, 225, 3, 2, 1, 0]))]
+    for _ in range(100):
+        seed = rng.choice(seeds)
+        key = bytes(rng.randrange(256) for _ in range(rng.randrange(16, 65)))
+        sequence = rng.randrange(1 << 64)
+        to_subsystem = rng.random() < 0.5
+        direction = wire.TO_SUBSYSTEM if to_subsystem else wire.TO_SERVICE
+        sealed = _saf_net.link_seal(seed, sequence, to_subsystem, key)
+        assert sealed == wire.seal(seed, sequence, direction, key)
+        assert wire.open_sealed(sealed, direction, key, wire.LinkReceiver()) == ("OK", seed)
+        other = wire.TO_SERVICE if to_subsystem else wire.TO_SUBSYSTEM
+        assert wire.open_sealed(sealed, other, key, wire.LinkReceiver())[0] == "BAD_MAC"
+        assert wire.open_sealed(seed, direction, key, wire.LinkReceiver())[0] == "UNAUTHENTICATED"
 
 
 def _saf(*args: str) -> subprocess.CompletedProcess[str]:

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Why the intake rejected a datagram before the core saw it (design §14): the codec's
-// reasons (§10) and those of sender binding, freshness, authentication and flood.
+// reasons (§10) and those of sender binding, freshness, authentication and flood, and
+// of the authenticated subsystem link (§15).
 #pragma once
 
 #include <cstddef>
@@ -20,18 +21,22 @@ enum class IntakeReason : std::uint8_t {
   BadLength,
   FieldRange,
   NotIncoming,
-  EstopWrongSource,      // Set Estop not from the configured Safety Client address and port
-  EstopWrongComponent,   // Set Estop naming another component id than the configured client's
-  EstopUnsequenced,      // the seed's Set Estop (no sequence) where the extension is required
-  EstopUnauthenticated,  // a Set Estop without MAC where a key is configured
-  EstopBadMac,           // a MAC that does not verify (or a MAC where no key is configured)
-  EstopReplay,           // sequence not above the highest accepted, within the replay window
-  EstopStale,            // sequence older than the replay window
-  EstopClearInOverflow,  // a clear Set Estop while the client socket overflowed or is backlogged
-  ReportWrongSource,     // a subsystem message not from the configured subsystem, or on the client socket
+  EstopWrongSource,       // Set Estop not from the configured Safety Client address and port
+  EstopWrongComponent,    // Set Estop naming another component id than the configured client's
+  EstopUnsequenced,       // the seed's Set Estop (no sequence) where the extension is required
+  EstopUnauthenticated,   // a Set Estop without MAC where a key is configured
+  EstopBadMac,            // a MAC that does not verify (or a MAC where no key is configured)
+  EstopReplay,            // sequence not above the highest accepted, within the replay window
+  EstopStale,             // sequence older than the replay window
+  EstopClearInOverflow,   // a clear Set Estop while the client socket overflowed or is backlogged
+  ReportWrongSource,      // a subsystem message not from the configured subsystem, or on the client socket
+  ReportUnauthenticated,  // with a key: a datagram on the subsystem socket without the link trailer (§15)
+  ReportBadMac,           // with a key: the link trailer's MAC does not verify (key or direction)
+  ReportReplay,           // with a key: link sequence not above the highest accepted, within the window
+  ReportStale,            // with a key: link sequence older than the window
 };
 
-inline constexpr std::size_t kIntakeReasonCount = 17;
+inline constexpr std::size_t kIntakeReasonCount = 21;
 
 [[nodiscard]] constexpr IntakeReason intake_reason_of(DecodeError e) noexcept {
   return static_cast<IntakeReason>(static_cast<std::uint8_t>(e));
@@ -56,11 +61,15 @@ inline constexpr std::size_t kIntakeReasonCount = 17;
     case IntakeReason::EstopStale: return "ESTOP_STALE";
     case IntakeReason::EstopClearInOverflow: return "ESTOP_CLEAR_IN_OVERFLOW";
     case IntakeReason::ReportWrongSource: return "REPORT_WRONG_SOURCE";
+    case IntakeReason::ReportUnauthenticated: return "REPORT_UNAUTHENTICATED";
+    case IntakeReason::ReportBadMac: return "REPORT_BAD_MAC";
+    case IntakeReason::ReportReplay: return "REPORT_REPLAY";
+    case IntakeReason::ReportStale: return "REPORT_STALE";
   }
   return "?";
 }
 
 static_assert(static_cast<std::size_t>(IntakeReason::NotIncoming) + 1 == kDecodeErrorCount);
-static_assert(static_cast<std::size_t>(IntakeReason::ReportWrongSource) + 1 == kIntakeReasonCount);
+static_assert(static_cast<std::size_t>(IntakeReason::ReportStale) + 1 == kIntakeReasonCount);
 
 }  // namespace safestate::saf

@@ -23,6 +23,9 @@ struct HostConfig {
   std::uint16_t client_port = 0;                    // where the Safety Client sends (0: any)
   std::uint16_t subsystem_port = 0;                 // our socket towards the subsystem (0: any)
   IntakeConfig intake{};                            // the client's and the subsystem's address
+  // With a key: the first sequence of our sealed messages to the subsystem (design §15; the
+  // process passes the wall clock in microseconds, a restore can only raise it).
+  std::uint64_t link_sequence_start = 1;
 };
 
 enum class HostError : std::uint8_t { None, ClientSocket, SubsystemSocket, Connect };
@@ -57,7 +60,8 @@ class ServiceHost {
   /// `last_errno()` tells why.
   [[nodiscard]] HostError open() noexcept;
   /// One scan cycle: read (subsystem socket first, then the client socket, at most
-  /// kMaxInboundPerCycle in all), intake, core, send the outbox to the subsystem.
+  /// kMaxInboundPerCycle in all), intake, core, send the outbox to the subsystem (sealed
+  /// with a key, §15).
   HostCycle step(bool hardware_fault = false) noexcept;
 
   [[nodiscard]] const SafetyService& service() const noexcept { return service_; }
@@ -69,6 +73,13 @@ class ServiceHost {
   [[nodiscard]] std::uint64_t send_dropped() const noexcept { return subsystem_.send_dropped(); }
   [[nodiscard]] int last_errno() const noexcept { return errno_; }
 
+  /// The replay state for the sequence file (design §15): the intake's highest accepted
+  /// sequences and the next sequence of our sealed messages.
+  [[nodiscard]] SequenceState sequences() const noexcept;
+  /// Restores a sequence file's state before the first cycle; our own next sequence only
+  /// rises (the larger of the stored one and link_sequence_start).
+  void restore(const SequenceState& s) noexcept;
+
  private:
   HostConfig config_;
   SafetyService service_;
@@ -78,6 +89,7 @@ class ServiceHost {
   InboundBatch received_{};
   InboundBatch accepted_{};
   std::uint64_t overflow_cycles_ = 0;
+  std::uint64_t link_next_ = 1;
   int errno_ = 0;
 };
 

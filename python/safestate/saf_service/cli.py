@@ -1,16 +1,20 @@
 """`safestate saf`: the Safety service as processes on the configured addresses
-(docs/design/safety-service.md §14).
+(docs/design/safety-service.md §14, §15).
 
   safestate saf serve     --config saf.toml   the service (C++ host: sender binding, replay
-                                              window, optional HMAC, kernel drop count)
-  safestate saf client    --config saf.toml   the Safety Client simulator (stdin: set, clear, silent, quit)
+                                              window, optional HMAC on Set Estop and on the
+                                              subsystem link, the sequence file kept across
+                                              restarts, kernel drop count)
+  safestate saf client    --config saf.toml   the Safety Client simulator (stdin: set, clear, silent,
+                                              replay HEX, quit)
   safestate saf subsystem --config saf.toml   the subsystem simulator (stdin: health X, quit);
                                               EMERGENCY when the service falls silent
 
 Each logs one line per event on stdout (--json: one JSON object per line). SIGTERM or
 SIGINT stops a process after the current cycle with exit code 0; a configuration error
-(file:line and what was expected), an unusable key file (not mode 0600/0400) or a port
-that cannot be bound is one line on stderr and exit code 2.
+(file:line and what was expected), an unusable key file (not mode 0600/0400), a corrupt
+or unreadable sequence file (file:line and what was expected) or a port that cannot be
+bound is one line on stderr and exit code 2.
 """
 
 from __future__ import annotations

@@ -3,7 +3,9 @@ CYCLEINTERVAL from the configured address and port to the service, in the extens
 form (design §14: its component id, a sequence number started from the wall clock in
 microseconds so that a restarted client keeps rising, the HMAC when a key file is
 configured). Commands on stdin, one per line: `set` (press), `clear` (release),
-`silent` (stop sending: the E-stop times out), `quit`."""
+`silent` (stop sending: the E-stop times out), `replay HEX` (send these bytes once from
+the client's own socket: what a process that forges the client's address could send, for
+the tests' replay of a captured datagram), `quit`."""
 
 from __future__ import annotations
 
@@ -40,13 +42,21 @@ def run(args: argparse.Namespace) -> int:
     def command(line: str) -> None:
         nonlocal mode, announce, quit_requested
         word = line.lower()
-        if word == "quit":
+        if word.startswith("replay "):
+            try:
+                raw = bytes.fromhex(word.split(None, 1)[1])
+                sock.sendto(raw, target)
+                log.emit("replayed", f"{len(raw)} bytes sent once", datagram=raw.hex())
+            except (ValueError, OSError) as e:
+                log.emit("error", f"replay: {e}", command=line)
+        elif word == "quit":
             quit_requested = True
         elif word in MODES:
             if word != mode:
                 mode, announce = word, True
         elif word:
-            log.emit("error", f"unknown command {line!r} (one of {', '.join(MODES)}, quit)", command=line)
+            log.emit("error", f"unknown command {line!r} (one of {', '.join(MODES)}, replay HEX, quit)",
+                     command=line)
 
     ticker = Ticker(cfg.parameters["CYCLEINTERVAL"])
     log.emit("started", f"{cfg.client.address}:{cfg.client.port} -> {target[0]}:{target[1]}, mode {mode}",

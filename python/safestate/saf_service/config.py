@@ -1,6 +1,7 @@
 """The configuration file of `safestate saf` (saf.toml, design §14): addresses, ports and
 component ids of the service, the Safety Client and the subsystem, the six SAF-04
-parameters, and the freshness and authentication settings. One file serves all three
+parameters, and the freshness and authentication settings (the key file of both links,
+the service's sequence file). One file serves all three
 processes, so that their views of each other cannot disagree."""
 
 from __future__ import annotations
@@ -44,6 +45,7 @@ class SafConfig:
     require_sequence: bool
     replay_window: int
     key_file: Path | None
+    sequence_file: Path | None  # the service's replay state across a restart (design §15)
 
     def binding_parameters(self) -> dict[str, float | int]:
         return {**self.parameters, "AUTHORITYCODE": self.authority_code}
@@ -155,6 +157,9 @@ def load(path: str | Path) -> SafConfig:
     key_file = security.get("key_file")
     if key_file is not None and (not isinstance(key_file, str) or not key_file):
         raise r.fail("security", "key_file", "a path (relative to the configuration file)", key_file)
+    sequence_file = security.get("sequence_file")
+    if sequence_file is not None and (not isinstance(sequence_file, str) or not sequence_file):
+        raise r.fail("security", "sequence_file", "a path (relative to the configuration file)", sequence_file)
     if key_file is not None and not require_sequence:
         raise r.fail("security", "require_sequence", "true when key_file is given (the MAC covers the sequence)")
     service_timeout_default = 2 * parameters["MESSAGEINTERVAL"]
@@ -170,6 +175,7 @@ def load(path: str | Path) -> SafConfig:
         require_sequence=require_sequence,
         replay_window=window,
         key_file=(p.parent / key_file) if key_file else None,
+        sequence_file=(p.parent / sequence_file) if sequence_file else None,
     )
 
 

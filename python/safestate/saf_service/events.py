@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import sys
+import threading
 import time
 from typing import Any
 
@@ -13,6 +14,7 @@ from typing import Any
 class EventLog:
     def __init__(self, who: str, as_json: bool) -> None:
         self.who, self.as_json = who, as_json
+        self.lock = threading.Lock()  # whole lines from the service's writer thread too
 
     def emit(self, event: str, text: str, **fields: Any) -> None:
         t = time.monotonic()
@@ -21,8 +23,9 @@ class EventLog:
         else:
             stamp = time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime()) + f".{int(time.time() * 1000) % 1000:03d}Z"
             line = f"{stamp} {self.who} {event}: {text}"
-        try:
-            sys.stdout.write(line + "\n")
-            sys.stdout.flush()
-        except BrokenPipeError:
-            pass
+        with self.lock:
+            try:
+                sys.stdout.write(line + "\n")
+                sys.stdout.flush()
+            except BrokenPipeError:
+                pass

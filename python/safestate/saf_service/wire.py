@@ -1,4 +1,4 @@
-"""The wire format of design §10 and §14 in Python, for the simulators: written from the
+"""The wire format of design §10, §14 and §15 in Python, for the simulators: written from the
 design page, not from the C++, so that the three-process test also checks that two
 implementations of the format (and of HMAC-SHA256: Python's hmac here) agree."""
 
@@ -40,6 +40,49 @@ def set_estop(emergency: bool, client_id: int, sequence: int, key: bytes | None)
         return message(SET_ESTOP, payload)
     head = HEADER.pack(SET_ESTOP, len(payload) + 32) + payload
     return head + hmac.new(key, head, hashlib.sha256).digest()
+
+
+# The authenticated service <-> subsystem link (design §15): the seed's message, its length
+# field grown by the trailer, then u64 sequence and HMAC-SHA256(key, direction byte || every
+# byte before the MAC). The direction byte keeps a message of one way from verifying the other.
+TO_SUBSYSTEM, TO_SERVICE = 0x01, 0x02
+LINK_TRAILER = 8 + 32
+MAX_DATAGRAM = 64
+
+
+def seal(datagram: bytes, sequence: int, direction: int, key: bytes | None) -> bytes:
+    """The sealed form of a seed-form message; the message itself without a key."""
+    if key is None:
+        return datagram
+    msg_id, length = HEADER.unpack_from(datagram)
+    body = HEADER.pack(msg_id, length + LINK_TRAILER) + datagram[HEADER.size :] + struct.pack("<Q", sequence)
+    return body + hmac.new(key, bytes([direction]) + body, hashlib.sha256).digest()
+
+
+@dataclass
+class LinkReceiver:
+    """The receiving end's freshness state for one direction of the link."""
+
+    window: int = 64
+    highest: int | None = None
+
+
+def open_sealed(data: bytes, direction: int, key: bytes, rx: LinkReceiver) -> tuple[str, bytes]:
+    """("OK", the seed-form message) and `rx` advanced, or (reason, b"") with `rx` unchanged:
+    UNAUTHENTICATED (no trailer), BAD_MAC, REPLAY (within the window), STALE."""
+    if not HEADER.size + LINK_TRAILER <= len(data) <= MAX_DATAGRAM:
+        return "UNAUTHENTICATED", b""
+    msg_id, length = HEADER.unpack_from(data)
+    if length != len(data) - HEADER.size:
+        return "UNAUTHENTICATED", b""
+    body, mac = data[:-32], data[-32:]
+    if not hmac.compare_digest(mac, hmac.new(key, bytes([direction]) + body, hashlib.sha256).digest()):
+        return "BAD_MAC", b""
+    (sequence,) = struct.unpack_from("<Q", body, len(body) - 8)
+    if rx.highest is not None and sequence <= rx.highest:
+        return ("REPLAY" if rx.highest - sequence < rx.window else "STALE"), b""
+    rx.highest = sequence
+    return "OK", HEADER.pack(msg_id, length - LINK_TRAILER) + body[HEADER.size : -8]
 
 
 def set_estop_seed(emergency: bool) -> bytes:

@@ -45,6 +45,7 @@ struct HostRig {
     subsystem = std::make_unique<SubsystemSim>(std::move(sub));
     client = std::make_unique<SafetyClientSim>(std::move(cli));
     client->configure(kClientId, key, 1);
+    subsystem->configure_link(key, 1);
     HostConfig c{};
     c.intake.client = Peer{kLoopback, cli_port};
     c.intake.client_component_id = kClientId;

@@ -68,10 +68,16 @@ TEST(SAF03_Intake, SourceIsCheckedBeforeContentAndPerMessageType) {
   const MacKey key = config(true).key;
   const Encoded good = encode_set_estop(false, kId, 5, key);
   EXPECT_EQ(judge(in, good, {kOther, SocketRole::Client}), IntakeReason::EstopWrongSource);
-  EXPECT_EQ(judge(in, good, {kClient, SocketRole::Subsystem}), IntakeReason::EstopWrongSource);
+  // With a key the subsystem socket takes only the link's sealed datagrams (design §15): an
+  // authenticated Set Estop has the sealed shape, but its MAC is no link MAC.
+  EXPECT_EQ(judge(in, good, {kClient, SocketRole::Subsystem}), IntakeReason::ReportBadMac);
+  EXPECT_EQ(judge(in, encode(Message::report_health(Health::Normal)), {kSubsystem, SocketRole::Subsystem}),
+            IntakeReason::ReportUnauthenticated);
   EXPECT_EQ(judge(in, good), IntakeReason::None);
   const Encoded health = encode(Message::report_health(Health::Normal));
-  EXPECT_EQ(judge(in, health, {kSubsystem, SocketRole::Subsystem}), IntakeReason::None);
+  EXPECT_EQ(
+      judge(in, link_seal(health, 1, LinkDirection::SubsystemToService, key), {kSubsystem, SocketRole::Subsystem}),
+      IntakeReason::None);
   EXPECT_EQ(judge(in, health, {kSubsystem, SocketRole::Client}), IntakeReason::ReportWrongSource);
   EXPECT_EQ(judge(in, health, {kClient, SocketRole::Client}), IntakeReason::ReportWrongSource);
   // The MAC is checked before the id and the sequence it covers.
@@ -81,7 +87,7 @@ TEST(SAF03_Intake, SourceIsCheckedBeforeContentAndPerMessageType) {
   EXPECT_EQ(judge(in, encode_set_estop(false, 0xBAD, 6, key)), IntakeReason::EstopWrongComponent);
   EXPECT_EQ(in.highest_sequence(), 5U);  // neither advanced it
   EXPECT_EQ(in.counters().accepted, 2U);
-  EXPECT_EQ(in.counters().rejected_total(), 6U);
+  EXPECT_EQ(in.counters().rejected_total(), 7U);
 }
 
 TEST(SAF03_Intake, SeedFormOnlyWhereTheDeploymentAllowsIt) {

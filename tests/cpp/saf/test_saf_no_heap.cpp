@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // SAF-02/SAF-03 real-time rule of the project (as RSM-15): SafetyService::cycle() never
 // allocates. This executable counts every global operator new while 100,000 cycles of
-// random datagrams (valid, garbage, oversized) run through a constructed service.
+// random datagrams (valid, garbage, oversized) run through a constructed service, and while
+// the deployed host runs its cycles with the link key (sealing, opening, the intake).
 #include <atomic>
 #include <cstdlib>
 #include <new>
 #include <random>
 
+#include "saf_host_rig.hpp"
 #include "saf_test_support.hpp"
 
 namespace {
@@ -53,6 +55,21 @@ TEST(SAF03_NoHeap, CycleNeverAllocates) {
   EXPECT_EQ(g_news.load(), 0);
   EXPECT_GT(s.diagnostics().rejected_total(), 0U);
   EXPECT_GT(s.diagnostics().accepted, 0U);
+}
+
+TEST(SAF03_NoHeap, HostCycleWithTheLinkKeyNeverAllocates) {
+  HostRig r(true);
+  const Encoded forged = encode(Message::report_health(Health::Normal));
+  g_on = true;
+  for (int i = 0; i < 400; ++i) {
+    r.client->set_mode(i % 100 < 50 ? ClientMode::Clear : ClientMode::Emergency);
+    r.send(forged);
+    (void)r.cycle();
+  }
+  g_on = false;
+  EXPECT_EQ(g_news.load(), 0);
+  EXPECT_GT(r.host->intake().counters().accepted, 400U);
+  EXPECT_GT(r.host->sequences().service, 1U);  // sealed messages went out
 }
 
 }  // namespace
