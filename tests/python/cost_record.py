@@ -1,6 +1,7 @@
 """Records what each test costs, as it ends: with SAFESTATE_TEST_COSTS=FILE set, one JSON
 line per test is appended to FILE: the node id, its wall seconds and its CPU seconds (the
-worker process and the subprocesses it waited for, setup and teardown included).  CPU
+worker process, the subprocesses it waited for and the process trees named in
+COMPANION_SESSIONS, setup and teardown included).  CPU
 seconds are what the scheduler's cost table wants (`scripts/test_costs.py`): on a shared,
 loaded machine wall time says more about the neighbours than about the test.  A line is
 written per test, so an interrupted run still leaves its measurements."""
@@ -18,10 +19,41 @@ import pytest
 ENV = "SAFESTATE_TEST_COSTS"
 
 
+# Session ids of process trees a fixture started whose work is done for the tests, not
+# waited for by this process (a Ray cluster's head and the actors it starts): their CPU
+# counts too, or the scheduler would take a file whose work runs there for a cheap one.
+COMPANION_SESSIONS: set[int] = set()
+
+
 def cpu_seconds() -> float:
     own = resource.getrusage(resource.RUSAGE_SELF)
     kids = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
+    return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime + companion_cpu_seconds()
+
+
+_companion_seen: dict[int, float] = {}
+
+
+def companion_cpu_seconds() -> float:
+    """CPU seconds of the processes of COMPANION_SESSIONS and of the children they reaped
+    (Linux /proc; 0 elsewhere), as the most read so far per session: it never decreases
+    when the tree's processes end."""
+    if not COMPANION_SESSIONS:
+        return sum(_companion_seen.values())
+    ticks = dict.fromkeys(COMPANION_SESSIONS, 0)
+    for entry in os.scandir("/proc"):
+        if not entry.name.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry.name}/stat", encoding="ascii", errors="replace") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+        except OSError:  # ended meanwhile
+            continue
+        if int(fields[3]) in ticks:  # the session; then utime, stime, cutime, cstime
+            ticks[int(fields[3])] += sum(int(x) for x in fields[11:15])
+    for sid, n in ticks.items():
+        _companion_seen[sid] = max(_companion_seen.get(sid, 0.0), n / os.sysconf("SC_CLK_TCK"))
+    return sum(_companion_seen.values())
 
 
 @pytest.hookimpl(hookwrapper=True)

@@ -17,9 +17,10 @@ import sys
 import tempfile
 import time
 from collections.abc import Callable, Iterator
-from typing import Any
 from pathlib import Path
+from typing import Any
 
+import cost_record
 import pytest
 
 from conftest import CORPUS, ERRORS, REPO, load_expected, run_safestate
@@ -63,6 +64,7 @@ def cluster() -> Iterator[str]:
                              "--port", str(port), "--num-cpus", "2", "--include-dashboard", "false",
                              "--disable-usage-stats", "--temp-dir", temp],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    cost_record.COMPANION_SESSIONS.add(head.pid)  # the actors' CPU is the tests' cost
     try:
         deadline = time.monotonic() + 120
         while True:
@@ -78,7 +80,9 @@ def cluster() -> Iterator[str]:
     finally:
         if ray.is_initialized():
             ray.shutdown()
-        os.killpg(head.pid, signal.SIGTERM)
+        # The head alone: it stops its processes and exits in a few seconds (a SIGTERM to
+        # its whole group leaves it waiting for them for longer than the 15 s below).
+        os.kill(head.pid, signal.SIGTERM)
         try:
             head.wait(timeout=15)
         except subprocess.TimeoutExpired:
