@@ -139,10 +139,13 @@ class _PooledActorClass:
     def remote(self, *args: Any) -> Any:
         me = args[3]  # ShardActor(files, main, cfg, me, ...)
         actor = self.pool.actors.get(me)
-        if actor is None:
-            actor = self.pool.actors[me] = self.actor_class.remote(*args)
-        else:
-            self.pool.ray.get(actor.__ray_call__.remote(ShardActor.__init__, *args))
+        if actor is not None:
+            try:
+                self.pool.ray.get(actor.__ray_call__.remote(ShardActor.__init__, *args))
+                return actor
+            except self.pool.ray.exceptions.RayActorError:  # it died in an earlier search: a new one
+                pass
+        actor = self.pool.actors[me] = self.actor_class.remote(*args)
         return actor
 
 
