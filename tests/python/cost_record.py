@@ -19,9 +19,11 @@ import pytest
 ENV = "SAFESTATE_TEST_COSTS"
 
 
-# Session ids of process trees a fixture started whose work is done for the tests, not
-# waited for by this process (a Ray cluster's head and the actors it starts): their CPU
-# counts too, or the scheduler would take a file whose work runs there for a cheap one.
+# Session ids of process trees a fixture started, each led by a child of this process,
+# whose work is done for the tests while this process does not wait for it (a Ray
+# cluster's head and the actors it starts): their CPU counts too, or the scheduler would
+# take a file whose work runs there for a cheap one.  `companion_ended` once the leader
+# is reaped: its tree's CPU is then in RUSAGE_CHILDREN.
 COMPANION_SESSIONS: set[int] = set()
 
 
@@ -34,11 +36,17 @@ def cpu_seconds() -> float:
 _companion_seen: dict[int, float] = {}
 
 
+def companion_ended(sid: int) -> None:
+    """The session's leader has been waited for: stop counting its tree here."""
+    COMPANION_SESSIONS.discard(sid)
+    _companion_seen.pop(sid, None)
+
+
 def companion_cpu_seconds() -> float:
     """CPU seconds of the processes of COMPANION_SESSIONS and of the children they reaped
     (Linux /proc; 0 elsewhere), as the most read so far per session: it never decreases
     when the tree's processes end."""
-    if not COMPANION_SESSIONS:
+    if not COMPANION_SESSIONS or not os.path.isdir("/proc"):
         return sum(_companion_seen.values())
     ticks = dict.fromkeys(COMPANION_SESSIONS, 0)
     for entry in os.scandir("/proc"):

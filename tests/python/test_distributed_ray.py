@@ -87,6 +87,8 @@ def cluster() -> Iterator[str]:
             head.wait(timeout=15)
         except subprocess.TimeoutExpired:
             os.killpg(head.pid, signal.SIGKILL)
+            head.wait()
+        cost_record.companion_ended(head.pid)  # reaped: its tree's CPU is in this process's children's
         shutil.rmtree(temp, ignore_errors=True)
         for k, v in saved.items():
             if v is None:
