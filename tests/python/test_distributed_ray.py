@@ -83,12 +83,14 @@ def cluster() -> Iterator[str]:
         # The head alone: it stops its processes and exits in a few seconds (a SIGTERM to
         # its whole group leaves it waiting for them for longer than the 15 s below).
         os.kill(head.pid, signal.SIGTERM)
-        try:
-            head.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            os.killpg(head.pid, signal.SIGKILL)
-            head.wait()
-        cost_record.companion_ended(head.pid)  # reaped: its tree's CPU is in this process's children's
+
+        def stop() -> None:
+            try:
+                head.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                os.killpg(head.pid, signal.SIGKILL)
+                head.wait()
+        cost_record.wait_for_companion(head.pid, stop)
         shutil.rmtree(temp, ignore_errors=True)
         for k, v in saved.items():
             if v is None:

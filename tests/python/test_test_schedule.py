@@ -90,21 +90,20 @@ BURN = "import time\nwhile time.process_time() < 0.3:\n    pass\nprint('burnt', 
 @pytest.mark.skipif(not os.path.isdir("/proc"), reason="reads /proc")
 def test_a_companion_process_trees_cpu_counts_once_and_never_drops_when_it_ends() -> None:
     # A process this one does not wait for while the tests run (a Ray cluster's head):
-    # its CPU is the tests' cost; once reaped it is in RUSAGE_CHILDREN, not counted twice.
+    # its CPU (0.3 s, read in clock ticks) is the tests' cost; once it is waited for, it
+    # is in RUSAGE_CHILDREN too, and must not count twice.
     child = subprocess.Popen([sys.executable, "-c", BURN], stdout=subprocess.PIPE, text=True, start_new_session=True)
     try:
         assert child.stdout is not None and child.stdout.readline() == "burnt\n"
         alone = cost_record.cpu_seconds()
         cost_record.COMPANION_SESSIONS.add(child.pid)
         with_child = cost_record.cpu_seconds()
-        assert with_child >= alone + 0.3
+        assert with_child >= alone + 0.25
         child.kill()
-        child.wait()
-        assert cost_record.cpu_seconds() >= with_child  # dead, not yet said ended: the most seen
-        cost_record.companion_ended(child.pid)
+        cost_record.wait_for_companion(child.pid, child.wait)
         reaped = cost_record.cpu_seconds()
-        assert with_child - 0.05 <= reaped < with_child + 0.3
+        assert with_child <= reaped < with_child + 0.25
     finally:
         child.kill()
         child.wait()
-        cost_record.companion_ended(child.pid)
+        cost_record.COMPANION_SESSIONS.discard(child.pid)
