@@ -7,11 +7,15 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import os
+import subprocess
+import sys
 from collections import OrderedDict
 from pathlib import Path
 
 import pytest
 
+import cost_record
 from conftest import REPO
 
 pytest.importorskip("xdist")
@@ -78,3 +82,28 @@ def test_cost_records_are_read_back_and_written_as_the_cost_table(tmp_path: Path
     log.write_text("not json\n")
     with pytest.raises(SystemExit, match="costs.jsonl:1: not a cost record"):
         script.main([str(log)])
+
+
+BURN = "import time\nwhile time.process_time() < 0.3:\n    pass\nprint('burnt', flush=True)\ntime.sleep(120)\n"
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc"), reason="reads /proc")
+def test_a_companion_process_trees_cpu_counts_once_and_never_drops_when_it_ends() -> None:
+    # A process this one does not wait for while the tests run (a Ray cluster's head):
+    # its CPU (0.3 s, read in clock ticks) is the tests' cost; once it is waited for, it
+    # is in RUSAGE_CHILDREN too, and must not count twice.
+    child = subprocess.Popen([sys.executable, "-c", BURN], stdout=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        assert child.stdout is not None and child.stdout.readline() == "burnt\n"
+        alone = cost_record.cpu_seconds()
+        cost_record.COMPANION_SESSIONS.add(child.pid)
+        with_child = cost_record.cpu_seconds()
+        assert with_child >= alone + 0.25
+        child.kill()
+        cost_record.wait_for_companion(child.pid, child.wait)
+        reaped = cost_record.cpu_seconds()
+        assert with_child <= reaped < with_child + 0.25
+    finally:
+        child.kill()
+        child.wait()
+        cost_record.COMPANION_SESSIONS.discard(child.pid)
