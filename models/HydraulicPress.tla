@@ -98,10 +98,13 @@ Inputs == {"motor_on", "motor_off", "start", "ret", "step_done", "mode1", "mode2
 \* work cycle, counted by watching which output comes on (0: no cycle, or the cycle was
 \* abandoned by RET, a motor stop or another mode selected; Skipped: an output came on
 \* out of that order). `coolDemand` (UCA-10) a temp_high edge came while the motor ran, and
-\* since then no temp_ok and the motor has kept running.
-VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos, coolDemand
+\* since then no temp_ok and the motor has kept running. `runSwitch` (UCA-11) the run-kind
+\* switch's position, from the last continuous_on / continuous_off input (single step at
+\* power-up): the input's own record, not the reaction's `continuous`.
+VARIABLES outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos, coolDemand,
+          runSwitch
 vars == <<chainVars, outputs, continuous, restarted, event, selector, cycleMode, clamped, motorCmd, cyclePos,
-          coolDemand>>
+          coolDemand, runSwitch>>
 
 \* Observables shared with HydraulicPressFlat (docs/design/hydraulic-press.md §6).
 motor == "motor" \in outputs
@@ -164,6 +167,7 @@ Init ==
     /\ motorCmd = FALSE
     /\ cyclePos = 0
     /\ coolDemand = FALSE
+    /\ runSwitch = FALSE
 
 Scan(e) ==
     \* exactly one mode state is active (SCH-01): one disjunct applies
@@ -189,6 +193,7 @@ Scan(e) ==
               ELSE IF cyclePos \in 1..(Len(order) - 1) /\ switched = {order[cyclePos + 1]} THEN cyclePos + 1
               ELSE Skipped
     /\ coolDemand' = (("motor" \in outputs') /\ (e = "temp_high" \/ (coolDemand /\ e # "temp_ok")))
+    /\ runSwitch' = IF e = "continuous_on" THEN TRUE ELSE IF e = "continuous_off" THEN FALSE ELSE runSwitch
 
 Next == \E e \in Inputs : Scan(e)
 
@@ -255,7 +260,7 @@ UCA10_COOLING_ON_DEMAND == coolDemand => "cool_pump" \in outputs
 \* UCA-11 (H-1): in single-step operation (the run-kind switch at single step) a new work
 \* cycle waits for Start: the feed valve is switched on only in a scan with Start, or in
 \* continuous operation by the last stroke's sensor edge (bound 0 scans).
-UCA11_SINGLE_STEP_WAITS_FOR_START == "feed_valve" \in SwitchedOn /\ event # "start" => continuous
+UCA11_SINGLE_STEP_WAITS_FOR_START == "feed_valve" \in SwitchedOn /\ event # "start" => runSwitch
 
 Witness_RestartAfterStroke == ~(restarted /\ mode = 2)  \* INV_PRESS (restart conjunct), UCA-5 across a restart
 Witness_MidStroke == step \notin {"Pressing"}          \* INV_PRESS_OUTPUTS_OF_ACTIVE, UCA-4

@@ -22,6 +22,7 @@ ProofTypeOK ==
     /\ motorCmd \in BOOLEAN
     /\ cyclePos \in 0..Skipped
     /\ coolDemand \in BOOLEAN
+    /\ runSwitch \in BOOLEAN
 
 \* The shape of the active set (SCH-01, SCH-03) and the outputs of the active
 \* states (SCH-05): INV_PRESS follows from these (motor off means MX_On and
@@ -32,8 +33,8 @@ ProofTypeOK ==
 \* outputs of the mode's valve order; with no stroke state active, none (no cycle, or
 \* one abandoned) or all of them (the last cycle complete). UCA-10's observer is
 \* the cooling state: a temp_high edge with the motor running enters it, temp_ok and
-\* the motor stop leave it. Together with the invariants proved jointly (UCA-1 ..
-\* UCA-10 among them) they are 1-inductive.
+\* the motor stop leave it. UCA-11's observer is the reaction's run-kind latch. Together
+\* with the invariants proved jointly (UCA-1 .. UCA-11 among them) they are 1-inductive.
 Strengthen_PRESS ==
     /\ INV_SCH01_ROOT_ACTIVE
     /\ INV_SCH01_PARENT_ACTIVE
@@ -44,4 +45,5 @@ Strengthen_PRESS ==
     /\ \A m \in 1..3 : \A k \in 2..9 : k <= Len(StrokeSeq[m]) /\ StrokeSeq[m][k] \in active => cyclePos = k - 1
     /\ step \in {"none", "Ready"} => cyclePos \in {0, Len(ValveOrder[selector])}
     /\ coolDemand <=> \E m \in 1..3 : CoolingOf[m] \in active
+    /\ runSwitch = continuous
 ===============================================================================
