@@ -2,23 +2,15 @@
 // The wire format of design §10: u64 id, u16 payload length, payload; little-endian.
 #include "safestate/saf/codec.hpp"
 
+#include "safestate/saf/little_endian.hpp"
+
 namespace safestate::saf {
 namespace {
 
-std::uint64_t read_u64(const std::uint8_t* p) noexcept {
-  std::uint64_t v = 0;
-  for (int i = 7; i >= 0; --i) v = (v << 8U) | p[i];
-  return v;
-}
-std::uint32_t read_u32(const std::uint8_t* p) noexcept {
-  std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = (v << 8U) | p[i];
-  return v;
-}
-std::uint16_t read_u16(const std::uint8_t* p) noexcept { return static_cast<std::uint16_t>(p[0] | (p[1] << 8U)); }
-void write_le(std::uint8_t* p, std::uint64_t v, std::size_t n) noexcept {
-  for (std::size_t i = 0; i < n; ++i) p[i] = static_cast<std::uint8_t>(v >> (8U * i));
-}
+using le::read_u16;
+using le::read_u32;
+using le::read_u64;
+inline void write_le(std::uint8_t* p, std::uint64_t v, std::size_t n) noexcept { le::write(p, v, n); }
 
 DecodeResult reject(DecodeError e) noexcept {
   DecodeResult r{};

@@ -1,21 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "safestate/saf/link_auth.hpp"
 
+#include "safestate/saf/little_endian.hpp"
+
 namespace safestate::saf {
 namespace {
 
-std::uint64_t read_u64(const std::uint8_t* p) noexcept {
-  std::uint64_t v = 0;
-  for (int i = 7; i >= 0; --i) v = (v << 8U) | p[i];
-  return v;
-}
+using le::read_u16;
+using le::read_u64;
 
-std::uint16_t read_u16(const std::uint8_t* p) noexcept { return static_cast<std::uint16_t>(p[0] | (p[1] << 8U)); }
-
-void write_u16(std::uint8_t* p, std::size_t v) noexcept {
-  p[0] = static_cast<std::uint8_t>(v & 0xFFU);
-  p[1] = static_cast<std::uint8_t>((v >> 8U) & 0xFFU);
-}
+void write_u16(std::uint8_t* p, std::size_t v) noexcept { le::write(p, v, 2); }
 
 /// HMAC over the direction byte and `size` bytes of `data`, without a heap buffer: the
 /// inner hash is fed the two parts in turn.
