@@ -29,7 +29,7 @@ class HydraulicPressAdapter(Adapter):
     observed_operators: ClassVar[tuple[str, ...]] = ("motor", "mode", "step", "pressure", "speed")
     hidden_variables: ClassVar[tuple[str, ...]] = ("result", "request", "continuous", "restarted", "event",
                                                    "selector", "cycleMode", "clamped", "motorCmd", "cyclePos",
-                                                   "coolDemand")
+                                                   "coolDemand", "runSwitch")
     #: the class of safestate._press this adapter drives
     press_class: ClassVar[str] = "HydraulicPress"
 

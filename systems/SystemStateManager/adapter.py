@@ -93,7 +93,7 @@ class SystemStateManagerAdapter(Adapter):
                         "obs_booted", "obs_self_test_failed", "obs_arming", "obs_popped",
                         "obs_submit_lost", "obs_link_lost", "obs_was_enabled", "obs_ready_lost",
                         "obs_panic", "obs_t2_overspeed", "obs_fb_contactor", "obs_fb_brake",
-                        "obs_was_released", "obs_jog_axis",
+                        "obs_was_released", "obs_jog_axis", "obs_ramp_cut",
                         # FeedbackMonitor's last command: read only while a disagreement
                         # counts, and then the command of the previous cycle (not in status).
                         "contactor_fb_cmd", "brake_fb_cmd")
