@@ -1,12 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "safestate/saf/key_file.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <array>
-#include <cerrno>
+
+#include "safestate/saf/private_file.hpp"
 
 namespace safestate::saf {
 namespace {
@@ -24,33 +21,20 @@ bool space(char c) noexcept { return c == ' ' || c == '\n' || c == '\r' || c == 
 
 KeyFileResult load_key_file(const char* path) noexcept {
   KeyFileResult r{};
-  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    r.error = KeyFileError::CannotOpen;
-    r.error_number = errno;
-    return r;
-  }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    r.error = KeyFileError::NotRegular;
-    return r;
-  }
-  r.mode = static_cast<std::uint32_t>(st.st_mode & 07777U);
-  if ((st.st_mode & 077U) != 0) {
-    ::close(fd);
-    r.error = KeyFileError::Permissions;
-    return r;
-  }
-  // 128 hex digits and whitespace fit; one byte more tells a too-long file.
+  // 128 hex digits and whitespace fit; a longer file cannot hold a key of at most 64 bytes.
   std::array<char, 512> text{};
-  std::size_t size = 0;
-  while (size < text.size()) {
-    const ssize_t n = ::read(fd, text.data() + size, text.size() - size);
-    if (n <= 0) break;
-    size += static_cast<std::size_t>(n);
+  const PrivateFileRead read = read_private_file(path, text.data(), text.size());
+  r.mode = read.mode;
+  r.error_number = read.error_number;
+  switch (read.status) {
+    case PrivateFileStatus::Ok: break;
+    case PrivateFileStatus::Missing:
+    case PrivateFileStatus::CannotOpen: r.error = KeyFileError::CannotOpen; return r;
+    case PrivateFileStatus::NotRegular: r.error = KeyFileError::NotRegular; return r;
+    case PrivateFileStatus::Permissions: r.error = KeyFileError::Permissions; return r;
+    case PrivateFileStatus::TooLong: r.error = KeyFileError::BadLength; return r;
   }
-  ::close(fd);
+  const std::size_t size = read.size;
   std::size_t begin = 0;
   std::size_t end = size;
   while (begin < end && space(text[begin])) ++begin;

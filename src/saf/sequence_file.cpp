@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "safestate/saf/private_file.hpp"
+
 namespace safestate::saf {
 namespace {
 
@@ -70,43 +72,19 @@ bool write_all(int fd, const char* data, std::size_t size) noexcept {
 
 SequenceFileResult load_sequence_file(const char* path) noexcept {
   SequenceFileResult r{};
-  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    r.error = errno == ENOENT ? SequenceFileError::Missing : SequenceFileError::CannotOpen;
-    r.error_number = errno;
-    return r;
+  std::array<char, kMaxFile> text{};
+  const PrivateFileRead read = read_private_file(path, text.data(), text.size());
+  r.mode = read.mode;
+  r.error_number = read.error_number;
+  switch (read.status) {
+    case PrivateFileStatus::Ok: break;
+    case PrivateFileStatus::Missing: r.error = SequenceFileError::Missing; return r;
+    case PrivateFileStatus::CannotOpen: r.error = SequenceFileError::CannotOpen; return r;
+    case PrivateFileStatus::NotRegular: r.error = SequenceFileError::NotRegular; return r;
+    case PrivateFileStatus::Permissions: r.error = SequenceFileError::Permissions; return r;
+    case PrivateFileStatus::TooLong: r.error = SequenceFileError::TooLong; return r;
   }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    r.error = SequenceFileError::NotRegular;
-    return r;
-  }
-  r.mode = static_cast<std::uint32_t>(st.st_mode & 07777U);
-  if ((st.st_mode & 077U) != 0) {
-    ::close(fd);
-    r.error = SequenceFileError::Permissions;
-    return r;
-  }
-  std::array<char, kMaxFile + 1> text{};
-  std::size_t size = 0;
-  while (size < text.size()) {
-    const ssize_t n = ::read(fd, text.data() + size, text.size() - size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      r.error = SequenceFileError::CannotOpen;
-      r.error_number = errno;
-      ::close(fd);
-      return r;
-    }
-    if (n == 0) break;
-    size += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
-  if (size > kMaxFile) {
-    r.error = SequenceFileError::TooLong;
-    return r;
-  }
+  const std::size_t size = read.size;
   static constexpr std::array<std::string_view, 4> kExpected = {
       "safestate-saf-sequence 1",
       "estop <highest accepted Set Estop sequence, decimal> or estop none",

@@ -60,5 +60,16 @@ TEST(Issue30_KeyFile, ContentAndFileKindAreChecked) {
   EXPECT_EQ(load_key_file("/tmp").error, KeyFileError::NotRegular);
 }
 
+// The whole file is the key: text past the 512 bytes a key and its whitespace can take is
+// not ignored, so a key followed by padding and anything else is refused.
+TEST(Issue30_KeyFile, TextBeyondTheLongestKeyFileIsRefused) {
+  const std::string padded = kHex32 + std::string(512 - kHex32.size(), '\n');
+  const std::string fits = write_key(padded, 0600);
+  EXPECT_EQ(load_key_file(fits.c_str()).error, KeyFileError::None);
+  const std::string longer = write_key(padded + "00", 0600);
+  EXPECT_EQ(load_key_file(longer.c_str()).error, KeyFileError::BadLength);
+  for (const std::string& p : {fits, longer}) ::unlink(p.c_str());
+}
+
 }  // namespace
 }  // namespace safestate::saf::test
