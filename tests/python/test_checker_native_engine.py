@@ -169,3 +169,34 @@ def test_native_engine_cli_reports_what_the_python_engine_reports() -> None:
     assert native.returncode == python.returncode == 12
     strip = lambda out: {k: v for k, v in json.loads(out).items() if k != "seconds"}  # noqa: E731
     assert strip(native.stdout) == strip(python.stdout)
+
+
+MEMBER_OF_A_BUILT_SET = r"""---- MODULE MemberOfBuiltSet ----
+EXTENDS Naturals
+VARIABLE msg
+Msgs == {m \in [a: 0..3, b: 0..3] : m.a # m.b}
+Init == msg \in Msgs
+Next == \E m \in Msgs : msg' = m
+TypeOK == msg \in Msgs
+Wrong == msg \in {m \in Msgs : m.a < 3}
+====
+"""
+
+
+def test_membership_in_a_constant_set_that_is_built_reads_the_definitions_one_evaluation(tmp_path: Path) -> None:
+    """`x \\in Msgs`, with Msgs a filter (built, not tested by structure), goes through
+    the definition's remembered node, as `\\E m \\in Msgs` does, instead of building
+    the set again in every state (the Safety service's TypeOK did: half its check);
+    the results are the Python engine's, a violation and its trace included."""
+    from safestate.checker.native.ops import Op
+    from safestate.checker.native.search import NativeRun
+    (tmp_path / "MemberOfBuiltSet.tla").write_text(MEMBER_OF_A_BUILT_SET)
+    for invariants in ("TypeOK", "TypeOK\n    Wrong"):
+        (tmp_path / "MemberOfBuiltSet.cfg").write_text(f"INIT Init\nNEXT Next\nINVARIANTS\n    {invariants}\n")
+        model = load_model(str(tmp_path / "MemberOfBuiltSet.tla"), str(tmp_path / "MemberOfBuiltSet.cfg"))
+        native, _error = explore_native(model, None, None)
+        assert native is not None
+        assert _outcome(native) == _outcome(explore_states(model))
+    assert native.result == "safety failure" and native.violated == "Wrong"
+    type_ok = NativeRun(model).invariants[0]
+    assert type_ok[0] == Op.IN and type_ok[4][1][0] == Op.BIND_MEMO

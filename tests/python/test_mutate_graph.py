@@ -87,3 +87,23 @@ def test_input_an_action_carries_under_a_view_is_no_difference_of_stored_states(
         models.append(model)
     assert search(models[0], models[1], proj).verdict == "equivalent"  # the exact search
     assert graph_search(graphs[0], graphs[1], proj).verdict == "equivalent"
+
+
+def test_a_mutant_whose_graph_is_the_originals_is_equivalent_without_a_pair_search(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """`i > 5` is never true for the inputs 0..2: its boundary and literal mutants
+    leave every state, step and observation as they were, and are equivalent by the
+    graphs' equality alone; `n < 3` as `n < 2` changes only the unobserved `n`, so its
+    graph has fewer states and the pair search decides it (equivalent too)."""
+    (tmp_path / "Planted.tla").write_text(PLANTED)
+    (tmp_path / "Planted.cfg").write_text("INIT Init\nNEXT Next\nINVARIANTS\n    TypeOK\n    Safe\n")
+    args = [str(tmp_path / "Planted.tla"), "--inputs", "inp", "--observables", "out,latch"]
+    assert main(["mutate", *args, "--engine", "native", "--json", "--no-cache"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    by_text = {m["replacement"].strip(): m for m in report["mutants"]}
+    for guard in ("i >= 5", "i > 4", "i > 6"):
+        m = by_text[f"/\\ out' = IF {guard} THEN 2 ELSE i"]
+        assert m["status"] == "equivalent", m
+        assert m["reason"].startswith("the original's graph: 14 states"), m
+    hidden = by_text["/\\ n' = IF n < 2 THEN n + 1 ELSE n"]
+    assert hidden["status"] == "equivalent" and not hidden["reason"].startswith("the original's graph")

@@ -54,7 +54,7 @@ from ..tla.errors import TlaError, UnsupportedError
 from ..tla.values import fmt
 from .generate import Mutant
 from .graph import LabelledGraph, confirm, graph_search, native_labelled
-from .product import DiffStep, OriginalSide, Projection, search
+from .product import DiffStep, OriginalSide, ProductResult, Projection, search
 from .witness import WitnessSet, on_native_states, on_python_states, witness_set
 
 KILLING_RESULTS = {"safety failure", "deadlock failure", "liveness failure", "temporal safety failure",
@@ -190,7 +190,10 @@ def _classify_ci(subject: Subject, mutant: Mutant, start: float, deadline: float
                            reason=f"no longer reached: {', '.join(lost)}", seconds=time.monotonic() - start)
         try:
             pr = None
-            if graph is not None and subject.graph is not None:
+            if graph is not None and graph.same:
+                n = len(graph.offsets) - 1
+                pr = ProductResult("equivalent", n, reason=f"the original's graph: {n} states, the same steps and observations")
+            elif graph is not None and subject.graph is not None:
                 pr = graph_search(subject.graph, graph, subject.projection, subject.max_pairs, deadline)
                 if pr.verdict == "difference" and model.config.view is not None:
                     steps = confirm(original, model, subject.projection, pr.steps)
@@ -310,7 +313,7 @@ def _check(subject: Subject, model: Model) -> tuple[Any, LabelledGraph | None]:
     if subject.graph is None:
         return check_model(model, subject.engine, subject.max_memory_mb, states), None
     try:
-        labelled, graph, _why = native_labelled(model, subject.projection, subject.max_memory_mb)
+        labelled, graph, _why = native_labelled(model, subject.projection, subject.max_memory_mb, subject.graph)
     except UnsupportedError:
         # A mutant outside the core's subset (the original is inside): the Python engine.
         return check_model(model, subject.engine, subject.max_memory_mb, states), None

@@ -73,6 +73,8 @@ class LabelledGraph:
     # the label positions copied (`_copy_masks`); empty: no masks.
     step_mask: array = field(default_factory=lambda: array("I"))
     masks: list[frozenset[int]] = field(default_factory=lambda: [frozenset()])
+    leaves: array | None = None     # under a VIEW: per step (after the initial ones) its action
+    same: bool = False              # a mutant's graph equal to the original's (`same_graph`)
 
     def share(self, other: "LabelledGraph") -> None:
         """Canonical label numbers comparable with `other`'s (one table for both)."""
@@ -153,12 +155,14 @@ class LabelledGraph:
         return list(zip(self.val[a:b], self.dst[a:b], map(self.mask_of, range(a, b))))
 
 
-def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None
+def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None,
+                    original: LabelledGraph | None = None
                     ) -> tuple[CheckResult | None, LabelledGraph | None, str]:
     """The native check of `model` recording its labelled graph: (result, graph, "");
     graph None when the check did not succeed; (None, None, why) after an evaluation
     error (the caller checks again with the Python engine for TLC's report).  Raises
-    UnsupportedError when the core does not accept the model."""
+    UnsupportedError when the core does not accept the model.  With the `original`'s
+    graph, a graph equal to it is marked `same` (and its copy masks are the original's)."""
     from ..checker.native.search import NativeRun, explore_native
     run = NativeRun(model)
     eng = run.engine
@@ -189,11 +193,35 @@ def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None
         acc += counts[i]
         offsets[i] = acc
     g.offsets, g.val, g.dst = offsets, val, dst
-    if viewed:
-        leaves = array("I", eng.edges_bytes()[2])
-        if len(leaves) == len(val) - k:
-            g.step_mask, g.masks = _copy_masks(eng, src, val, k, leaves, eng.label_vars, len(model.variables))
+    leaves = array("I", eng.edges_bytes()[2]) if viewed else None
+    if leaves is not None and len(leaves) != len(val) - k:
+        leaves = None
+    if original is not None and same_graph(original, g, leaves):
+        g.same, g.step_mask, g.masks = True, original.step_mask, original.masks
+    elif leaves is not None:
+        g.step_mask, g.masks = _copy_masks(eng, src, val, k, leaves, eng.label_vars, len(model.variables))
+    if original is None:
+        g.leaves = leaves
     return result, g, ""
+
+
+def same_graph(orig: LabelledGraph, g: LabelledGraph, leaves: array | None) -> bool:
+    """Whether `g` is `orig`'s graph: the same states in the same order (the core's
+    search order is deterministic), the same steps with structurally equal labels, and
+    under a VIEW the same action per step.  The copy masks are then the original's too
+    (a stored state's labelled values are those of the step that first reached it), and
+    the two are observationally equivalent: every pair the difference search would
+    reach is a state with itself.  This decides the mutants that change nothing
+    observable and nothing the search order sees without the pair search (the
+    flagship's: about half of such a mutant's classification)."""
+    if len(orig.initial) != len(g.initial) or orig.offsets != g.offsets or orig.dst != g.dst:
+        return False
+    if (orig.leaves is None) != (leaves is None) or (leaves is not None and orig.leaves != leaves):
+        return False
+    g.share(orig)
+    lo = {v: orig.canonical(v)[0] for v in set(orig.val)}
+    lm = {v: g.canonical(v)[0] for v in set(g.val)}
+    return list(map(lo.__getitem__, orig.val)) == list(map(lm.__getitem__, g.val))
 
 
 def _copy_masks(eng: Any, src: array, val: array, k: int, leaves: array, label_vars: list[int],

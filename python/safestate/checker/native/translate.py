@@ -484,7 +484,13 @@ class Translator:
                 if isinstance(sym, DefSym) and not sym.recursive and sym.defn.fn_bounds is None \
                         and not sym.scope.instance_params and not sym.scope.parameterised:
                     if not sym.defn.params and not args:
-                        return self.set_test(sym.defn.body, TEnv(sym.scope, {}, env.primed, env.init), depth + 1)
+                        sd = self.set_test(sym.defn.body, TEnv(sym.scope, {}, env.primed, env.init), depth + 1)
+                        if sd[0] != Op.SD_SET:
+                            return sd
+                        # A set that is built: the definition's own node, which a constant
+                        # set evaluates once (the Safety service's TypeOK rebuilt its
+                        # 1,440-record inbox filter in every state: half the check).
+                        return self.node(Op.SD_SET, e.loc, kids=(self.call_def(sym, [], env, e.loc),))
                     if len(args) == len(sym.defn.params) and not any(p.arity for p in sym.defn.params):
                         locals_ = {p.name: ByName(a, env) for p, a in zip(sym.defn.params, args)}
                         return self.set_test(sym.defn.body, TEnv(sym.scope, locals_, env.primed, env.init), depth + 1)
