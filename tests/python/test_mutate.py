@@ -282,3 +282,41 @@ def test_only_selects_mutants_by_id_and_an_unmatched_text_exits_2(planted: Path,
     assert all(m["mutant"].startswith("unchanged@Next") for m in report["mutants"])
     assert main(["mutate", str(planted), "--inputs", "inp", "--observables", "out,latch", "--only", "nope@X"]) == 2
     assert "nope@X" in capsys.readouterr().err
+
+
+CHAINED = r"""---- MODULE Chained ----
+EXTENDS Naturals
+VARIABLES x, y
+Row(a, b) ==
+    IF a = 0 THEN 1
+    ELSE IF \/ a = 1 /\ b = 0
+            \/ a = 2 /\ b = 1 THEN 2
+    ELSE IF a = 2 THEN [r |-> 3, s |-> 4].r
+    ELSE 0
+Init == x = 0 /\ y = 0
+Next == /\ x' = (x + 1) % 3
+        /\ y' = Row(x, y) % 2
+===="""
+
+
+def test_every_mutant_that_moves_a_junction_list_keeps_it_aligned(tmp_path: Path) -> None:
+    """A condition written as a junction list of several lines, moved by deleting,
+    swapping or negating a priority step, keeps its bullets aligned: every mutant loads
+    (before, five of the Safety service's were errors, "Precedence conflict between ops
+    \\/ and /\\"), and deleting the first step gives the same disjunction."""
+    from safestate.checker.model import load_model
+    (tmp_path / "Chained.cfg").write_text("INIT Init\nNEXT Next\n")
+    (tmp_path / "Chained.tla").write_text(CHAINED)
+    mutants = [m for m in generate(tmp_path / "Chained.tla", "Init", "Next") if m.definition == "Row"]
+    moved = {m.operator for m in mutants if "\\/ a = 1" in m.original}
+    assert {"delete-arm", "swap-if", "swap-steps", "negate"} <= moved
+    for m in mutants:
+        d = tmp_path / m.id.replace("@", "_").replace(":", "_").replace("#", "_")
+        d.mkdir()
+        (d / "Chained.tla").write_text(m.apply(CHAINED.encode()).decode())
+        (d / "Chained.cfg").write_text("INIT Init\nNEXT Next\n")
+        load_model(str(d / "Chained.tla"), str(d / "Chained.cfg"))  # raises on a precedence conflict
+    first = next(m for m in mutants if m.operator == "delete-arm" and "a = 0" in m.what)
+    text = first.apply(CHAINED.encode()).decode().split("\n")
+    one, two = (next(x for x in text if f"\\/ a = {k}" in x) for k in (1, 2))
+    assert one.index("\\/") == two.index("\\/")

@@ -13,7 +13,7 @@ The table of operators, with an example each, is in docs/mutate.md.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from tree_sitter import Node
@@ -46,6 +46,36 @@ class Context:
     def text(self, n: Node) -> str:
         return self.data[n.start_byte:self.end(n)].decode("utf-8")
 
+    def column(self, byte: int) -> int:
+        return byte - (self.data.rfind(b"\n", 0, byte) + 1)
+
+    def compose(self, start: int, parts: Iterable[str | Node]) -> str:
+        """The replacement text of an edit beginning at byte `start`: the strings as
+        they are, each node's text placed so that its lines keep their columns relative
+        to its first where it holds a junction list of several lines (whose bullets
+        must stay aligned, or it parses as another expression, or not at all).  Such a
+        node that would begin left of its own column is padded to it; one that would
+        begin right of it has its later lines moved right as far.  Any other text is
+        placed as it is (column-insensitive)."""
+        out: list[str] = []
+        col = self.column(start)
+        for part in parts:
+            if isinstance(part, str):
+                piece = part
+            else:
+                piece = self.text(part)
+                if _has_bullets(piece):
+                    own = self.column(part.start_byte)
+                    if col < own:
+                        out.append(" " * (own - col))
+                        col = own
+                    elif col > own:
+                        piece = piece.replace("\n", "\n" + " " * (col - own))
+            out.append(piece)
+            nl = piece.rfind("\n")
+            col = col + len(piece.encode()) if nl < 0 else len(piece[nl + 1:].encode())
+        return "".join(out)
+
     def end(self, n: Node) -> int:
         """Where the node's text ends: the grammar lets the last item of a list run on over
         the comments and blank lines after it, which an edit must keep (else the next
@@ -58,6 +88,12 @@ class Context:
             if nl < 0 or not body[nl + 1:].lstrip().startswith(b"\\*"):
                 return end
             end = n.start_byte + nl  # a comment-only last line: not the node's
+
+
+def _has_bullets(text: str) -> bool:
+    """Whether `text` spans lines of a junction list (a line beginning with a bullet)."""
+    lines = text.split("\n")
+    return len(lines) > 1 and any(x.lstrip().startswith(("/\\", "\\/")) for x in lines)
 
 
 @dataclass(frozen=True)
@@ -186,10 +222,12 @@ def negate_condition(n: Node, ctx: Context) -> Iterator[Edit]:
     ~(condition)."""
     if n.type == "if_then_else":
         c = _if_parts(n)[0]
-        yield Edit(c.start_byte, ctx.end(c), f"~({ctx.text(c)})", f"IF condition `{_short(ctx.text(c))}` negated")
+        yield Edit(c.start_byte, ctx.end(c), ctx.compose(c.start_byte, ["~(", c, ")"]),
+                   f"IF condition `{_short(ctx.text(c))}` negated")
     elif n.type == "case_arm":
         c = _named(n)[0]
-        yield Edit(c.start_byte, ctx.end(c), f"~({ctx.text(c)})", f"CASE guard `{_short(ctx.text(c))}` negated")
+        yield Edit(c.start_byte, ctx.end(c), ctx.compose(c.start_byte, ["~(", c, ")"]),
+                   f"CASE guard `{_short(ctx.text(c))}` negated")
 
 
 def move_boundary(n: Node, ctx: Context) -> Iterator[Edit]:
@@ -221,7 +259,7 @@ def swap_if(n: Node, ctx: Context) -> Iterator[Edit]:
     if n.type != "if_then_else":
         return
     c, t, e = _if_parts(n)
-    text = f"IF {ctx.text(c)} THEN {ctx.text(e)} ELSE {ctx.text(t)}"
+    text = ctx.compose(n.start_byte, ["IF ", c, " THEN ", e, " ELSE ", t])
     yield Edit(n.start_byte, ctx.end(n), text, f"branches of IF `{_short(ctx.text(c))}` swapped")
 
 
@@ -233,16 +271,20 @@ def delete_arm(n: Node, ctx: Context) -> Iterator[Edit]:
         if len(arms) < 2:
             return
         for i, arm in enumerate(arms):
-            rest = [ctx.text(a) for j, a in enumerate(arms) if j != i]
-            guards = [a for a in rest if not a.lstrip().startswith("OTHER")]
-            other = [a for a in rest if a.lstrip().startswith("OTHER")]
+            rest = [a for j, a in enumerate(arms) if j != i]
+            guards = [a for a in rest if not ctx.text(a).lstrip().startswith("OTHER")]
+            other = [a for a in rest if ctx.text(a).lstrip().startswith("OTHER")]
             if not guards:
                 continue
-            text = "CASE " + " [] ".join(guards + other)
+            parts: list[str | Node] = ["CASE "]
+            for k, a in enumerate(guards + other):
+                parts += [" [] ", a] if k else [a]
+            text = ctx.compose(n.start_byte, parts)
             yield Edit(n.start_byte, ctx.end(n), text, f"CASE arm `{_short(ctx.text(arm))}` deleted")
     elif n.type == "if_then_else" and _in_chain(n):
         c, _, e = _if_parts(n)
-        yield Edit(n.start_byte, ctx.end(n), ctx.text(e), f"priority step IF `{_short(ctx.text(c))}` deleted")
+        yield Edit(n.start_byte, ctx.end(n), ctx.compose(n.start_byte, [e]),
+                   f"priority step IF `{_short(ctx.text(c))}` deleted")
 
 
 def _in_chain(n: Node) -> bool:
@@ -263,8 +305,7 @@ def swap_steps(n: Node, ctx: Context) -> Iterator[Edit]:
     if inner.type != "if_then_else":
         return
     c2, b, r = _if_parts(inner)
-    text = (f"IF {ctx.text(c2)} THEN {ctx.text(b)} ELSE IF {ctx.text(c1)} THEN {ctx.text(a)} "
-            f"ELSE {ctx.text(r)}")
+    text = ctx.compose(n.start_byte, ["IF ", c2, " THEN ", b, " ELSE IF ", c1, " THEN ", a, " ELSE ", r])
     yield Edit(n.start_byte, ctx.end(n), text,
                f"priority steps `{_short(ctx.text(c1))}` and `{_short(ctx.text(c2))}` swapped")
 
@@ -289,8 +330,11 @@ def drop_except_update(n: Node, ctx: Context) -> Iterator[Edit]:
     kids = _named(n)
     base, updates = kids[0], [k for k in kids[1:] if k.type == "except_update"]
     for i, u in enumerate(updates):
-        rest = [ctx.text(x) for j, x in enumerate(updates) if j != i]
-        text = f"[{ctx.text(base)} EXCEPT {', '.join(rest)}]" if rest else f"({ctx.text(base)})"
+        rest = [x for j, x in enumerate(updates) if j != i]
+        parts: list[str | Node] = ["[", base, " EXCEPT "]
+        for k, x in enumerate(rest):
+            parts += [", ", x] if k else [x]
+        text = ctx.compose(n.start_byte, parts + ["]"] if rest else ["(", base, ")"])
         yield Edit(n.start_byte, ctx.end(n), text, f"EXCEPT update `{_short(ctx.text(u))}` dropped")
 
 
