@@ -17,6 +17,7 @@ import signal
 import socket
 import stat
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -170,68 +171,72 @@ def test_a_bad_sequence_file_setting_is_one_line_and_exit_2(tmp_path: Path, valu
     assert expected in err and err.count("\n") == 1, err
 
 
-def test_a_process_on_the_dead_services_port_does_not_release_the_subsystem(tmp_path: Path) -> None:
+Cell = tuple[Process, Process, Process, dict[str, int], socket.socket]
+
+
+@pytest.fixture
+def cell(tmp_path: Path) -> Iterator[Cell]:
+    """The three processes on a sealed link with the service OPERATIONAL, and an unbound
+    UDP socket for the impostor; everything stopped and closed afterwards."""
     sub, svc, cli, ports, _ = start(tmp_path)
     impostor = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     try:
         svc.wait_for(is_state("OPERATIONAL"))
-        cli.send("set")
-        pressed = cli.wait_for(is_mode("set"))
-        sub.wait_for(is_state("EMERGENCY"), after=pressed["t"])
-        time.sleep(0.3)  # the subsystem is held by the service, EMERGENCY
-        svc.stop(signal.SIGKILL)
-        impostor.bind(("127.0.0.1", ports["service_subsystem"]))
-        release = wire.message(wire.SET_SUBSYSTEM_STATE, bytes([1]))
-        heartbeat = wire.message(wire.QUERY_HEALTH_SUMMARY)
-        to = ("127.0.0.1", ports["subsystem"])
-        t0 = time.monotonic()
-        for _ in range(30):  # 1.5 s: longer than service_timeout
-            impostor.sendto(release, to)  # the seed's form
-            impostor.sendto(heartbeat, to)
-            impostor.sendto(wire.seal(release, 1 << 62, wire.TO_SUBSYSTEM, b"\x07" * 32), to)  # another key
-            impostor.sendto(wire.seal(release, 1, wire.TO_SUBSYSTEM, KEY), to)  # the right key, stale
-            time.sleep(0.05)
-        silent = sub.wait_for(lambda e: e.get("event") == "service-silent", after=t0)
-        time.sleep(0.2)
-        assert states_after(sub, t0) == [], "the impostor released the subsystem"
-        assert rejected(sub, "UNAUTHENTICATED", t0) == 60
-        assert rejected(sub, "BAD_MAC", t0) == 30
-        assert rejected(sub, "STALE", t0) + rejected(sub, "REPLAY", t0) == 30
-        assert silent["t"] > t0  # its heartbeats did not keep the watchdog quiet
+        yield sub, svc, cli, ports, impostor
     finally:
         impostor.close()
         for p in (cli, svc, sub):
             p.stop()
 
 
-def test_a_process_on_the_dead_subsystems_port_is_rejected_and_counted(tmp_path: Path) -> None:
-    sub, svc, cli, ports, _ = start(tmp_path)
-    impostor = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-    try:
-        svc.wait_for(is_state("OPERATIONAL"))
-        sub.send("health ERROR")
-        t_error = sub.wait_for(lambda e: e.get("event") == "health")["t"]
-        svc.wait_for(is_state("EMERGENCY"), after=t_error)
-        sub.stop(signal.SIGKILL)
-        impostor.bind(("127.0.0.1", ports["subsystem"]))
-        to = ("127.0.0.1", ports["service_subsystem"])
-        normal = wire.report_health("NORMAL")
-        confirm = wire.confirm_control(wire.CONTROL_ACCEPTED)
-        t0 = time.monotonic()
-        for _ in range(40):  # 2 s while the client holds CLEAR
-            impostor.sendto(normal, to)
-            impostor.sendto(confirm, to)
-            impostor.sendto(wire.seal(normal, 1 << 62, wire.TO_SERVICE, b"\x07" * 32), to)
-            impostor.sendto(wire.seal(normal, 1 << 62, wire.TO_SUBSYSTEM, KEY), to)  # reflected direction
-            time.sleep(0.05)
-        time.sleep(0.3)
-        assert "OPERATIONAL" not in states_after(svc, t0), "a forged health summary released the E-stop"
-        assert rejected(svc, "REPORT_UNAUTHENTICATED", t0) == 80
-        assert rejected(svc, "REPORT_BAD_MAC", t0) == 80
-        names = {e.get("message") for e in svc.snapshot() if e.get("event") == "rejected" and e["t"] >= t0
-                 and e.get("reason") == "REPORT_UNAUTHENTICATED"}
-        assert names == {"REPORT_HEALTH_SUMMARY", "CONFIRM_CONTROL"}, names
-    finally:
-        impostor.close()
-        for p in (cli, svc, sub):
-            p.stop()
+def test_a_process_on_the_dead_services_port_does_not_release_the_subsystem(cell: Cell) -> None:
+    sub, svc, cli, ports, impostor = cell
+    cli.send("set")
+    pressed = cli.wait_for(is_mode("set"))
+    sub.wait_for(is_state("EMERGENCY"), after=pressed["t"])
+    time.sleep(0.3)  # the subsystem is held by the service, EMERGENCY
+    svc.stop(signal.SIGKILL)
+    impostor.bind(("127.0.0.1", ports["service_subsystem"]))
+    release = wire.message(wire.SET_SUBSYSTEM_STATE, bytes([1]))
+    heartbeat = wire.message(wire.QUERY_HEALTH_SUMMARY)
+    to = ("127.0.0.1", ports["subsystem"])
+    t0 = time.monotonic()
+    for _ in range(30):  # 1.5 s: longer than service_timeout
+        impostor.sendto(release, to)  # the seed's form
+        impostor.sendto(heartbeat, to)
+        impostor.sendto(wire.seal(release, 1 << 62, wire.TO_SUBSYSTEM, b"\x07" * 32), to)  # another key
+        impostor.sendto(wire.seal(release, 1, wire.TO_SUBSYSTEM, KEY), to)  # the right key, stale
+        time.sleep(0.05)
+    silent = sub.wait_for(lambda e: e.get("event") == "service-silent", after=t0)
+    time.sleep(0.2)
+    assert states_after(sub, t0) == [], "the impostor released the subsystem"
+    assert rejected(sub, "UNAUTHENTICATED", t0) == 60
+    assert rejected(sub, "BAD_MAC", t0) == 30
+    assert rejected(sub, "STALE", t0) + rejected(sub, "REPLAY", t0) == 30
+    assert silent["t"] > t0  # its heartbeats did not keep the watchdog quiet
+
+
+def test_a_process_on_the_dead_subsystems_port_is_rejected_and_counted(cell: Cell) -> None:
+    sub, svc, _cli, ports, impostor = cell
+    sub.send("health ERROR")
+    t_error = sub.wait_for(lambda e: e.get("event") == "health")["t"]
+    svc.wait_for(is_state("EMERGENCY"), after=t_error)
+    sub.stop(signal.SIGKILL)
+    impostor.bind(("127.0.0.1", ports["subsystem"]))
+    to = ("127.0.0.1", ports["service_subsystem"])
+    normal = wire.report_health("NORMAL")
+    confirm = wire.confirm_control(wire.CONTROL_ACCEPTED)
+    t0 = time.monotonic()
+    for _ in range(40):  # 2 s while the client holds CLEAR
+        impostor.sendto(normal, to)
+        impostor.sendto(confirm, to)
+        impostor.sendto(wire.seal(normal, 1 << 62, wire.TO_SERVICE, b"\x07" * 32), to)
+        impostor.sendto(wire.seal(normal, 1 << 62, wire.TO_SUBSYSTEM, KEY), to)  # reflected direction
+        time.sleep(0.05)
+    time.sleep(0.3)
+    assert "OPERATIONAL" not in states_after(svc, t0), "a forged health summary released the E-stop"
+    assert rejected(svc, "REPORT_UNAUTHENTICATED", t0) == 80
+    assert rejected(svc, "REPORT_BAD_MAC", t0) == 80
+    names = {e.get("message") for e in svc.snapshot() if e.get("event") == "rejected" and e["t"] >= t0
+             and e.get("reason") == "REPORT_UNAUTHENTICATED"}
+    assert names == {"REPORT_HEALTH_SUMMARY", "CONFIRM_CONTROL"}, names
