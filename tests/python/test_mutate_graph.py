@@ -107,3 +107,36 @@ def test_a_mutant_whose_graph_is_the_originals_is_equivalent_without_a_pair_sear
         assert m["reason"].startswith("the original's graph: 14 states"), m
     hidden = by_text["/\\ n' = IF n < 2 THEN n + 1 ELSE n"]
     assert hidden["status"] == "equivalent" and not hidden["reason"].startswith("the original's graph")
+
+
+def test_the_cores_copy_masks_are_the_positions_every_step_of_an_action_copies() -> None:
+    """The flagship's VIEW leaves out free signals its Submit keeps: the core's per-action
+    copy masks (the label positions an action copies from its stored source in every
+    step) equal the same rule evaluated here, step by step, on the graph it recorded."""
+    from array import array
+
+    from safestate.checker.model import load_model
+    from safestate.mutate.graph import NO_SOURCE, native_labelled
+    from safestate.mutate.product import Projection
+    from safestate.systems.registry import find
+    system = find("SystemStateManager")
+    assert system is not None
+    decl = system.extra["mutate"]
+    proj = Projection(tuple(decl["inputs"]), tuple(decl["observables"]))
+    model = load_model(str(system.model), str(system.model.with_name("SystemStateManager_reduced.cfg")))
+    result, graph, _ = native_labelled(model, proj, None)
+    assert result is not None and result.result == "success" and graph is not None and graph.run is not None
+    eng = graph.run.engine
+    src, _dst, val = (array("I", b) for b in eng.labels_bytes())
+    leaves = array("I", eng.edges_bytes()[2])
+    states = array("I", eng.states_bytes())
+    k = sum(1 for s in src if s == NO_SOURCE)
+    nvars, label_vars = len(model.variables), list(eng.label_vars)
+    copied = [set(range(len(label_vars))) for _ in range(max(leaves) + 1)]
+    for j, lf in enumerate(leaves):
+        parts = eng.describe(val[k + j])[1]
+        base = src[k + j] * nvars
+        copied[lf] -= {q for q in copied[lf] if parts[q] != states[base + label_vars[q]]}
+    masks = [graph.masks[graph.step_mask[j]] for j in range(len(leaves))]
+    assert masks == [frozenset(copied[lf]) for lf in leaves]
+    assert any(graph.masks), "no action of the flagship copies a labelled variable"

@@ -296,6 +296,10 @@ class Engine {
   std::vector<int64_t> label_vars;
   std::vector<uint32_t> label_src, label_dst, label_val;
   void record_label(uint32_t src, uint32_t dst, const uint32_t* t);
+  // Per action leaf, the label positions (bit q: label_vars[q]) that every step of the
+  // leaf copies from its stored source, from the recorded labels and edges (the search's
+  // "carried values under a VIEW"); empty when they do not line up or past 64 positions.
+  std::vector<uint64_t> copy_masks() const;
 
   int cur_level = 0;
   uint64_t before = 0;

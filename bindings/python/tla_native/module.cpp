@@ -98,6 +98,7 @@ PYBIND11_MODULE(_tla_native, m) {
                                    as_bytes(e.edge_params));
            })
       .def_readwrite("label_vars", &Engine::label_vars)
+      .def("copy_masks", &Engine::copy_masks)
       .def(
           "labels_bytes",
           [](Engine& e) { return py::make_tuple(as_bytes(e.label_src), as_bytes(e.label_dst), as_bytes(e.label_val)); })

@@ -50,6 +50,27 @@ void Engine::record_edge(uint32_t src, uint32_t dst, int lf) {
   edge_params.push_back(st.mk_seq(buf_));
 }
 
+std::vector<uint64_t> Engine::copy_masks() const {
+  size_t k = 0;  // the initial states' labels come first, without a source
+  while (k < label_src.size() && label_src[k] == 0xFFFFFFFFU) ++k;
+  if (edge_leaf.size() != label_src.size() - k || label_vars.empty() || label_vars.size() > 64) return {};
+  uint32_t nleaves = 0;
+  for (uint32_t lf : edge_leaf) nleaves = std::max(nleaves, lf + 1);
+  const uint64_t all = label_vars.size() == 64 ? ~uint64_t(0) : (uint64_t(1) << label_vars.size()) - 1;
+  std::vector<uint64_t> copied(nleaves, all);
+  for (size_t j = 0; j < edge_leaf.size(); ++j) {
+    uint64_t& c = copied[edge_leaf[j]];
+    if (!c) continue;
+    const uint32_t* label = st.items(label_val[k + j]);
+    const uint32_t* source = arena.data() + size_t(label_src[k + j]) * size_t(nvars);
+    for (uint64_t bits = c; bits; bits &= bits - 1) {
+      const int q = __builtin_ctzll(bits);
+      if (label[q] != source[size_t(label_vars[size_t(q)])]) c &= ~(uint64_t(1) << q);
+    }
+  }
+  return copied;
+}
+
 void Engine::record_label(uint32_t src, uint32_t dst, const uint32_t* t) {
   buf_.clear();
   for (int64_t v : label_vars) buf_.push_back(t[size_t(v)]);

@@ -199,7 +199,7 @@ def native_labelled(model: Model, proj: Projection, max_memory_mb: int | None,
     if original is not None and same_graph(original, g, leaves):
         g.same, g.step_mask, g.masks = True, original.step_mask, original.masks
     elif leaves is not None:
-        g.step_mask, g.masks = _copy_masks(eng, src, val, k, leaves, eng.label_vars, len(model.variables))
+        g.step_mask, g.masks = _copy_masks(eng, leaves, len(eng.label_vars))
     if original is None:
         g.leaves = leaves
     return result, g, ""
@@ -224,32 +224,22 @@ def same_graph(orig: LabelledGraph, g: LabelledGraph, leaves: array | None) -> b
     return list(map(lo.__getitem__, orig.val)) == list(map(lm.__getitem__, g.val))
 
 
-def _copy_masks(eng: Any, src: array, val: array, k: int, leaves: array, label_vars: list[int],
-                nvars: int) -> tuple[array, list[frozenset[int]]]:
+def _copy_masks(eng: Any, leaves: array, n_labels: int) -> tuple[array, list[frozenset[int]]]:
     """Per step after the first k (the initial ones), the number of its action's mask:
-    the label positions that action copies from its (stored) source in every step."""
-    states = array("I", eng.states_bytes())
-    nleaves = max(leaves, default=-1) + 1
-    copied: list[set[int]] = [set(range(len(label_vars))) for _ in range(nleaves)]
-    parts: dict[int, list[int]] = {}
-    for j, lf in enumerate(leaves):
-        c = copied[lf]
-        if not c:
-            continue
-        vid = val[k + j]
-        p = parts.get(vid)
-        if p is None:
-            p = parts[vid] = eng.describe(vid)[1]
-        base = src[k + j] * nvars
-        for pos in [q for q in c if p[q] != states[base + label_vars[q]]]:
-            c.discard(pos)
+    the label positions that action copies from its (stored) source in every step.  The
+    core computes the positions per action (`copy_masks`, over its recorded labels and
+    edges); this numbers the distinct masks."""
+    bits = eng.copy_masks()
+    if len(bits) != max(leaves, default=-1) + 1:
+        raise AssertionError("the core's copy masks do not match its edges")
+    copied = [frozenset(q for q in range(n_labels) if b >> q & 1) for b in bits]
     masks: list[frozenset[int]] = [frozenset()]
     number: dict[frozenset[int], int] = {frozenset(): 0}
     for c in copied:
-        if frozenset(c) not in number:
-            number[frozenset(c)] = len(masks)
-            masks.append(frozenset(c))
-    of_leaf = [number[frozenset(c)] for c in copied]
+        if c not in number:
+            number[c] = len(masks)
+            masks.append(c)
+    of_leaf = [number[c] for c in copied]
     return array("I", (of_leaf[lf] for lf in leaves)), masks
 
 
