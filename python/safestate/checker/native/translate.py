@@ -14,6 +14,7 @@ naming file:line:col and "not supported by the native engine": never a guess.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from collections.abc import Callable
 from typing import Any, Iterable, cast
 
 from ...tla import ast as A
@@ -446,9 +447,11 @@ class Translator:
             return self.node(Op.NOTIN if negated else Op.IN, loc, kids=(lhs, sd[4][0]))
         return self.node(Op.IN_SD, loc, (1 if negated else 0,), kids=(lhs, sd))
 
-    def set_test(self, e: A.Expr, env: TEnv, depth: int) -> Node:
+    def set_test(self, e: A.Expr, env: TEnv, depth: int, built: Callable[[], Node] | None = None) -> Node:
         """A membership test for `e`, which may be an infinite or structured set
-        (``Seq(S)``, ``[S -> T]``, ``[a : S]``, ``Nat``, ``a..b``) that is never built."""
+        (``Seq(S)``, ``[S -> T]``, ``[a : S]``, ``Nat``, ``a..b``) that is never built.
+        `built`: where `e` is the body of a zero-arity definition, that definition's node
+        (a constant set is evaluated once there), used if the set must be built."""
         if depth > 40:
             raise unsupported("a set defined this deep", e.loc)
         if isinstance(e, A.FnSet):
@@ -484,17 +487,15 @@ class Translator:
                 if isinstance(sym, DefSym) and not sym.recursive and sym.defn.fn_bounds is None \
                         and not sym.scope.instance_params and not sym.scope.parameterised:
                     if not sym.defn.params and not args:
-                        sd = self.set_test(sym.defn.body, TEnv(sym.scope, {}, env.primed, env.init), depth + 1)
-                        if sd[0] != Op.SD_SET:
-                            return sd
-                        # A set that is built: the definition's own node, which a constant
-                        # set evaluates once (the Safety service's TypeOK rebuilt its
-                        # 1,440-record inbox filter in every state: half the check).
-                        return self.node(Op.SD_SET, e.loc, kids=(self.call_def(sym, [], env, e.loc),))
+                        # A set that must be built is the definition's own node: the Safety
+                        # service's TypeOK rebuilt its 1,440-record inbox filter in every state.
+                        d, at = sym, e.loc
+                        return self.set_test(d.defn.body, TEnv(d.scope, {}, env.primed, env.init), depth + 1,
+                                             lambda: self.call_def(d, [], env, at))
                     if len(args) == len(sym.defn.params) and not any(p.arity for p in sym.defn.params):
                         locals_ = {p.name: ByName(a, env) for p, a in zip(sym.defn.params, args)}
                         return self.set_test(sym.defn.body, TEnv(sym.scope, locals_, env.primed, env.init), depth + 1)
-        return self.node(Op.SD_SET, e.loc, kids=(self.expr(e, env),))
+        return self.node(Op.SD_SET, e.loc, kids=(built() if built is not None else self.expr(e, env),))
 
     def x_Unary(self, e: A.Unary, env: TEnv) -> Node:
         op = e.op
